@@ -1,0 +1,56 @@
+// The simulation: clock, time-step control, the coupled step, monitors. It owns the modules the
+// scene switched on (-physics) and calls them in the order of ARCHITECTURE.md ("The coupled step"),
+// each inside its own PETSc log stage so -log_view breaks the time down per module.
+#pragma once
+
+#include "vofdem/core/Physics.hpp"
+#include "vofdem/dem/Dem.hpp"
+#include "vofdem/grid/Grid.hpp"
+
+#include <petsclog.h>
+
+#include <cstdio>
+#include <memory>
+#include <string>
+
+namespace vofdem {
+
+class Simulation {
+public:
+  PetscErrorCode Create(MPI_Comm comm);
+  PetscErrorCode SetFromOptions();
+  PetscErrorCode SetUp();          // unused-option check, then modules and the time step
+  PetscErrorCode Run();            // steps until -max_steps or -final_time
+  PetscErrorCode Step();           // one coupled step of size Dt()
+  PetscErrorCode View(PetscViewer viewer) const;  // the start-up banner
+  PetscErrorCode Destroy();
+
+  PetscReal Time() const { return time_; }
+  PetscReal Dt() const { return dt_; }
+  PetscInt  StepNumber() const { return step_; }
+  const PhysicsSet &Physics() const { return physics_; }
+  Dem       *Particles() { return dem_.get(); }
+  const Grid &GetGrid() const { return grid_; }
+
+private:
+  PetscErrorCode ChooseTimeStep();
+  PetscErrorCode Monitor(bool force);
+
+  MPI_Comm   comm_ = MPI_COMM_NULL;
+  PhysicsSet physics_;
+  Grid       grid_;
+  std::unique_ptr<Dem> dem_;
+
+  PetscReal time_ = 0, dt_ = 0, dtUser_ = 0, finalTime_ = PETSC_MAX_REAL;
+  PetscBool dtForce_ = PETSC_FALSE, monitorTiming_ = PETSC_TRUE;
+  PetscInt  step_ = 0, maxSteps_ = 100, monitorEvery_ = 10;
+  PetscReal gravity_[3] = {0, 0, -9.81};
+  PetscInt  seed_ = 12345;
+  std::string outputDir_;
+  std::string dtLimitName_;
+  FILE     *csv_ = nullptr;
+  PetscLogDouble wallStart_ = 0;
+  PetscLogStage  demStage_  = -1;
+};
+
+}  // namespace vofdem

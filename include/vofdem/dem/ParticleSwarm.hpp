@@ -1,0 +1,43 @@
+// The particles' DMSwarm (PIC type) on the grid's vertex DMDA, with its structure-of-arrays fields,
+// and migration that never loses a particle silently: DMSwarmMigrate deletes particles that jump
+// more than one subdomain or leave the box (notes/petsc-3.18.md), so the global count is checked.
+#pragma once
+
+#include "vofdem/grid/Grid.hpp"
+
+#include <petscdmswarm.h>
+
+namespace vofdem {
+
+// Names of the swarm fields (each one contiguous array; vectors are 3 values per particle).
+namespace field {
+inline constexpr const char *position = DMSwarmPICField_coor;  // m
+inline constexpr const char *velocity = "velocity";            // m/s
+inline constexpr const char *force    = "force";               // N, total force of the last evaluation
+inline constexpr const char *radius   = "radius";              // m
+inline constexpr const char *mass     = "mass";                // kg
+inline constexpr const char *id       = "id";                  // global id, PetscInt64
+}  // namespace field
+
+class ParticleSwarm {
+public:
+  PetscErrorCode Create(const Grid &grid);
+  PetscErrorCode Destroy();
+
+  DM       Dm() const { return swarm_; }
+  PetscInt LocalCount() const;
+  PetscErrorCode GlobalCount(PetscInt *n) const;
+
+  // Appends n particles locally (fields left for the caller to fill); returns the first new index.
+  PetscErrorCode AddLocal(PetscInt n, PetscInt *first);
+
+  // Sends particles to the ranks that own their positions if any particle left its rank.
+  // The global count before and after must agree: a lost particle is an error.
+  PetscErrorCode MigrateIfNeeded(PetscBool force = PETSC_FALSE);
+
+private:
+  const Grid *grid_  = nullptr;
+  DM          swarm_ = nullptr;
+};
+
+}  // namespace vofdem

@@ -1,0 +1,42 @@
+// The Eulerian grid: a uniform box of cells on a cell-centred DMDA (STAR, width 1: the one matrices
+// are assembled on), and, for particles, a vertex DMDA with one more node per direction built from
+// the same ownership ranges, so that a swarm cell is a fluid cell on the same rank
+// (notes/petsc-3.18.md, DMSwarm).
+#pragma once
+
+#include <petscdmda.h>
+
+namespace vofdem {
+
+class Grid {
+public:
+  PetscErrorCode SetFromOptions(MPI_Comm comm);  // -grid_cells, -grid_lower, -grid_upper
+  PetscErrorCode SetUp(PetscBool needVertexDM);
+  PetscErrorCode View(PetscViewer viewer) const;
+  PetscErrorCode Destroy();
+
+  DM CellDM() const { return cellDM_; }
+  DM VertexDM() const { return vertexDM_; }
+  const PetscReal *Lower() const { return lower_; }
+  const PetscReal *Upper() const { return upper_; }
+  const PetscReal *Spacing() const { return h_; }
+  const PetscInt  *Cells() const { return cells_; }
+  MPI_Comm         Comm() const { return comm_; }
+
+  // The part of the box whose cells this rank owns: [lo, hi) (closed at the domain's upper end).
+  void LocalBox(PetscReal lo[3], PetscReal hi[3]) const;
+  // True when x lies in LocalBox() (the upper domain face belongs to the last rank).
+  bool OwnsPoint(const PetscReal x[3]) const;
+
+private:
+  MPI_Comm  comm_     = MPI_COMM_NULL;
+  DM        cellDM_   = nullptr;
+  DM        vertexDM_ = nullptr;
+  PetscInt  cells_[3] = {8, 8, 8};
+  PetscReal lower_[3] = {0, 0, 0};
+  PetscReal upper_[3] = {1, 1, 1};
+  PetscReal h_[3]     = {0, 0, 0};
+  PetscInt  start_[3] = {0, 0, 0}, count_[3] = {0, 0, 0};  // owned cells
+};
+
+}  // namespace vofdem

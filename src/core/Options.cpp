@@ -1,0 +1,229 @@
+#include "vofdem/core/Options.hpp"
+
+#include "vofdem/core/Runtime.hpp"
+
+#include <cerrno>
+#include <cmath>
+#include <cstdlib>
+#include <sstream>
+
+namespace vofdem {
+
+namespace {
+
+std::string Trim(const std::string &s) {
+  const auto b = s.find_first_not_of(" \t[]");
+  if (b == std::string::npos) return "";
+  const auto e = s.find_last_not_of(" \t[]");
+  return s.substr(b, e - b + 1);
+}
+
+std::string HelpText(const char *text, const char *unit) {
+  return unit && unit[0] ? std::string(text) + " [" + unit + "]" : std::string(text);
+}
+
+std::string Join(const std::vector<std::string> &v) {
+  std::string s;
+  for (const auto &x : v) s += (s.empty() ? "" : ", ") + x;
+  return s;
+}
+
+}  // namespace
+
+std::string RealRange::Describe() const {
+  std::ostringstream s;
+  s << (loOpen ? "(" : "[");
+  if (lo == PETSC_MIN_REAL) s << "-inf"; else s << lo;
+  s << ", ";
+  if (hi == PETSC_MAX_REAL) s << "inf"; else s << hi;
+  s << (hiOpen ? ")" : "]");
+  return s.str();
+}
+
+bool ParseReal(const std::string &text, PetscReal *value) {
+  const std::string t = Trim(text);
+  if (t.empty()) return false;
+  char *end = nullptr;
+  errno     = 0;
+  const double v = std::strtod(t.c_str(), &end);
+  if (errno == ERANGE || *end != '\0' || !std::isfinite(v)) return false;
+  *value = v;
+  return true;
+}
+
+bool ParseInt(const std::string &text, PetscInt *value) {
+  const std::string t = Trim(text);
+  if (t.empty()) return false;
+  char *end = nullptr;
+  errno     = 0;
+  const long long v = std::strtoll(t.c_str(), &end, 10);
+  if (errno == ERANGE || *end != '\0' || v < PETSC_MIN_INT || v > PETSC_MAX_INT) return false;
+  *value = static_cast<PetscInt>(v);
+  return true;
+}
+
+std::vector<std::string> SplitList(const std::string &text) {
+  std::vector<std::string> items;
+  std::string              item;
+  std::istringstream       in(text);
+  while (std::getline(in, item, ',')) items.push_back(Trim(item));
+  if (!text.empty() && text.back() == ',') items.push_back("");
+  return items;
+}
+
+std::string OptionReader::FullName(const char *name) const {
+  const char *prefix = items_->prefix;
+  return std::string("-") + (prefix ? prefix : "") + (name[0] == '-' ? name + 1 : name);
+}
+
+PetscErrorCode OptionReader::RawValue(const char *name, const char **raw, PetscBool *given) const {
+  PetscFunctionBeginUser;
+  PetscCall(PetscOptionsFindPair(items_->options, items_->prefix, name, raw, given));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode OptionReader::Real(const char *name, const char *text, const char *unit, PetscReal *value,
+                                  RealRange range, PetscBool *set) {
+  PetscOptionItems *PetscOptionsObject = items_;
+  const char       *raw                = nullptr;
+  PetscBool         given              = PETSC_FALSE;
+  PetscReal         v                  = *value;
+
+  PetscFunctionBeginUser;
+  PetscCall(RawValue(name, &raw, &given));
+  if (given && !ParseReal(raw ? raw : "", &v))
+    VofdemInputError(PETSC_COMM_WORLD, "option %s: '%s' is not a number", FullName(name).c_str(), raw ? raw : "");
+  if (given && !range.Contains(v))
+    VofdemInputError(PETSC_COMM_WORLD, "option %s: %g is out of range, must be in %s", FullName(name).c_str(), (double)v,
+                     range.Describe().c_str());
+  PetscCall(PetscOptionsReal(name, HelpText(text, unit).c_str(), nullptr, *value, value, set));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode OptionReader::Int(const char *name, const char *text, PetscInt *value, PetscInt lo, PetscInt hi,
+                                 PetscBool *set) {
+  PetscOptionItems *PetscOptionsObject = items_;
+  const char       *raw                = nullptr;
+  PetscBool         given              = PETSC_FALSE;
+  PetscInt          v                  = *value;
+
+  PetscFunctionBeginUser;
+  PetscCall(RawValue(name, &raw, &given));
+  if (given && !ParseInt(raw ? raw : "", &v))
+    VofdemInputError(PETSC_COMM_WORLD, "option %s: '%s' is not an integer", FullName(name).c_str(), raw ? raw : "");
+  if (given && (v < lo || v > hi))
+    VofdemInputError(PETSC_COMM_WORLD, "option %s: %" PetscInt_FMT " is out of range, must be in [%" PetscInt_FMT ", %" PetscInt_FMT "]",
+                     FullName(name).c_str(), v, lo, hi);
+  PetscCall(PetscOptionsRangeInt(name, text, nullptr, *value, value, set, lo, hi));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode OptionReader::Bool(const char *name, const char *text, PetscBool *value, PetscBool *set) {
+  PetscOptionItems *PetscOptionsObject = items_;
+  const char       *raw                = nullptr;
+  PetscBool         given = PETSC_FALSE, isBool = PETSC_FALSE;
+
+  PetscFunctionBeginUser;
+  PetscCall(RawValue(name, &raw, &given));
+  if (given && raw && raw[0]) {
+    static const char *const words[] = {"1", "0", "true", "false", "yes", "no", "on", "off"};
+    for (const char *w : words) {
+      PetscBool same;
+      PetscCall(PetscStrcasecmp(raw, w, &same));
+      isBool = (PetscBool)(isBool || same);
+    }
+    if (!isBool) VofdemInputError(PETSC_COMM_WORLD, "option %s: '%s' is not true or false", FullName(name).c_str(), raw);
+  }
+  PetscCall(PetscOptionsBool(name, text, nullptr, *value, value, set));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode OptionReader::RealVector(const char *name, const char *text, const char *unit, PetscReal *value,
+                                        PetscInt n, RealRange range, PetscBool *set) {
+  PetscOptionItems *PetscOptionsObject = items_;
+  const char       *raw                = nullptr;
+  PetscBool         given              = PETSC_FALSE;
+  PetscInt          count              = n;
+
+  PetscFunctionBeginUser;
+  PetscCall(RawValue(name, &raw, &given));
+  if (given) {
+    const auto parts = SplitList(raw ? raw : "");
+    if ((PetscInt)parts.size() != n)
+      VofdemInputError(PETSC_COMM_WORLD, "option %s: needs %" PetscInt_FMT " comma-separated numbers, got '%s'", FullName(name).c_str(), n,
+                       raw ? raw : "");
+    for (const auto &p : parts) {
+      PetscReal v;
+      if (!ParseReal(p, &v)) VofdemInputError(PETSC_COMM_WORLD, "option %s: '%s' is not a number", FullName(name).c_str(), p.c_str());
+      if (!range.Contains(v))
+        VofdemInputError(PETSC_COMM_WORLD, "option %s: %g is out of range, must be in %s", FullName(name).c_str(), (double)v,
+                         range.Describe().c_str());
+    }
+  }
+  PetscCall(PetscOptionsRealArray(name, HelpText(text, unit).c_str(), nullptr, value, &count, set));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode OptionReader::IntVector(const char *name, const char *text, PetscInt *value, PetscInt n, PetscInt lo,
+                                       PetscInt hi, PetscBool *set) {
+  PetscOptionItems *PetscOptionsObject = items_;
+  const char       *raw                = nullptr;
+  PetscBool         given              = PETSC_FALSE;
+  PetscInt          count              = n;
+
+  PetscFunctionBeginUser;
+  PetscCall(RawValue(name, &raw, &given));
+  if (given) {
+    const auto parts = SplitList(raw ? raw : "");
+    if ((PetscInt)parts.size() != n)
+      VofdemInputError(PETSC_COMM_WORLD, "option %s: needs %" PetscInt_FMT " comma-separated integers, got '%s'", FullName(name).c_str(), n,
+                       raw ? raw : "");
+    for (const auto &p : parts) {
+      PetscInt v;
+      if (!ParseInt(p, &v)) VofdemInputError(PETSC_COMM_WORLD, "option %s: '%s' is not an integer", FullName(name).c_str(), p.c_str());
+      if (v < lo || v > hi)
+        VofdemInputError(PETSC_COMM_WORLD, "option %s: %" PetscInt_FMT " is out of range, must be in [%" PetscInt_FMT ", %" PetscInt_FMT "]",
+                         FullName(name).c_str(), v, lo, hi);
+    }
+  }
+  PetscCall(PetscOptionsIntArray(name, text, nullptr, value, &count, set));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode OptionReader::NameList(const char *name, const char *text, const std::vector<std::string> &allowed,
+                                      std::vector<std::string> *value, PetscBool *set) {
+  std::string joined;
+  PetscBool   given = PETSC_FALSE;
+
+  PetscFunctionBeginUser;
+  for (const auto &v : *value) joined += (joined.empty() ? "" : ",") + v;
+  PetscCall(String(name, (std::string(text) + " (any of: " + Join(allowed) + ")").c_str(), &joined, &given));
+  if (given) {
+    value->clear();
+    for (const auto &item : SplitList(joined)) {
+      bool known = false;
+      for (const auto &a : allowed) known = known || a == item;
+      if (!known)
+        VofdemInputError(PETSC_COMM_WORLD, "option %s: unknown name '%s' (known: %s)", FullName(name).c_str(), item.c_str(),
+                         Join(allowed).c_str());
+      value->push_back(item);
+    }
+  }
+  if (set) *set = given;
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode OptionReader::String(const char *name, const char *text, std::string *value, PetscBool *set) {
+  PetscOptionItems *PetscOptionsObject = items_;
+  char              buffer[PETSC_MAX_PATH_LEN];
+  PetscBool         given = PETSC_FALSE;
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscStrncpy(buffer, value->c_str(), sizeof(buffer)));
+  PetscCall(PetscOptionsString(name, text, nullptr, value->c_str(), buffer, sizeof(buffer), &given));
+  if (given) *value = buffer;
+  if (set) *set = given;
+  PetscFunctionReturn(0);
+}
+
+}  // namespace vofdem

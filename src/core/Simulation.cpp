@@ -1,0 +1,189 @@
+#include "vofdem/core/Simulation.hpp"
+
+#include "vofdem/core/Options.hpp"
+#include "vofdem/core/Runtime.hpp"
+
+#include <petsctime.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <system_error>
+
+namespace vofdem {
+
+PetscErrorCode Simulation::Create(MPI_Comm comm) {
+  PetscFunctionBeginUser;
+  comm_ = comm;
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode Simulation::SetFromOptions() {
+  std::vector<std::string> names;
+  PetscBool                help = PETSC_FALSE, physicsSet = PETSC_FALSE, finalSet = PETSC_FALSE;
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscOptionsHasHelp(nullptr, &help));
+  PetscOptionsBegin(comm_, nullptr, "Simulation: physics, clock and monitors", "Simulation");
+  {
+    OptionReader opt(PetscOptionsObject);
+    PetscCall(opt.NameList("-physics", "Modules to switch on, comma-separated", KnownPhysics(), &names, &physicsSet));
+    PetscCall(opt.Int("-max_steps", "Number of time steps to run at most", &maxSteps_, 0));
+    PetscCall(opt.Real("-final_time", "Simulated time to stop at (default: none)", "s", &finalTime_, RealRange::Positive(), &finalSet));
+    PetscCall(opt.Real("-dt", "Time step (0: the smallest stable limit of the modules)", "s", &dtUser_, RealRange::NonNegative()));
+    PetscCall(opt.Bool("-dt_force", "Accept a -dt above a module's stable limit", &dtForce_));
+    PetscCall(opt.Int("-monitor_every", "Print a monitor line every this many steps", &monitorEvery_, 1));
+    PetscCall(opt.Bool("-monitor_timing", "Show wall time and ETA in monitor lines (off for reproducible output)", &monitorTiming_));
+    PetscCall(opt.RealVector("-gravity", "Gravitational acceleration x,y,z", "m/s^2", gravity_, 3));
+    PetscCall(opt.Int("-seed", "Seed of every random choice of the run", &seed_, 0));
+    PetscCall(opt.String("-output_dir", "Folder for the monitor table (monitor.csv) and output files (default: none)", &outputDir_));
+  }
+  PetscOptionsEnd();
+  if (!physicsSet && !help) VofdemInputError(comm_, "option -physics is missing: name the modules to run, e.g. -physics dem");
+  if (!finalSet) finalTime_ = PETSC_MAX_REAL;
+  if (physicsSet) PetscCall(MakePhysicsSet(comm_, names, &physics_));
+  PetscCall(grid_.SetFromOptions(comm_));
+  // With -help, every available module registers its options so that -help lists them all.
+  if (physics_.dem || help) {
+    dem_ = std::make_unique<Dem>();
+    PetscCall(dem_->SetFromOptions(comm_));
+    if (!physics_.dem) dem_.reset();
+  }
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode Simulation::SetUp() {
+  PetscFunctionBeginUser;
+  // Every option has been read by now: a typo fails here, before any expensive set-up.
+  PetscCall(CheckUnusedOptions(comm_));
+  PetscCall(grid_.SetUp(physics_.dem ? PETSC_TRUE : PETSC_FALSE));
+  if (physics_.dem) {
+    PetscCall(PetscLogStageGetId("DEM", &demStage_));  // a program may run several simulations
+    if (demStage_ < 0) PetscCall(PetscLogStageRegister("DEM", &demStage_));
+    PetscCall(PetscLogStagePush(demStage_));
+    PetscCall(dem_->SetUp(grid_, gravity_, (std::uint64_t)seed_));
+    PetscCall(PetscLogStagePop());
+  }
+  PetscCall(ChooseTimeStep());
+  if (!outputDir_.empty()) {
+    PetscMPIInt rank;
+    int         ok = 1, allOk;
+    PetscCallMPI(MPI_Comm_rank(comm_, &rank));
+    if (rank == 0) {
+      std::error_code ec;
+      std::filesystem::create_directories(outputDir_, ec);
+      const std::string path = outputDir_ + "/monitor.csv";
+      if (!ec) csv_ = std::fopen(path.c_str(), "w");
+      ok = csv_ != nullptr;
+      if (csv_) std::fprintf(csv_, "step,time_s,dt_s,particles,kinetic_energy_J,wall_contacts,max_overlap_per_diameter,floor_force_z_N,wall_time_s\n");
+    }
+    PetscCallMPI(MPI_Allreduce(&ok, &allOk, 1, MPI_INT, MPI_MIN, comm_));
+    if (!allOk) VofdemInputError(comm_, "option -output_dir: cannot create '%s' or write monitor.csv in it", outputDir_.c_str());
+  }
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode Simulation::ChooseTimeStep() {
+  PetscReal limit = PETSC_MAX_REAL;
+
+  PetscFunctionBeginUser;
+  if (physics_.dem) {
+    limit        = dem_->StableTimeStep();
+    dtLimitName_ = "dem (-dem_dt_factor x Rayleigh time, P9)";
+  }
+  dt_ = limit;
+  if (dtUser_ > 0) {
+    if (dtUser_ > limit && !dtForce_)
+      VofdemInputError(comm_, "option -dt: %g s exceeds the stable limit %g s of %s; lower it or add -dt_force", (double)dtUser_, (double)limit,
+                       dtLimitName_.c_str());
+    if (dtUser_ > limit) PetscCall(PetscPrintf(comm_, "vofdem: warning: -dt %g s exceeds the stable limit %g s of %s (forced)\n", (double)dtUser_, (double)limit, dtLimitName_.c_str()));
+    dt_          = dtUser_;
+    dtLimitName_ = "-dt";
+  }
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode Simulation::Step() {
+  PetscFunctionBeginUser;
+  const PetscReal dt = finalTime_ < PETSC_MAX_REAL ? std::min(dt_, finalTime_ - time_) : dt_;
+  // The coupled step (ARCHITECTURE.md): with particles only, steps 2 and 6 are one DEM step.
+  if (physics_.dem) {
+    PetscCall(PetscLogStagePush(demStage_));
+    PetscCall(dem_->Step(dt));
+    PetscCall(PetscLogStagePop());
+  }
+  time_ += dt;
+  ++step_;
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode Simulation::Run() {
+  PetscFunctionBeginUser;
+  PetscCall(PetscTime(&wallStart_));
+  PetscCall(Monitor(true));
+  while (step_ < maxSteps_ && time_ < finalTime_ * (1 - 1e-12)) {
+    PetscCall(Step());
+    const bool last = step_ == maxSteps_ || time_ >= finalTime_ * (1 - 1e-12);
+    if (step_ % monitorEvery_ == 0 || last) PetscCall(Monitor(true));
+  }
+  PetscCall(PetscPrintf(comm_, "vofdem: finished after %" PetscInt_FMT " steps at t = %g s%s%s\n", step_, (double)time_,
+                        csv_ ? "; monitor table in " : "", csv_ ? (outputDir_ + "/monitor.csv").c_str() : ""));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode Simulation::Monitor(bool) {
+  PetscLogDouble now;
+  DemSummary     s;
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscTime(&now));
+  const double wall = now - wallStart_;
+  if (physics_.dem) PetscCall(dem_->Summarize(&s));
+  std::string line;
+  char        buf[512];
+  std::snprintf(buf, sizeof buf, "step %6d  t %.6e s  dt %.3e s", (int)step_, (double)time_, (double)dt_);
+  line += buf;
+  if (physics_.dem) {
+    std::snprintf(buf, sizeof buf, "  | particles %d  KE %.6e J  wall contacts %d  max overlap %.4e d  floor force %.6e N", (int)s.particles,
+                  (double)s.kinetic, (int)s.wallContacts, (double)s.maxOverlap, (double)s.wallForce[4][2]);
+    line += buf;
+  }
+  if (monitorTiming_) {
+    double fraction = maxSteps_ > 0 ? (double)step_ / maxSteps_ : 0;
+    if (finalTime_ < PETSC_MAX_REAL) fraction = std::max(fraction, (double)(time_ / finalTime_));
+    std::snprintf(buf, sizeof buf, "  | wall %.2f s  ETA %.1f s", wall, fraction > 0 ? wall * (1 - fraction) / fraction : 0.0);
+    line += buf;
+  }
+  PetscCall(PetscPrintf(comm_, "%s\n", line.c_str()));
+  if (csv_) {
+    std::fprintf(csv_, "%d,%.10e,%.6e,%d,%.10e,%d,%.6e,%.10e,%.3f\n", (int)step_, (double)time_, (double)dt_, (int)s.particles, (double)s.kinetic,
+                 (int)s.wallContacts, (double)s.maxOverlap, (double)s.wallForce[4][2], wall);
+    std::fflush(csv_);
+  }
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode Simulation::View(PetscViewer viewer) const {
+  PetscMPIInt size;
+
+  PetscFunctionBeginUser;
+  PetscCallMPI(MPI_Comm_size(comm_, &size));
+  PetscCall(PetscViewerASCIIPrintf(viewer, "vofdem %s: physics %s on %d rank%s\n", VOFDEM_VERSION, physics_.Describe().c_str(), (int)size, size > 1 ? "s" : ""));
+  PetscCall(grid_.View(viewer));
+  if (dem_) PetscCall(dem_->View(viewer));
+  if (physics_.dem) PetscCall(PetscViewerASCIIPrintf(viewer, "time step limits: dem %g s\n", (double)dem_->StableTimeStep()));
+  PetscCall(PetscViewerASCIIPrintf(viewer, "time step: %g s (set by %s); gravity (%g, %g, %g) m/s^2; seed %" PetscInt_FMT "\n", (double)dt_,
+                                   dtLimitName_.c_str(), (double)gravity_[0], (double)gravity_[1], (double)gravity_[2], seed_));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode Simulation::Destroy() {
+  PetscFunctionBeginUser;
+  if (csv_) std::fclose(csv_);
+  csv_ = nullptr;
+  if (dem_) PetscCall(dem_->Destroy());
+  dem_.reset();
+  PetscCall(grid_.Destroy());
+  PetscFunctionReturn(0);
+}
+
+}  // namespace vofdem

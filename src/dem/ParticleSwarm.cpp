@@ -1,0 +1,71 @@
+#include "vofdem/dem/ParticleSwarm.hpp"
+
+namespace vofdem {
+
+PetscErrorCode ParticleSwarm::Create(const Grid &grid) {
+  PetscFunctionBeginUser;
+  grid_ = &grid;
+  PetscCall(DMCreate(grid.Comm(), &swarm_));
+  PetscCall(DMSetType(swarm_, DMSWARM));
+  PetscCall(PetscObjectSetName((PetscObject)swarm_, "particles"));
+  PetscCall(DMSetDimension(swarm_, 3));
+  PetscCall(DMSwarmSetType(swarm_, DMSWARM_PIC));
+  PetscCall(DMSwarmSetCellDM(swarm_, grid.VertexDM()));
+  PetscCall(DMSwarmInitializeFieldRegister(swarm_));
+  PetscCall(DMSwarmRegisterPetscDatatypeField(swarm_, field::velocity, 3, PETSC_REAL));
+  PetscCall(DMSwarmRegisterPetscDatatypeField(swarm_, field::force, 3, PETSC_REAL));
+  PetscCall(DMSwarmRegisterPetscDatatypeField(swarm_, field::radius, 1, PETSC_REAL));
+  PetscCall(DMSwarmRegisterPetscDatatypeField(swarm_, field::mass, 1, PETSC_REAL));
+  PetscCall(DMSwarmRegisterPetscDatatypeField(swarm_, field::id, 1, PETSC_INT64));
+  PetscCall(DMSwarmFinalizeFieldRegister(swarm_));
+  PetscCall(DMSwarmSetLocalSizes(swarm_, 0, 64));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode ParticleSwarm::Destroy() {
+  PetscFunctionBeginUser;
+  PetscCall(DMDestroy(&swarm_));
+  PetscFunctionReturn(0);
+}
+
+PetscInt ParticleSwarm::LocalCount() const {
+  PetscInt n = 0;
+  if (DMSwarmGetLocalSize(swarm_, &n)) return -1;
+  return n;
+}
+
+PetscErrorCode ParticleSwarm::GlobalCount(PetscInt *n) const {
+  PetscFunctionBeginUser;
+  PetscCall(DMSwarmGetSize(swarm_, n));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode ParticleSwarm::AddLocal(PetscInt n, PetscInt *first) {
+  PetscFunctionBeginUser;
+  PetscCall(DMSwarmGetLocalSize(swarm_, first));
+  PetscCall(DMSwarmAddNPoints(swarm_, n));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode ParticleSwarm::MigrateIfNeeded(PetscBool force) {
+  PetscInt   n = 0, before = 0, after = 0;
+  PetscReal *x = nullptr;
+  PetscBool  left = PETSC_FALSE, anyLeft = PETSC_FALSE;
+
+  PetscFunctionBeginUser;
+  PetscCall(DMSwarmGetLocalSize(swarm_, &n));
+  PetscCall(DMSwarmGetField(swarm_, field::position, nullptr, nullptr, (void **)&x));
+  for (PetscInt p = 0; p < n && !left; ++p) left = (PetscBool)!grid_->OwnsPoint(&x[3 * p]);
+  PetscCall(DMSwarmRestoreField(swarm_, field::position, nullptr, nullptr, (void **)&x));
+  PetscCallMPI(MPI_Allreduce(&left, &anyLeft, 1, MPIU_BOOL, MPI_LOR, grid_->Comm()));
+  if (!anyLeft && !force) PetscFunctionReturn(0);
+  PetscCall(DMSwarmGetSize(swarm_, &before));
+  PetscCall(DMSwarmMigrate(swarm_, PETSC_TRUE));
+  PetscCall(DMSwarmGetSize(swarm_, &after));
+  PetscCheck(after == before, grid_->Comm(), PETSC_ERR_PLIB,
+             "migration lost %" PetscInt_FMT " of %" PetscInt_FMT " particles (a particle left the box or jumped past a neighbouring rank)",
+             before - after, before);
+  PetscFunctionReturn(0);
+}
+
+}  // namespace vofdem

@@ -1,0 +1,98 @@
+#include "vofdem/grid/Grid.hpp"
+
+#include "vofdem/core/Options.hpp"
+#include "vofdem/core/Runtime.hpp"
+
+#include <vector>
+
+namespace vofdem {
+
+PetscErrorCode Grid::SetFromOptions(MPI_Comm comm) {
+  PetscFunctionBeginUser;
+  comm_ = comm;
+  PetscOptionsBegin(comm, "grid_", "Grid: uniform box of cells", "Grid");
+  {
+    OptionReader opt(PetscOptionsObject);
+    PetscCall(opt.IntVector("-cells", "Number of cells in x,y,z", cells_, 3, 1, 1 << 20));
+    PetscCall(opt.RealVector("-lower", "Lower corner of the box x,y,z", "m", lower_, 3));
+    PetscCall(opt.RealVector("-upper", "Upper corner of the box x,y,z", "m", upper_, 3));
+  }
+  PetscOptionsEnd();
+  for (int d = 0; d < 3; ++d) {
+    if (!(upper_[d] > lower_[d]))
+      VofdemInputError(comm, "options -grid_lower/-grid_upper: upper corner must exceed lower corner in %c (%g <= %g)", "xyz"[d],
+                       (double)upper_[d], (double)lower_[d]);
+    h_[d] = (upper_[d] - lower_[d]) / cells_[d];
+  }
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode Grid::SetUp(PetscBool needVertexDM) {
+  PetscMPIInt     size;
+  const PetscInt *l[3];
+  PetscInt        m[3];
+
+  PetscFunctionBeginUser;
+  PetscCallMPI(MPI_Comm_size(comm_, &size));
+  PetscCall(DMDACreate3d(comm_, DM_BOUNDARY_NONE, DM_BOUNDARY_NONE, DM_BOUNDARY_NONE, DMDA_STENCIL_STAR, cells_[0], cells_[1], cells_[2],
+                         PETSC_DECIDE, PETSC_DECIDE, PETSC_DECIDE, 1, 1, nullptr, nullptr, nullptr, &cellDM_));
+  PetscCall(DMSetOptionsPrefix(cellDM_, "grid_"));
+  PetscCall(DMSetUp(cellDM_));
+  PetscCall(DMDASetUniformCoordinates(cellDM_, lower_[0] + h_[0] / 2, upper_[0] - h_[0] / 2, lower_[1] + h_[1] / 2, upper_[1] - h_[1] / 2,
+                                      lower_[2] + h_[2] / 2, upper_[2] - h_[2] / 2));
+  PetscCall(DMDAGetCorners(cellDM_, &start_[0], &start_[1], &start_[2], &count_[0], &count_[1], &count_[2]));
+  if (needVertexDM) {
+    PetscCall(DMDAGetInfo(cellDM_, nullptr, nullptr, nullptr, nullptr, &m[0], &m[1], &m[2], nullptr, nullptr, nullptr, nullptr, nullptr, nullptr));
+    PetscCall(DMDAGetOwnershipRanges(cellDM_, &l[0], &l[1], &l[2]));
+    std::vector<PetscInt> lv[3];
+    for (int d = 0; d < 3; ++d) {
+      lv[d].assign(l[d], l[d] + m[d]);
+      lv[d].back() += 1;  // the extra node of each direction belongs to the last rank
+    }
+    // BOX stencil: DMSwarmInsertPointsUsingCellDM and point location need it (notes).
+    PetscCall(DMDACreate3d(comm_, DM_BOUNDARY_NONE, DM_BOUNDARY_NONE, DM_BOUNDARY_NONE, DMDA_STENCIL_BOX, cells_[0] + 1, cells_[1] + 1,
+                           cells_[2] + 1, m[0], m[1], m[2], 1, 1, lv[0].data(), lv[1].data(), lv[2].data(), &vertexDM_));
+    PetscCall(DMSetUp(vertexDM_));
+    PetscCall(DMDASetUniformCoordinates(vertexDM_, lower_[0], upper_[0], lower_[1], upper_[1], lower_[2], upper_[2]));
+  }
+  PetscFunctionReturn(0);
+}
+
+void Grid::LocalBox(PetscReal lo[3], PetscReal hi[3]) const {
+  for (int d = 0; d < 3; ++d) {
+    lo[d] = lower_[d] + start_[d] * h_[d];
+    hi[d] = (start_[d] + count_[d] == cells_[d]) ? upper_[d] : lower_[d] + (start_[d] + count_[d]) * h_[d];
+  }
+}
+
+bool Grid::OwnsPoint(const PetscReal x[3]) const {
+  for (int d = 0; d < 3; ++d) {
+    // Same cell arithmetic as the swarm's point location, so both agree on the owner.
+    PetscInt c = (PetscInt)((x[d] - lower_[d]) / h_[d]);
+    if (c == cells_[d] && x[d] <= upper_[d]) c = cells_[d] - 1;
+    if (x[d] < lower_[d] || c < start_[d] || c >= start_[d] + count_[d]) return false;
+  }
+  return true;
+}
+
+PetscErrorCode Grid::View(PetscViewer viewer) const {
+  PetscMPIInt size;
+  PetscInt    m[3];
+
+  PetscFunctionBeginUser;
+  PetscCallMPI(MPI_Comm_size(comm_, &size));
+  PetscCall(DMDAGetInfo(cellDM_, nullptr, nullptr, nullptr, nullptr, &m[0], &m[1], &m[2], nullptr, nullptr, nullptr, nullptr, nullptr, nullptr));
+  PetscCall(PetscViewerASCIIPrintf(viewer, "grid: %" PetscInt_FMT " x %" PetscInt_FMT " x %" PetscInt_FMT " cells of %g x %g x %g m, box [%g, %g] x [%g, %g] x [%g, %g] m, ranks %" PetscInt_FMT " x %" PetscInt_FMT " x %" PetscInt_FMT "\n",
+                                   cells_[0], cells_[1], cells_[2], (double)h_[0], (double)h_[1], (double)h_[2], (double)lower_[0], (double)upper_[0],
+                                   (double)lower_[1], (double)upper_[1], (double)lower_[2], (double)upper_[2], m[0], m[1], m[2]));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode Grid::Destroy() {
+  PetscFunctionBeginUser;
+  PetscCall(DMDestroy(&vertexDM_));
+  PetscCall(DMDestroy(&cellDM_));
+  PetscFunctionReturn(0);
+}
+
+}  // namespace vofdem
