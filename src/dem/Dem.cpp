@@ -24,6 +24,8 @@ PetscErrorCode Dem::SetFromOptions(MPI_Comm comm) {
     wallPoisson_ = material_.poisson;
     PetscCall(opt.Real("-wall_youngs_modulus", "Young's modulus of the walls (default: the particles')", "Pa", &wallYoungs_, RealRange::Positive()));
     PetscCall(opt.Real("-wall_poisson_ratio", "Poisson ratio of the walls (default: the particles')", "-", &wallPoisson_, RealRange::LeftOpen(-1, 0.5)));
+    skin_ = 0.4 * radius_;
+    PetscCall(opt.Real("-skin", "Verlet skin: particles migrate once one has moved half of it (default: 0.2 diameters)", "m", &skin_, RealRange::NonNegative()));
     PetscCall(opt.Real("-dt_factor", "Time step as a fraction of the Rayleigh time (P9)", "-", &dtFactor_, RealRange::LeftOpen(0, 1)));
     PetscCall(opt.RealVector("-fill_lower", "Lower corner of the lattice-fill region (default: the box)", "m", fillLower_, 3, RealRange::Any(), &fillLowerSet_));
     PetscCall(opt.RealVector("-fill_upper", "Upper corner of the lattice-fill region (default: the box)", "m", fillUpper_, 3, RealRange::Any(), &fillUpperSet_));
@@ -133,7 +135,7 @@ PetscErrorCode Dem::Fill(std::uint64_t seed) {
   PetscCall(DMSwarmRestoreField(sw, field::position, nullptr, nullptr, (void **)&pos));
   PetscCall(swarm_.GlobalCount(&inserted_));
   PetscCheck(inserted_ == want, comm_, PETSC_ERR_PLIB, "lattice fill placed %" PetscInt_FMT " particles instead of %" PetscInt64_FMT, inserted_, want);
-  PetscCall(swarm_.MigrateIfNeeded(PETSC_TRUE));  // agree with the swarm's own point location
+  PetscCall(swarm_.MigrateIfNeeded(0, PETSC_TRUE));  // agree with the swarm's own point location; set references
   PetscFunctionReturn(0);
 }
 
@@ -193,7 +195,7 @@ PetscErrorCode Dem::Step(PetscReal dt) {
   PetscCall(DMSwarmRestoreField(sw, field::force, nullptr, nullptr, (void **)&force));
   PetscCall(DMSwarmRestoreField(sw, field::velocity, nullptr, nullptr, (void **)&vel));
   PetscCall(DMSwarmRestoreField(sw, field::position, nullptr, nullptr, (void **)&pos));
-  PetscCall(swarm_.MigrateIfNeeded());
+  PetscCall(swarm_.MigrateIfNeeded(0.5 * skin_, PETSC_FALSE));
   PetscCall(ComputeForces());
   PetscCall(DMSwarmGetLocalSize(sw, &n));
   PetscCall(DMSwarmGetField(sw, field::velocity, nullptr, nullptr, (void **)&vel));

@@ -17,6 +17,7 @@ PetscErrorCode ParticleSwarm::Create(const Grid &grid) {
   PetscCall(DMSwarmRegisterPetscDatatypeField(swarm_, field::radius, 1, PETSC_REAL));
   PetscCall(DMSwarmRegisterPetscDatatypeField(swarm_, field::mass, 1, PETSC_REAL));
   PetscCall(DMSwarmRegisterPetscDatatypeField(swarm_, field::id, 1, PETSC_INT64));
+  PetscCall(DMSwarmRegisterPetscDatatypeField(swarm_, field::reference, 3, PETSC_REAL));
   PetscCall(DMSwarmFinalizeFieldRegister(swarm_));
   PetscCall(DMSwarmSetLocalSizes(swarm_, 0, 64));
   PetscFunctionReturn(0);
@@ -47,24 +48,36 @@ PetscErrorCode ParticleSwarm::AddLocal(PetscInt n, PetscInt *first) {
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode ParticleSwarm::MigrateIfNeeded(PetscBool force) {
+PetscErrorCode ParticleSwarm::MigrateIfNeeded(PetscReal halfSkin, PetscBool force, PetscBool *migrated) {
   PetscInt   n = 0, before = 0, after = 0;
-  PetscReal *x = nullptr;
-  PetscBool  left = PETSC_FALSE, anyLeft = PETSC_FALSE;
+  PetscReal *x = nullptr, *ref = nullptr, moved2 = 0, maxMoved2 = 0;
 
   PetscFunctionBeginUser;
+  if (migrated) *migrated = PETSC_FALSE;
   PetscCall(DMSwarmGetLocalSize(swarm_, &n));
   PetscCall(DMSwarmGetField(swarm_, field::position, nullptr, nullptr, (void **)&x));
-  for (PetscInt p = 0; p < n && !left; ++p) left = (PetscBool)!grid_->OwnsPoint(&x[3 * p]);
+  PetscCall(DMSwarmGetField(swarm_, field::reference, nullptr, nullptr, (void **)&ref));
+  for (PetscInt p = 0; p < 3 * n; p += 3) {
+    const PetscReal dx = x[p] - ref[p], dy = x[p + 1] - ref[p + 1], dz = x[p + 2] - ref[p + 2];
+    moved2             = PetscMax(moved2, dx * dx + dy * dy + dz * dz);
+  }
+  PetscCall(DMSwarmRestoreField(swarm_, field::reference, nullptr, nullptr, (void **)&ref));
   PetscCall(DMSwarmRestoreField(swarm_, field::position, nullptr, nullptr, (void **)&x));
-  PetscCallMPI(MPI_Allreduce(&left, &anyLeft, 1, MPIU_BOOL, MPI_LOR, grid_->Comm()));
-  if (!anyLeft && !force) PetscFunctionReturn(0);
+  PetscCallMPI(MPI_Allreduce(&moved2, &maxMoved2, 1, MPIU_REAL, MPIU_MAX, grid_->Comm()));
+  if (!force && maxMoved2 <= halfSkin * halfSkin) PetscFunctionReturn(0);
   PetscCall(DMSwarmGetSize(swarm_, &before));
   PetscCall(DMSwarmMigrate(swarm_, PETSC_TRUE));
   PetscCall(DMSwarmGetSize(swarm_, &after));
   PetscCheck(after == before, grid_->Comm(), PETSC_ERR_PLIB,
              "migration lost %" PetscInt_FMT " of %" PetscInt_FMT " particles (a particle left the box or jumped past a neighbouring rank)",
              before - after, before);
+  PetscCall(DMSwarmGetLocalSize(swarm_, &n));
+  PetscCall(DMSwarmGetField(swarm_, field::position, nullptr, nullptr, (void **)&x));
+  PetscCall(DMSwarmGetField(swarm_, field::reference, nullptr, nullptr, (void **)&ref));
+  for (PetscInt p = 0; p < 3 * n; ++p) ref[p] = x[p];
+  PetscCall(DMSwarmRestoreField(swarm_, field::reference, nullptr, nullptr, (void **)&ref));
+  PetscCall(DMSwarmRestoreField(swarm_, field::position, nullptr, nullptr, (void **)&x));
+  if (migrated) *migrated = PETSC_TRUE;
   PetscFunctionReturn(0);
 }
 

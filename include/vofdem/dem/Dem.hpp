@@ -60,6 +60,7 @@ private:
   PetscReal     wallYoungs_ = -1, wallPoisson_ = -1;  // default: the particles' own
   PetscReal     radius_     = 5e-4;                     // m
   PetscReal     dtFactor_   = 0.3;                      // of the Rayleigh time (seed 001)
+  PetscReal     skin_       = 0;                        // m, migration margin
   PetscReal     gravity_[3] = {0, 0, 0};
   PetscReal     rayleighTime_ = 0;
   hertz::NormalContact wallContact_{};
