@@ -22,6 +22,16 @@ std::string HelpText(const char *text, const char *unit) {
   return unit && unit[0] ? std::string(text) + " [" + unit + "]" : std::string(text);
 }
 
+// PETSc's help line shows only the first entry of an array default: give all of them.
+template <typename T>
+std::string VectorHelp(const char *text, const char *unit, const T *value, PetscInt n) {
+  std::ostringstream s;
+  s << HelpText(text, unit) << " (default ";
+  for (PetscInt i = 0; i < n; ++i) s << (i ? "," : "") << value[i];
+  s << ")";
+  return s.str();
+}
+
 std::string Join(const std::vector<std::string> &v) {
   std::string s;
   for (const auto &x : v) s += (s.empty() ? "" : ", ") + x;
@@ -160,7 +170,7 @@ PetscErrorCode OptionReader::RealVector(const char *name, const char *text, cons
                          range.Describe().c_str());
     }
   }
-  PetscCall(PetscOptionsRealArray(name, HelpText(text, unit).c_str(), nullptr, value, &count, set));
+  PetscCall(PetscOptionsRealArray(name, VectorHelp(text, unit, value, n).c_str(), nullptr, value, &count, set));
   PetscFunctionReturn(0);
 }
 
@@ -186,7 +196,7 @@ PetscErrorCode OptionReader::IntVector(const char *name, const char *text, Petsc
                          FullName(name).c_str(), v, lo, hi);
     }
   }
-  PetscCall(PetscOptionsIntArray(name, text, nullptr, value, &count, set));
+  PetscCall(PetscOptionsIntArray(name, VectorHelp(text, "", value, n).c_str(), nullptr, value, &count, set));
   PetscFunctionReturn(0);
 }
 
