@@ -119,18 +119,18 @@ PetscErrorCode Simulation::Step() {
 PetscErrorCode Simulation::Run() {
   PetscFunctionBeginUser;
   PetscCall(PetscTime(&wallStart_));
-  PetscCall(Monitor(true));
+  PetscCall(Monitor());
   while (step_ < maxSteps_ && time_ < finalTime_ * (1 - 1e-12)) {
     PetscCall(Step());
     const bool last = step_ == maxSteps_ || time_ >= finalTime_ * (1 - 1e-12);
-    if (step_ % monitorEvery_ == 0 || last) PetscCall(Monitor(true));
+    if (step_ % monitorEvery_ == 0 || last) PetscCall(Monitor());
   }
   PetscCall(PetscPrintf(comm_, "vofdem: finished after %" PetscInt_FMT " steps at t = %g s%s%s\n", step_, (double)time_,
                         csv_ ? "; monitor table in " : "", csv_ ? (outputDir_ + "/monitor.csv").c_str() : ""));
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode Simulation::Monitor(bool) {
+PetscErrorCode Simulation::Monitor() {
   PetscLogDouble now;
   DemSummary     s;
 

@@ -9,6 +9,25 @@
 
 namespace vofdem {
 
+namespace {
+
+// Calls f(face, axis, overlap, force) for each face of the box [lo, hi] that the sphere at x with
+// radius r and velocity v overlaps; face = 2*axis for the lower face, 2*axis+1 for the upper one,
+// and force is the Hertz normal force of the face on the sphere along the axis (P3). The only
+// place wall contacts are detected, so forces and the reported wall loads cannot disagree.
+template <class F>
+inline void ForEachWallContact(const PetscReal x[3], PetscReal r, const PetscReal v[3], const PetscReal lo[3], const PetscReal hi[3],
+                               const hertz::NormalContact &c, F &&f) {
+  for (int d = 0; d < 3; ++d) {
+    const PetscReal dLo = r - (x[d] - lo[d]);  // overlap with the lower face, inward normal +e_d
+    const PetscReal dHi = r - (hi[d] - x[d]);  // overlap with the upper face, inward normal -e_d
+    if (dLo > 0) f(2 * d, d, dLo, hertz::NormalForce(c, dLo, v[d]));
+    if (dHi > 0) f(2 * d + 1, d, dHi, -hertz::NormalForce(c, dHi, -v[d]));
+  }
+}
+
+}  // namespace
+
 PetscErrorCode Dem::SetFromOptions(MPI_Comm comm) {
   PetscFunctionBeginUser;
   comm_ = comm;
@@ -155,15 +174,9 @@ PetscErrorCode Dem::ComputeForces() {
   PetscCall(DMSwarmGetField(sw, field::mass, nullptr, nullptr, (void **)&mass));
   const PetscReal *lo = grid_->Lower(), *hi = grid_->Upper();
   for (PetscInt p = 0; p < n; ++p) {
-    for (int d = 0; d < 3; ++d) {
-      PetscReal f = mass[p] * gravity_[d];
-      // Lower face: inward normal +e_d; upper face: -e_d. Overlap delta = R - distance to face.
-      const PetscReal dLo = rad[p] - (pos[3 * p + d] - lo[d]);
-      const PetscReal dHi = rad[p] - (hi[d] - pos[3 * p + d]);
-      if (dLo > 0) f += hertz::NormalForce(wallContact_, dLo, vel[3 * p + d]);
-      if (dHi > 0) f -= hertz::NormalForce(wallContact_, dHi, -vel[3 * p + d]);
-      force[3 * p + d] = f;
-    }
+    PetscReal *f = &force[3 * p];
+    for (int d = 0; d < 3; ++d) f[d] = mass[p] * gravity_[d];
+    ForEachWallContact(&pos[3 * p], rad[p], &vel[3 * p], lo, hi, wallContact_, [f](int, int d, PetscReal, PetscReal fn) { f[d] += fn; });
   }
   PetscCall(DMSwarmRestoreField(sw, field::mass, nullptr, nullptr, (void **)&mass));
   PetscCall(DMSwarmRestoreField(sw, field::radius, nullptr, nullptr, (void **)&rad));
@@ -226,23 +239,14 @@ PetscErrorCode Dem::Summarize(DemSummary *s) const {
   PetscCall(DMSwarmGetField(sw, field::mass, nullptr, nullptr, (void **)&mass));
   const PetscReal *lo = grid_->Lower(), *hi = grid_->Upper();
   for (PetscInt p = 0; p < n; ++p) {
-    const PetscReal *v = &vel[3 * p];
+    const PetscReal *v = &vel[3 * p], diameter = 2 * rad[p];
     sums[0] += 0.5 * mass[p] * (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
-    for (int d = 0; d < 3; ++d) {
-      const PetscReal dLo = rad[p] - (pos[3 * p + d] - lo[d]);
-      const PetscReal dHi = rad[p] - (hi[d] - pos[3 * p + d]);
-      // The particles push on a face with minus the force the face exerts on them.
-      if (dLo > 0) {
-        ++contacts;
-        maxOverlap = std::max(maxOverlap, dLo / (2 * rad[p]));
-        sums[1 + 3 * (2 * d) + d] -= hertz::NormalForce(wallContact_, dLo, v[d]);
-      }
-      if (dHi > 0) {
-        ++contacts;
-        maxOverlap = std::max(maxOverlap, dHi / (2 * rad[p]));
-        sums[1 + 3 * (2 * d + 1) + d] += hertz::NormalForce(wallContact_, dHi, -v[d]);
-      }
-    }
+    // The particles push on a face with minus the force the face exerts on them.
+    ForEachWallContact(&pos[3 * p], rad[p], v, lo, hi, wallContact_, [&](int face, int d, PetscReal overlap, PetscReal fn) {
+      ++contacts;
+      maxOverlap = std::max(maxOverlap, overlap / diameter);
+      sums[1 + 3 * face + d] -= fn;
+    });
   }
   PetscCall(DMSwarmRestoreField(sw, field::mass, nullptr, nullptr, (void **)&mass));
   PetscCall(DMSwarmRestoreField(sw, field::radius, nullptr, nullptr, (void **)&rad));

@@ -29,12 +29,6 @@ PetscErrorCode ParticleSwarm::Destroy() {
   PetscFunctionReturn(0);
 }
 
-PetscInt ParticleSwarm::LocalCount() const {
-  PetscInt n = 0;
-  if (DMSwarmGetLocalSize(swarm_, &n)) return -1;
-  return n;
-}
-
 PetscErrorCode ParticleSwarm::GlobalCount(PetscInt *n) const {
   PetscFunctionBeginUser;
   PetscCall(DMSwarmGetSize(swarm_, n));

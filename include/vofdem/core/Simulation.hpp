@@ -34,7 +34,7 @@ public:
 
 private:
   PetscErrorCode ChooseTimeStep();
-  PetscErrorCode Monitor(bool force);
+  PetscErrorCode Monitor();
 
   MPI_Comm   comm_ = MPI_COMM_NULL;
   PhysicsSet physics_;

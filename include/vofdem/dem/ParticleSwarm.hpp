@@ -26,7 +26,6 @@ public:
   PetscErrorCode Destroy();
 
   DM       Dm() const { return swarm_; }
-  PetscInt LocalCount() const;
   PetscErrorCode GlobalCount(PetscInt *n) const;
 
   // Appends n particles locally (fields left for the caller to fill); returns the first new index.
