@@ -148,8 +148,25 @@ PetscErrorCode OptionReader::Bool(const char *name, const char *text, PetscBool 
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode OptionReader::RealVector(const char *name, const char *text, const char *unit, PetscReal *value,
-                                        PetscInt n, RealRange range, PetscBool *set) {
+// Checks that `raw` holds exactly n comma-separated values ("numbers"/"a number", or "integers"/
+// "an integer"), each parsed by parse() and accepted by inRange(); describe() names the range.
+template <typename T, typename Parse, typename InRange, typename Describe>
+static PetscErrorCode CheckVector(const std::string &option, const char *raw, PetscInt n, const char *kinds, const char *kind, Parse parse, InRange inRange,
+                                  Describe describe) {
+  PetscFunctionBeginUser;
+  const auto parts = SplitList(raw ? raw : "");
+  if ((PetscInt)parts.size() != n)
+    VofdemInputError(PETSC_COMM_WORLD, "option %s: needs %" PetscInt_FMT " comma-separated %s, got '%s'", option.c_str(), n, kinds, raw ? raw : "");
+  for (const auto &p : parts) {
+    T v;
+    if (!parse(p, &v)) VofdemInputError(PETSC_COMM_WORLD, "option %s: '%s' is not %s", option.c_str(), p.c_str(), kind);
+    if (!inRange(v)) VofdemInputError(PETSC_COMM_WORLD, "option %s: %s is out of range, must be in %s", option.c_str(), p.c_str(), describe().c_str());
+  }
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode OptionReader::RealVector(const char *name, const char *text, const char *unit, PetscReal *value, PetscInt n, RealRange range,
+                                        PetscBool *set) {
   PetscOptionItems *PetscOptionsObject = items_;
   const char       *raw                = nullptr;
   PetscBool         given              = PETSC_FALSE;
@@ -157,25 +174,14 @@ PetscErrorCode OptionReader::RealVector(const char *name, const char *text, cons
 
   PetscFunctionBeginUser;
   PetscCall(RawValue(name, &raw, &given));
-  if (given) {
-    const auto parts = SplitList(raw ? raw : "");
-    if ((PetscInt)parts.size() != n)
-      VofdemInputError(PETSC_COMM_WORLD, "option %s: needs %" PetscInt_FMT " comma-separated numbers, got '%s'", FullName(name).c_str(), n,
-                       raw ? raw : "");
-    for (const auto &p : parts) {
-      PetscReal v;
-      if (!ParseReal(p, &v)) VofdemInputError(PETSC_COMM_WORLD, "option %s: '%s' is not a number", FullName(name).c_str(), p.c_str());
-      if (!range.Contains(v))
-        VofdemInputError(PETSC_COMM_WORLD, "option %s: %g is out of range, must be in %s", FullName(name).c_str(), (double)v,
-                         range.Describe().c_str());
-    }
-  }
+  if (given)
+    PetscCall(CheckVector<PetscReal>(
+      FullName(name), raw, n, "numbers", "a number", ParseReal, [&](PetscReal v) { return range.Contains(v); }, [&] { return range.Describe(); }));
   PetscCall(PetscOptionsRealArray(name, VectorHelp(text, unit, value, n).c_str(), nullptr, value, &count, set));
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode OptionReader::IntVector(const char *name, const char *text, PetscInt *value, PetscInt n, PetscInt lo,
-                                       PetscInt hi, PetscBool *set) {
+PetscErrorCode OptionReader::IntVector(const char *name, const char *text, PetscInt *value, PetscInt n, PetscInt lo, PetscInt hi, PetscBool *set) {
   PetscOptionItems *PetscOptionsObject = items_;
   const char       *raw                = nullptr;
   PetscBool         given              = PETSC_FALSE;
@@ -183,19 +189,10 @@ PetscErrorCode OptionReader::IntVector(const char *name, const char *text, Petsc
 
   PetscFunctionBeginUser;
   PetscCall(RawValue(name, &raw, &given));
-  if (given) {
-    const auto parts = SplitList(raw ? raw : "");
-    if ((PetscInt)parts.size() != n)
-      VofdemInputError(PETSC_COMM_WORLD, "option %s: needs %" PetscInt_FMT " comma-separated integers, got '%s'", FullName(name).c_str(), n,
-                       raw ? raw : "");
-    for (const auto &p : parts) {
-      PetscInt v;
-      if (!ParseInt(p, &v)) VofdemInputError(PETSC_COMM_WORLD, "option %s: '%s' is not an integer", FullName(name).c_str(), p.c_str());
-      if (v < lo || v > hi)
-        VofdemInputError(PETSC_COMM_WORLD, "option %s: %" PetscInt_FMT " is out of range, must be in [%" PetscInt_FMT ", %" PetscInt_FMT "]",
-                         FullName(name).c_str(), v, lo, hi);
-    }
-  }
+  if (given)
+    PetscCall(CheckVector<PetscInt>(
+      FullName(name), raw, n, "integers", "an integer", ParseInt, [&](PetscInt v) { return v >= lo && v <= hi; },
+      [&] { return "[" + std::to_string(lo) + ", " + std::to_string(hi) + "]"; }));
   PetscCall(PetscOptionsIntArray(name, VectorHelp(text, "", value, n).c_str(), nullptr, value, &count, set));
   PetscFunctionReturn(0);
 }

@@ -119,17 +119,10 @@ PetscErrorCode Dem::Fill(std::uint64_t seed) {
     centre(id, x);
     if (grid_->OwnsPoint(x)) ++local;
   }
-  PetscInt first;
+  PetscInt       first;
+  ParticleArrays a;
   PetscCall(swarm_.AddLocal(local, &first));
-  PetscReal  *pos, *vel, *force, *rad, *mass;
-  PetscInt64 *ids;
-  DM          sw = swarm_.Dm();
-  PetscCall(DMSwarmGetField(sw, field::position, nullptr, nullptr, (void **)&pos));
-  PetscCall(DMSwarmGetField(sw, field::velocity, nullptr, nullptr, (void **)&vel));
-  PetscCall(DMSwarmGetField(sw, field::force, nullptr, nullptr, (void **)&force));
-  PetscCall(DMSwarmGetField(sw, field::radius, nullptr, nullptr, (void **)&rad));
-  PetscCall(DMSwarmGetField(sw, field::mass, nullptr, nullptr, (void **)&mass));
-  PetscCall(DMSwarmGetField(sw, field::id, nullptr, nullptr, (void **)&ids));
+  PetscCall(swarm_.GetArrays(&a));
   const PetscReal m = material_.density * 4.0 / 3.0 * PETSC_PI * radius_ * radius_ * radius_;
   PetscInt        p = first;
   for (PetscInt64 id = 0; id < want; ++id) {
@@ -137,21 +130,16 @@ PetscErrorCode Dem::Fill(std::uint64_t seed) {
     centre(id, x);
     if (!grid_->OwnsPoint(x)) continue;
     for (int d = 0; d < 3; ++d) {
-      pos[3 * p + d]   = x[d];
-      vel[3 * p + d]   = fillVelocity_[d];
-      force[3 * p + d] = 0;
+      a.x[3 * p + d] = x[d];
+      a.v[3 * p + d] = fillVelocity_[d];
+      a.f[3 * p + d] = 0;
     }
-    rad[p]  = radius_;
-    mass[p] = m;
-    ids[p]  = id;
+    a.radius[p] = radius_;
+    a.mass[p]   = m;
+    a.id[p]     = id;
     ++p;
   }
-  PetscCall(DMSwarmRestoreField(sw, field::id, nullptr, nullptr, (void **)&ids));
-  PetscCall(DMSwarmRestoreField(sw, field::mass, nullptr, nullptr, (void **)&mass));
-  PetscCall(DMSwarmRestoreField(sw, field::radius, nullptr, nullptr, (void **)&rad));
-  PetscCall(DMSwarmRestoreField(sw, field::force, nullptr, nullptr, (void **)&force));
-  PetscCall(DMSwarmRestoreField(sw, field::velocity, nullptr, nullptr, (void **)&vel));
-  PetscCall(DMSwarmRestoreField(sw, field::position, nullptr, nullptr, (void **)&pos));
+  PetscCall(swarm_.RestoreArrays(&a));
   PetscCall(swarm_.GlobalCount(&inserted_));
   PetscCheck(inserted_ == want, comm_, PETSC_ERR_PLIB, "lattice fill placed %" PetscInt_FMT " particles instead of %" PetscInt64_FMT, inserted_, want);
   PetscCall(swarm_.MigrateIfNeeded(0, PETSC_TRUE));  // agree with the swarm's own point location; set references
@@ -161,98 +149,63 @@ PetscErrorCode Dem::Fill(std::uint64_t seed) {
 // Gravity plus the Hertz normal force of each box face on each particle (P3). The velocity used for
 // the damping is the one at hand (half step inside velocity Verlet).
 PetscErrorCode Dem::ComputeForces() {
-  PetscReal *pos, *vel, *force, *rad, *mass;
-  PetscInt   n;
-  DM         sw = swarm_.Dm();
+  ParticleArrays a;
 
   PetscFunctionBeginUser;
-  PetscCall(DMSwarmGetLocalSize(sw, &n));
-  PetscCall(DMSwarmGetField(sw, field::position, nullptr, nullptr, (void **)&pos));
-  PetscCall(DMSwarmGetField(sw, field::velocity, nullptr, nullptr, (void **)&vel));
-  PetscCall(DMSwarmGetField(sw, field::force, nullptr, nullptr, (void **)&force));
-  PetscCall(DMSwarmGetField(sw, field::radius, nullptr, nullptr, (void **)&rad));
-  PetscCall(DMSwarmGetField(sw, field::mass, nullptr, nullptr, (void **)&mass));
+  PetscCall(swarm_.GetArrays(&a));
   const PetscReal *lo = grid_->Lower(), *hi = grid_->Upper();
-  for (PetscInt p = 0; p < n; ++p) {
-    PetscReal *f = &force[3 * p];
-    for (int d = 0; d < 3; ++d) f[d] = mass[p] * gravity_[d];
-    ForEachWallContact(&pos[3 * p], rad[p], &vel[3 * p], lo, hi, wallContact_, [f](int, int d, PetscReal, PetscReal fn) { f[d] += fn; });
+  for (PetscInt p = 0; p < a.n; ++p) {
+    PetscReal *f = &a.f[3 * p];
+    for (int d = 0; d < 3; ++d) f[d] = a.mass[p] * gravity_[d];
+    ForEachWallContact(&a.x[3 * p], a.radius[p], &a.v[3 * p], lo, hi, wallContact_, [f](int, int d, PetscReal, PetscReal fn) { f[d] += fn; });
   }
-  PetscCall(DMSwarmRestoreField(sw, field::mass, nullptr, nullptr, (void **)&mass));
-  PetscCall(DMSwarmRestoreField(sw, field::radius, nullptr, nullptr, (void **)&rad));
-  PetscCall(DMSwarmRestoreField(sw, field::force, nullptr, nullptr, (void **)&force));
-  PetscCall(DMSwarmRestoreField(sw, field::velocity, nullptr, nullptr, (void **)&vel));
-  PetscCall(DMSwarmRestoreField(sw, field::position, nullptr, nullptr, (void **)&pos));
+  PetscCall(swarm_.RestoreArrays(&a));
   PetscFunctionReturn(0);
 }
 
 PetscErrorCode Dem::Step(PetscReal dt) {
-  PetscReal *pos, *vel, *force, *mass;
-  PetscInt   n;
-  DM         sw = swarm_.Dm();
+  ParticleArrays a;
 
   PetscFunctionBeginUser;
-  PetscCall(DMSwarmGetLocalSize(sw, &n));
-  PetscCall(DMSwarmGetField(sw, field::position, nullptr, nullptr, (void **)&pos));
-  PetscCall(DMSwarmGetField(sw, field::velocity, nullptr, nullptr, (void **)&vel));
-  PetscCall(DMSwarmGetField(sw, field::force, nullptr, nullptr, (void **)&force));
-  PetscCall(DMSwarmGetField(sw, field::mass, nullptr, nullptr, (void **)&mass));
-  for (PetscInt p = 0; p < n; ++p) {
-    const PetscReal h = 0.5 * dt / mass[p];
+  PetscCall(swarm_.GetArrays(&a));
+  for (PetscInt p = 0; p < a.n; ++p) {
+    const PetscReal h = 0.5 * dt / a.mass[p];
     for (int d = 0; d < 3; ++d) {
-      vel[3 * p + d] += h * force[3 * p + d];
-      pos[3 * p + d] += dt * vel[3 * p + d];
+      a.v[3 * p + d] += h * a.f[3 * p + d];
+      a.x[3 * p + d] += dt * a.v[3 * p + d];
     }
   }
-  PetscCall(DMSwarmRestoreField(sw, field::mass, nullptr, nullptr, (void **)&mass));
-  PetscCall(DMSwarmRestoreField(sw, field::force, nullptr, nullptr, (void **)&force));
-  PetscCall(DMSwarmRestoreField(sw, field::velocity, nullptr, nullptr, (void **)&vel));
-  PetscCall(DMSwarmRestoreField(sw, field::position, nullptr, nullptr, (void **)&pos));
+  PetscCall(swarm_.RestoreArrays(&a));
   PetscCall(swarm_.MigrateIfNeeded(0.5 * skin_, PETSC_FALSE));
   PetscCall(ComputeForces());
-  PetscCall(DMSwarmGetLocalSize(sw, &n));
-  PetscCall(DMSwarmGetField(sw, field::velocity, nullptr, nullptr, (void **)&vel));
-  PetscCall(DMSwarmGetField(sw, field::force, nullptr, nullptr, (void **)&force));
-  PetscCall(DMSwarmGetField(sw, field::mass, nullptr, nullptr, (void **)&mass));
-  for (PetscInt p = 0; p < n; ++p) {
-    const PetscReal h = 0.5 * dt / mass[p];
-    for (int d = 0; d < 3; ++d) vel[3 * p + d] += h * force[3 * p + d];
+  PetscCall(swarm_.GetArrays(&a));
+  for (PetscInt p = 0; p < a.n; ++p) {
+    const PetscReal h = 0.5 * dt / a.mass[p];
+    for (int d = 0; d < 3; ++d) a.v[3 * p + d] += h * a.f[3 * p + d];
   }
-  PetscCall(DMSwarmRestoreField(sw, field::mass, nullptr, nullptr, (void **)&mass));
-  PetscCall(DMSwarmRestoreField(sw, field::force, nullptr, nullptr, (void **)&force));
-  PetscCall(DMSwarmRestoreField(sw, field::velocity, nullptr, nullptr, (void **)&vel));
+  PetscCall(swarm_.RestoreArrays(&a));
   PetscFunctionReturn(0);
 }
 
 PetscErrorCode Dem::Summarize(DemSummary *s) const {
-  PetscReal *pos, *vel, *rad, *mass;
-  PetscInt   n;
-  DM         sw = swarm_.Dm();
-  PetscReal  sums[1 + 18] = {0}, maxOverlap = 0;
-  PetscInt   contacts = 0;
+  ParticleArrays a;
+  PetscReal      sums[1 + 18] = {0}, global[1 + 18], maxOverlap = 0;
+  PetscInt       contacts = 0;
 
   PetscFunctionBeginUser;
-  PetscCall(DMSwarmGetLocalSize(sw, &n));
-  PetscCall(DMSwarmGetField(sw, field::position, nullptr, nullptr, (void **)&pos));
-  PetscCall(DMSwarmGetField(sw, field::velocity, nullptr, nullptr, (void **)&vel));
-  PetscCall(DMSwarmGetField(sw, field::radius, nullptr, nullptr, (void **)&rad));
-  PetscCall(DMSwarmGetField(sw, field::mass, nullptr, nullptr, (void **)&mass));
+  PetscCall(swarm_.GetArrays(&a));
   const PetscReal *lo = grid_->Lower(), *hi = grid_->Upper();
-  for (PetscInt p = 0; p < n; ++p) {
-    const PetscReal *v = &vel[3 * p], diameter = 2 * rad[p];
-    sums[0] += 0.5 * mass[p] * (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+  for (PetscInt p = 0; p < a.n; ++p) {
+    const PetscReal *v = &a.v[3 * p], diameter = 2 * a.radius[p];
+    sums[0] += 0.5 * a.mass[p] * (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
     // The particles push on a face with minus the force the face exerts on them.
-    ForEachWallContact(&pos[3 * p], rad[p], v, lo, hi, wallContact_, [&](int face, int d, PetscReal overlap, PetscReal fn) {
+    ForEachWallContact(&a.x[3 * p], a.radius[p], v, lo, hi, wallContact_, [&](int face, int d, PetscReal overlap, PetscReal fn) {
       ++contacts;
       maxOverlap = std::max(maxOverlap, overlap / diameter);
       sums[1 + 3 * face + d] -= fn;
     });
   }
-  PetscCall(DMSwarmRestoreField(sw, field::mass, nullptr, nullptr, (void **)&mass));
-  PetscCall(DMSwarmRestoreField(sw, field::radius, nullptr, nullptr, (void **)&rad));
-  PetscCall(DMSwarmRestoreField(sw, field::velocity, nullptr, nullptr, (void **)&vel));
-  PetscCall(DMSwarmRestoreField(sw, field::position, nullptr, nullptr, (void **)&pos));
-  PetscReal global[19];
+  PetscCall(swarm_.RestoreArrays(&a));
   PetscCallMPI(MPI_Allreduce(sums, global, 19, MPIU_REAL, MPIU_SUM, comm_));
   PetscCallMPI(MPI_Allreduce(&maxOverlap, &s->maxOverlap, 1, MPIU_REAL, MPIU_MAX, comm_));
   PetscCallMPI(MPI_Allreduce(&contacts, &s->wallContacts, 1, MPIU_INT, MPI_SUM, comm_));
@@ -264,27 +217,20 @@ PetscErrorCode Dem::Summarize(DemSummary *s) const {
 }
 
 PetscErrorCode Dem::FindParticle(std::int64_t id, PetscReal x[3], PetscReal v[3], PetscBool *found) const {
-  PetscReal  *pos, *vel, local[7] = {0}, global[7];
-  PetscInt64 *ids;
-  PetscInt    n;
-  DM          sw = swarm_.Dm();
+  ParticleArrays a;
+  PetscReal      local[7] = {0}, global[7];
 
   PetscFunctionBeginUser;
-  PetscCall(DMSwarmGetLocalSize(sw, &n));
-  PetscCall(DMSwarmGetField(sw, field::position, nullptr, nullptr, (void **)&pos));
-  PetscCall(DMSwarmGetField(sw, field::velocity, nullptr, nullptr, (void **)&vel));
-  PetscCall(DMSwarmGetField(sw, field::id, nullptr, nullptr, (void **)&ids));
-  for (PetscInt p = 0; p < n; ++p) {
-    if (ids[p] != id) continue;
+  PetscCall(swarm_.GetArrays(&a));
+  for (PetscInt p = 0; p < a.n; ++p) {
+    if (a.id[p] != id) continue;
     local[0] = 1;
     for (int d = 0; d < 3; ++d) {
-      local[1 + d] = pos[3 * p + d];
-      local[4 + d] = vel[3 * p + d];
+      local[1 + d] = a.x[3 * p + d];
+      local[4 + d] = a.v[3 * p + d];
     }
   }
-  PetscCall(DMSwarmRestoreField(sw, field::id, nullptr, nullptr, (void **)&ids));
-  PetscCall(DMSwarmRestoreField(sw, field::velocity, nullptr, nullptr, (void **)&vel));
-  PetscCall(DMSwarmRestoreField(sw, field::position, nullptr, nullptr, (void **)&pos));
+  PetscCall(swarm_.RestoreArrays(&a));
   // Exactly one rank holds the particle, so the sum is the value itself, bit for bit.
   PetscCallMPI(MPI_Allreduce(local, global, 7, MPIU_REAL, MPIU_SUM, comm_));
   *found = (PetscBool)(global[0] == 1);

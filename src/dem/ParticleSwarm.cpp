@@ -29,6 +29,32 @@ PetscErrorCode ParticleSwarm::Destroy() {
   PetscFunctionReturn(0);
 }
 
+PetscErrorCode ParticleSwarm::GetArrays(ParticleArrays *a) const {
+  PetscFunctionBeginUser;
+  PetscCall(DMSwarmGetLocalSize(swarm_, &a->n));
+  PetscCall(DMSwarmGetField(swarm_, field::position, nullptr, nullptr, (void **)&a->x));
+  PetscCall(DMSwarmGetField(swarm_, field::velocity, nullptr, nullptr, (void **)&a->v));
+  PetscCall(DMSwarmGetField(swarm_, field::force, nullptr, nullptr, (void **)&a->f));
+  PetscCall(DMSwarmGetField(swarm_, field::radius, nullptr, nullptr, (void **)&a->radius));
+  PetscCall(DMSwarmGetField(swarm_, field::mass, nullptr, nullptr, (void **)&a->mass));
+  PetscCall(DMSwarmGetField(swarm_, field::id, nullptr, nullptr, (void **)&a->id));
+  PetscCall(DMSwarmGetField(swarm_, field::reference, nullptr, nullptr, (void **)&a->reference));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode ParticleSwarm::RestoreArrays(ParticleArrays *a) const {
+  PetscFunctionBeginUser;
+  PetscCall(DMSwarmRestoreField(swarm_, field::reference, nullptr, nullptr, (void **)&a->reference));
+  PetscCall(DMSwarmRestoreField(swarm_, field::id, nullptr, nullptr, (void **)&a->id));
+  PetscCall(DMSwarmRestoreField(swarm_, field::mass, nullptr, nullptr, (void **)&a->mass));
+  PetscCall(DMSwarmRestoreField(swarm_, field::radius, nullptr, nullptr, (void **)&a->radius));
+  PetscCall(DMSwarmRestoreField(swarm_, field::force, nullptr, nullptr, (void **)&a->f));
+  PetscCall(DMSwarmRestoreField(swarm_, field::velocity, nullptr, nullptr, (void **)&a->v));
+  PetscCall(DMSwarmRestoreField(swarm_, field::position, nullptr, nullptr, (void **)&a->x));
+  *a = ParticleArrays{};
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode ParticleSwarm::GlobalCount(PetscInt *n) const {
   PetscFunctionBeginUser;
   PetscCall(DMSwarmGetSize(swarm_, n));
@@ -43,20 +69,18 @@ PetscErrorCode ParticleSwarm::AddLocal(PetscInt n, PetscInt *first) {
 }
 
 PetscErrorCode ParticleSwarm::MigrateIfNeeded(PetscReal halfSkin, PetscBool force, PetscBool *migrated) {
-  PetscInt   n = 0, before = 0, after = 0;
-  PetscReal *x = nullptr, *ref = nullptr, moved2 = 0, maxMoved2 = 0;
+  ParticleArrays a;
+  PetscInt       before = 0, after = 0;
+  PetscReal      moved2 = 0, maxMoved2 = 0;
 
   PetscFunctionBeginUser;
   if (migrated) *migrated = PETSC_FALSE;
-  PetscCall(DMSwarmGetLocalSize(swarm_, &n));
-  PetscCall(DMSwarmGetField(swarm_, field::position, nullptr, nullptr, (void **)&x));
-  PetscCall(DMSwarmGetField(swarm_, field::reference, nullptr, nullptr, (void **)&ref));
-  for (PetscInt p = 0; p < 3 * n; p += 3) {
-    const PetscReal dx = x[p] - ref[p], dy = x[p + 1] - ref[p + 1], dz = x[p + 2] - ref[p + 2];
+  PetscCall(GetArrays(&a));
+  for (PetscInt p = 0; p < 3 * a.n; p += 3) {
+    const PetscReal dx = a.x[p] - a.reference[p], dy = a.x[p + 1] - a.reference[p + 1], dz = a.x[p + 2] - a.reference[p + 2];
     moved2             = PetscMax(moved2, dx * dx + dy * dy + dz * dz);
   }
-  PetscCall(DMSwarmRestoreField(swarm_, field::reference, nullptr, nullptr, (void **)&ref));
-  PetscCall(DMSwarmRestoreField(swarm_, field::position, nullptr, nullptr, (void **)&x));
+  PetscCall(RestoreArrays(&a));
   PetscCallMPI(MPI_Allreduce(&moved2, &maxMoved2, 1, MPIU_REAL, MPIU_MAX, grid_->Comm()));
   if (!force && maxMoved2 <= halfSkin * halfSkin) PetscFunctionReturn(0);
   PetscCall(DMSwarmGetSize(swarm_, &before));
@@ -65,12 +89,9 @@ PetscErrorCode ParticleSwarm::MigrateIfNeeded(PetscReal halfSkin, PetscBool forc
   PetscCheck(after == before, grid_->Comm(), PETSC_ERR_PLIB,
              "migration lost %" PetscInt_FMT " of %" PetscInt_FMT " particles (a particle left the box or jumped past a neighbouring rank)",
              before - after, before);
-  PetscCall(DMSwarmGetLocalSize(swarm_, &n));
-  PetscCall(DMSwarmGetField(swarm_, field::position, nullptr, nullptr, (void **)&x));
-  PetscCall(DMSwarmGetField(swarm_, field::reference, nullptr, nullptr, (void **)&ref));
-  for (PetscInt p = 0; p < 3 * n; ++p) ref[p] = x[p];
-  PetscCall(DMSwarmRestoreField(swarm_, field::reference, nullptr, nullptr, (void **)&ref));
-  PetscCall(DMSwarmRestoreField(swarm_, field::position, nullptr, nullptr, (void **)&x));
+  PetscCall(GetArrays(&a));
+  for (PetscInt p = 0; p < 3 * a.n; ++p) a.reference[p] = a.x[p];
+  PetscCall(RestoreArrays(&a));
   if (migrated) *migrated = PETSC_TRUE;
   PetscFunctionReturn(0);
 }

@@ -20,6 +20,14 @@ inline constexpr const char *id       = "id";                  // global id, Pet
 inline constexpr const char *reference = "reference";          // m, position at the last migration
 }  // namespace field
 
+// Every field of the local particles at once, for loops over particles (structure of arrays;
+// vectors hold x,y,z per particle). Valid between GetArrays and RestoreArrays.
+struct ParticleArrays {
+  PetscInt    n = 0;
+  PetscReal  *x = nullptr, *v = nullptr, *f = nullptr, *radius = nullptr, *mass = nullptr, *reference = nullptr;
+  PetscInt64 *id = nullptr;
+};
+
 class ParticleSwarm {
 public:
   PetscErrorCode Create(const Grid &grid);
@@ -27,6 +35,9 @@ public:
 
   DM       Dm() const { return swarm_; }
   PetscErrorCode GlobalCount(PetscInt *n) const;
+
+  PetscErrorCode GetArrays(ParticleArrays *a) const;
+  PetscErrorCode RestoreArrays(ParticleArrays *a) const;
 
   // Appends n particles locally (fields left for the caller to fill); returns the first new index.
   PetscErrorCode AddLocal(PetscInt n, PetscInt *first);
