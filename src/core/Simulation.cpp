@@ -74,7 +74,8 @@ PetscErrorCode Simulation::SetUp() {
       const std::string path = outputDir_ + "/monitor.csv";
       if (!ec) csv_ = std::fopen(path.c_str(), "w");
       ok = csv_ != nullptr;
-      if (csv_) std::fprintf(csv_, "step,time_s,dt_s,particles,kinetic_energy_J,wall_contacts,max_overlap_per_diameter,floor_force_z_N,wall_time_s\n");
+      if (csv_)
+        std::fprintf(csv_, "step,time_s,dt_s,particles,kinetic_energy_J,rotational_energy_J,pair_contacts,coordination,wall_contacts,max_overlap_per_diameter,floor_force_z_N,wall_time_s\n");
     }
     PetscCallMPI(MPI_Allreduce(&ok, &allOk, 1, MPI_INT, MPI_MIN, comm_));
     if (!allOk) VofdemInputError(comm_, "option -output_dir: cannot create '%s' or write monitor.csv in it", outputDir_.c_str());
@@ -143,8 +144,9 @@ PetscErrorCode Simulation::Monitor() {
   std::snprintf(buf, sizeof buf, "step %6d  t %.6e s  dt %.3e s", (int)step_, (double)time_, (double)dt_);
   line += buf;
   if (physics_.dem) {
-    std::snprintf(buf, sizeof buf, "  | particles %d  KE %.6e J  wall contacts %d  max overlap %.4e d  floor force %.6e N", (int)s.particles,
-                  (double)s.kinetic, (int)s.wallContacts, (double)s.maxOverlap, (double)s.wallForce[4][2]);
+    std::snprintf(buf, sizeof buf, "  | particles %d  KE %.6e J  rot %.3e J  contacts %d  Z %.3f  wall %d  overlap %.3e d  floor %.6e N", (int)s.particles,
+                  (double)s.kinetic, (double)s.rotational, (int)s.pairContacts, (double)s.coordination, (int)s.wallContacts, (double)s.maxOverlap,
+                  (double)s.wallForce[4][2]);
     line += buf;
   }
   if (monitorTiming_) {
@@ -155,8 +157,8 @@ PetscErrorCode Simulation::Monitor() {
   }
   PetscCall(PetscPrintf(comm_, "%s\n", line.c_str()));
   if (csv_) {
-    std::fprintf(csv_, "%d,%.10e,%.6e,%d,%.10e,%d,%.6e,%.10e,%.3f\n", (int)step_, (double)time_, (double)dt_, (int)s.particles, (double)s.kinetic,
-                 (int)s.wallContacts, (double)s.maxOverlap, (double)s.wallForce[4][2], wall);
+    std::fprintf(csv_, "%d,%.10e,%.6e,%d,%.10e,%.10e,%d,%.6f,%d,%.6e,%.10e,%.3f\n", (int)step_, (double)time_, (double)dt_, (int)s.particles, (double)s.kinetic,
+                 (double)s.rotational, (int)s.pairContacts, (double)s.coordination, (int)s.wallContacts, (double)s.maxOverlap, (double)s.wallForce[4][2], wall);
     std::fflush(csv_);
   }
   PetscFunctionReturn(0);

@@ -18,6 +18,9 @@ PetscErrorCode ParticleSwarm::Create(const Grid &grid) {
   PetscCall(DMSwarmRegisterPetscDatatypeField(swarm_, field::mass, 1, PETSC_REAL));
   PetscCall(DMSwarmRegisterPetscDatatypeField(swarm_, field::id, 1, PETSC_INT64));
   PetscCall(DMSwarmRegisterPetscDatatypeField(swarm_, field::reference, 3, PETSC_REAL));
+  PetscCall(DMSwarmRegisterPetscDatatypeField(swarm_, field::omega, 3, PETSC_REAL));
+  PetscCall(DMSwarmRegisterPetscDatatypeField(swarm_, field::torque, 3, PETSC_REAL));
+  PetscCall(DMSwarmRegisterPetscDatatypeField(swarm_, field::wallSpring, 18, PETSC_REAL));
   PetscCall(DMSwarmFinalizeFieldRegister(swarm_));
   PetscCall(DMSwarmSetLocalSizes(swarm_, 0, 64));
   PetscFunctionReturn(0);
@@ -39,11 +42,17 @@ PetscErrorCode ParticleSwarm::GetArrays(ParticleArrays *a) const {
   PetscCall(DMSwarmGetField(swarm_, field::mass, nullptr, nullptr, (void **)&a->mass));
   PetscCall(DMSwarmGetField(swarm_, field::id, nullptr, nullptr, (void **)&a->id));
   PetscCall(DMSwarmGetField(swarm_, field::reference, nullptr, nullptr, (void **)&a->reference));
+  PetscCall(DMSwarmGetField(swarm_, field::omega, nullptr, nullptr, (void **)&a->omega));
+  PetscCall(DMSwarmGetField(swarm_, field::torque, nullptr, nullptr, (void **)&a->torque));
+  PetscCall(DMSwarmGetField(swarm_, field::wallSpring, nullptr, nullptr, (void **)&a->wallSpring));
   PetscFunctionReturn(0);
 }
 
 PetscErrorCode ParticleSwarm::RestoreArrays(ParticleArrays *a) const {
   PetscFunctionBeginUser;
+  PetscCall(DMSwarmRestoreField(swarm_, field::wallSpring, nullptr, nullptr, (void **)&a->wallSpring));
+  PetscCall(DMSwarmRestoreField(swarm_, field::torque, nullptr, nullptr, (void **)&a->torque));
+  PetscCall(DMSwarmRestoreField(swarm_, field::omega, nullptr, nullptr, (void **)&a->omega));
   PetscCall(DMSwarmRestoreField(swarm_, field::reference, nullptr, nullptr, (void **)&a->reference));
   PetscCall(DMSwarmRestoreField(swarm_, field::id, nullptr, nullptr, (void **)&a->id));
   PetscCall(DMSwarmRestoreField(swarm_, field::mass, nullptr, nullptr, (void **)&a->mass));
@@ -68,13 +77,11 @@ PetscErrorCode ParticleSwarm::AddLocal(PetscInt n, PetscInt *first) {
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode ParticleSwarm::MigrateIfNeeded(PetscReal halfSkin, PetscBool force, PetscBool *migrated) {
+PetscErrorCode ParticleSwarm::NeedsRebuild(PetscReal halfSkin, PetscBool *rebuild) const {
   ParticleArrays a;
-  PetscInt       before = 0, after = 0;
   PetscReal      moved2 = 0, maxMoved2 = 0;
 
   PetscFunctionBeginUser;
-  if (migrated) *migrated = PETSC_FALSE;
   PetscCall(GetArrays(&a));
   for (PetscInt p = 0; p < 3 * a.n; p += 3) {
     const PetscReal dx = a.x[p] - a.reference[p], dy = a.x[p + 1] - a.reference[p + 1], dz = a.x[p + 2] - a.reference[p + 2];
@@ -82,7 +89,15 @@ PetscErrorCode ParticleSwarm::MigrateIfNeeded(PetscReal halfSkin, PetscBool forc
   }
   PetscCall(RestoreArrays(&a));
   PetscCallMPI(MPI_Allreduce(&moved2, &maxMoved2, 1, MPIU_REAL, MPIU_MAX, grid_->Comm()));
-  if (!force && maxMoved2 <= halfSkin * halfSkin) PetscFunctionReturn(0);
+  *rebuild = (PetscBool)(maxMoved2 > halfSkin * halfSkin);
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode ParticleSwarm::Migrate() {
+  ParticleArrays a;
+  PetscInt       before = 0, after = 0;
+
+  PetscFunctionBeginUser;
   PetscCall(DMSwarmGetSize(swarm_, &before));
   PetscCall(DMSwarmMigrate(swarm_, PETSC_TRUE));
   PetscCall(DMSwarmGetSize(swarm_, &after));
@@ -92,7 +107,6 @@ PetscErrorCode ParticleSwarm::MigrateIfNeeded(PetscReal halfSkin, PetscBool forc
   PetscCall(GetArrays(&a));
   for (PetscInt p = 0; p < 3 * a.n; ++p) a.reference[p] = a.x[p];
   PetscCall(RestoreArrays(&a));
-  if (migrated) *migrated = PETSC_TRUE;
   PetscFunctionReturn(0);
 }
 

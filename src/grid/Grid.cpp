@@ -16,8 +16,17 @@ PetscErrorCode Grid::SetFromOptions(MPI_Comm comm) {
     PetscCall(opt.IntVector("-cells", "Number of cells in x,y,z", cells_, 3, 1, 1 << 20));
     PetscCall(opt.RealVector("-lower", "Lower corner of the box x,y,z", "m", lower_, 3));
     PetscCall(opt.RealVector("-upper", "Upper corner of the box x,y,z", "m", upper_, 3));
+    PetscCall(opt.IntVector("-ranks", "Ranks per direction x,y,z (0,0,0: PETSc decides), e.g. 2,1,1 to cut a flat bed vertically", ranks_, 3, 0, 1 << 20));
   }
   PetscOptionsEnd();
+  PetscMPIInt size;
+  PetscCallMPI(MPI_Comm_size(comm, &size));
+  const PetscInt product = ranks_[0] * ranks_[1] * ranks_[2];
+  if ((ranks_[0] || ranks_[1] || ranks_[2]) && product != size)
+    VofdemInputError(comm, "option -grid_ranks: %" PetscInt_FMT " x %" PetscInt_FMT " x %" PetscInt_FMT " is not the %d ranks of the run", ranks_[0], ranks_[1], ranks_[2], (int)size);
+  for (int d = 0; d < 3; ++d)
+    if (ranks_[d] > cells_[d])
+      VofdemInputError(comm, "option -grid_ranks: %" PetscInt_FMT " ranks in %c but only %" PetscInt_FMT " cells", ranks_[d], "xyz"[d], cells_[d]);
   for (int d = 0; d < 3; ++d) {
     if (!(upper_[d] > lower_[d]))
       VofdemInputError(comm, "options -grid_lower/-grid_upper: upper corner must exceed lower corner in %c (%g <= %g)", "xyz"[d],
@@ -35,7 +44,8 @@ PetscErrorCode Grid::SetUp(PetscBool needVertexDM) {
   PetscFunctionBeginUser;
   PetscCallMPI(MPI_Comm_size(comm_, &size));
   PetscCall(DMDACreate3d(comm_, DM_BOUNDARY_NONE, DM_BOUNDARY_NONE, DM_BOUNDARY_NONE, DMDA_STENCIL_STAR, cells_[0], cells_[1], cells_[2],
-                         PETSC_DECIDE, PETSC_DECIDE, PETSC_DECIDE, 1, 1, nullptr, nullptr, nullptr, &cellDM_));
+                         ranks_[0] ? ranks_[0] : PETSC_DECIDE, ranks_[1] ? ranks_[1] : PETSC_DECIDE, ranks_[2] ? ranks_[2] : PETSC_DECIDE, 1, 1,
+                         nullptr, nullptr, nullptr, &cellDM_));
   PetscCall(DMSetOptionsPrefix(cellDM_, "grid_"));
   PetscCall(DMSetUp(cellDM_));
   PetscCall(DMDASetUniformCoordinates(cellDM_, lower_[0] + h_[0] / 2, upper_[0] - h_[0] / 2, lower_[1] + h_[1] / 2, upper_[1] - h_[1] / 2,
@@ -44,10 +54,14 @@ PetscErrorCode Grid::SetUp(PetscBool needVertexDM) {
   if (needVertexDM) {
     PetscCall(DMDAGetInfo(cellDM_, nullptr, nullptr, nullptr, nullptr, &m[0], &m[1], &m[2], nullptr, nullptr, nullptr, nullptr, nullptr, nullptr));
     PetscCall(DMDAGetOwnershipRanges(cellDM_, &l[0], &l[1], &l[2]));
+    // DMDA gives element e (nodes e, e+1) to the rank that owns node e+1 (DMDAGetElements), and
+    // the swarm locates points in those elements. For rank r's elements to be its cells, rank r
+    // must own nodes s_r+1 .. s_r+l_r: the extra node of each direction goes to the FIRST rank.
+    // (With it on the last rank, each swarm subdomain sat one cell below its fluid cells.)
     std::vector<PetscInt> lv[3];
     for (int d = 0; d < 3; ++d) {
       lv[d].assign(l[d], l[d] + m[d]);
-      lv[d].back() += 1;  // the extra node of each direction belongs to the last rank
+      lv[d].front() += 1;
     }
     // BOX stencil: DMSwarmInsertPointsUsingCellDM and point location need it (notes).
     PetscCall(DMDACreate3d(comm_, DM_BOUNDARY_NONE, DM_BOUNDARY_NONE, DM_BOUNDARY_NONE, DMDA_STENCIL_BOX, cells_[0] + 1, cells_[1] + 1,

@@ -58,3 +58,66 @@ inline PetscReal HertzContactTime(PetscReal mstar, PetscReal Rstar, PetscReal Es
 }
 
 }  // namespace vofdem::hertz
+
+namespace vofdem::hertz {
+
+// 1/G* = 2(2-nu_i)(1+nu_i)/E_i + 2(2-nu_j)(1+nu_j)/E_j   (P3)
+inline PetscReal EffectiveShearModulus(PetscReal Ei, PetscReal nui, PetscReal Ej, PetscReal nuj) {
+  return 1.0 / (2 * (2 - nui) * (1 + nui) / Ei + 2 * (2 - nuj) * (1 + nuj) / Ej);
+}
+
+// Material constants of one pair of materials (or a material and a wall).
+struct PairMaterial {
+  PetscReal Estar = 0, Gstar = 0;
+  PetscReal beta  = 0;  // ln(e)/sqrt(ln^2 e + pi^2) <= 0
+  PetscReal mu    = 0;  // sliding friction
+};
+
+inline PairMaterial MakePairMaterial(PetscReal Ei, PetscReal nui, PetscReal Ej, PetscReal nuj, PetscReal e, PetscReal mu) {
+  return {EffectiveModulus(Ei, nui, Ej, nuj), EffectiveShearModulus(Ei, nui, Ej, nuj), DampingRatio(e), mu};
+}
+
+// One Hertz-Mindlin contact (P3). Inputs: overlap delta > 0, unit normal n pointing from the partner
+// to this particle, R* and m*, the relative velocity of this particle's surface against the
+// partner's at the contact point (vrel), the step dt, and the tangential spring xi (history, m),
+// which is updated. Output: the force on this particle (the partner gets minus it) and its
+// tangential part Ft, from which each side's torque is -R n x Ft.
+// Order as in LIGGGHTS: the old spring is turned into the current tangent plane keeping its length,
+// extended by v_t dt, and when |F_t| > mu |F_n| the force is capped and the spring shortened to match.
+inline void Contact(const PairMaterial &c, PetscReal delta, const PetscReal n[3], PetscReal Rstar, PetscReal mstar, const PetscReal vrel[3],
+                    PetscReal dt, PetscReal xi[3], PetscReal F[3], PetscReal Ft[3]) {
+  const PetscReal sqrtRd = std::sqrt(Rstar * delta);
+  const PetscReal Sn = 2 * c.Estar * sqrtRd, St = 8 * c.Gstar * sqrtRd;
+  const PetscReal k5 = -2 * std::sqrt(5.0 / 6.0) * c.beta;  // >= 0
+  const PetscReal gn = k5 * std::sqrt(Sn * mstar), gt = k5 * std::sqrt(St * mstar);
+  const PetscReal vn = vrel[0] * n[0] + vrel[1] * n[1] + vrel[2] * n[2];  // > 0 separating
+  const PetscReal Fn = 2.0 / 3.0 * Sn * delta - gn * vn;                 // (4/3) E* sqrt(R*) delta^1.5 - gamma_n v_n
+  PetscReal       vt[3];
+  for (int d = 0; d < 3; ++d) vt[d] = vrel[d] - vn * n[d];
+  // Turn the spring into the tangent plane, keeping its length.
+  const PetscReal old2 = xi[0] * xi[0] + xi[1] * xi[1] + xi[2] * xi[2];
+  if (old2 > 0) {
+    const PetscReal xn = xi[0] * n[0] + xi[1] * n[1] + xi[2] * n[2];
+    for (int d = 0; d < 3; ++d) xi[d] -= xn * n[d];
+    const PetscReal new2 = xi[0] * xi[0] + xi[1] * xi[1] + xi[2] * xi[2];
+    if (new2 > 0) {
+      const PetscReal s = std::sqrt(old2 / new2);
+      for (int d = 0; d < 3; ++d) xi[d] *= s;
+    }
+  }
+  for (int d = 0; d < 3; ++d) {
+    xi[d] += vt[d] * dt;
+    Ft[d] = -St * xi[d] - gt * vt[d];
+  }
+  const PetscReal ft2 = Ft[0] * Ft[0] + Ft[1] * Ft[1] + Ft[2] * Ft[2], cap = c.mu * std::abs(Fn);
+  if (ft2 > cap * cap) {
+    const PetscReal s = cap / std::sqrt(ft2);
+    for (int d = 0; d < 3; ++d) {
+      Ft[d] *= s;
+      xi[d] = St > 0 ? -(Ft[d] + gt * vt[d]) / St : 0;
+    }
+  }
+  for (int d = 0; d < 3; ++d) F[d] = Fn * n[d] + Ft[d];
+}
+
+}  // namespace vofdem::hertz

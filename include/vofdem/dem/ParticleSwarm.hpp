@@ -18,6 +18,9 @@ inline constexpr const char *radius   = "radius";              // m
 inline constexpr const char *mass     = "mass";                // kg
 inline constexpr const char *id       = "id";                  // global id, PetscInt64
 inline constexpr const char *reference = "reference";          // m, position at the last migration
+inline constexpr const char *omega    = "omega";               // rad/s, angular velocity
+inline constexpr const char *torque   = "torque";              // N m, total torque of the last evaluation
+inline constexpr const char *wallSpring = "wall_spring";       // m, tangential spring against each box face (6 x 3)
 }  // namespace field
 
 // Every field of the local particles at once, for loops over particles (structure of arrays;
@@ -25,6 +28,7 @@ inline constexpr const char *reference = "reference";          // m, position at
 struct ParticleArrays {
   PetscInt    n = 0;
   PetscReal  *x = nullptr, *v = nullptr, *f = nullptr, *radius = nullptr, *mass = nullptr, *reference = nullptr;
+  PetscReal  *omega = nullptr, *torque = nullptr, *wallSpring = nullptr;
   PetscInt64 *id = nullptr;
 };
 
@@ -42,13 +46,14 @@ public:
   // Appends n particles locally (fields left for the caller to fill); returns the first new index.
   PetscErrorCode AddLocal(PetscInt n, PetscInt *first);
 
-  // Sends particles to the ranks that own their positions once any particle has moved more than
-  // `halfSkin` since the last migration (or always, with force): the Verlet-list rebuild rule, so
-  // every particle stays within halfSkin of its rank's box. DMSwarmMigrate is costly (point
-  // location and collectives): calling it on every step that some particle crosses a boundary
-  // took 61 % of a 2-rank run. The global count before and after must agree: a lost particle is
-  // an error. Returns whether it migrated.
-  PetscErrorCode MigrateIfNeeded(PetscReal halfSkin, PetscBool force, PetscBool *migrated = nullptr);
+  // Collective: whether any particle has moved more than `halfSkin` since the last migration, the
+  // Verlet-list rebuild rule. Migrating only then keeps every particle within halfSkin of its
+  // rank's box; DMSwarmMigrate is costly (point location and collectives): calling it on every
+  // step that some particle crossed a boundary took 61 % of a 2-rank run.
+  PetscErrorCode NeedsRebuild(PetscReal halfSkin, PetscBool *rebuild) const;
+  // Sends particles to the ranks that own their positions and resets the reference positions.
+  // The global count before and after must agree: a lost particle is an error.
+  PetscErrorCode Migrate();
 
 private:
   const Grid *grid_  = nullptr;

@@ -1,7 +1,7 @@
 // The Eulerian grid: a uniform box of cells on a cell-centred DMDA (STAR, width 1: the one matrices
-// are assembled on), and, for particles, a vertex DMDA with one more node per direction built from
-// the same ownership ranges, so that a swarm cell is a fluid cell on the same rank
-// (notes/petsc-3.18.md, DMSwarm).
+// are assembled on), and, for particles, a vertex DMDA with one more node per direction whose
+// ownership is chosen so that the swarm's elements on a rank are exactly that rank's fluid cells
+// (see Grid::SetUp; notes/petsc-3.18.md, DMSwarm).
 #pragma once
 
 #include <petscdmda.h>
@@ -10,7 +10,7 @@ namespace vofdem {
 
 class Grid {
 public:
-  PetscErrorCode SetFromOptions(MPI_Comm comm);  // -grid_cells, -grid_lower, -grid_upper
+  PetscErrorCode SetFromOptions(MPI_Comm comm);  // -grid_cells, -grid_lower, -grid_upper, -grid_ranks
   PetscErrorCode SetUp(PetscBool needVertexDM);
   PetscErrorCode View(PetscViewer viewer) const;
   PetscErrorCode Destroy();
@@ -37,6 +37,7 @@ private:
   PetscReal upper_[3] = {1, 1, 1};
   PetscReal h_[3]     = {0, 0, 0};
   PetscInt  start_[3] = {0, 0, 0}, count_[3] = {0, 0, 0};  // owned cells
+  PetscInt  ranks_[3] = {0, 0, 0};                          // ranks per direction; 0: PETSc decides
 };
 
 }  // namespace vofdem

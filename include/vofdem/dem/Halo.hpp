@@ -1,0 +1,43 @@
+// Ghost particles: copies of other ranks' particles that lie within a cut-off of this rank's box,
+// kept in our own arrays (not swarm points: notes/petsc-3.18.md). Build() chooses what to send to
+// whom (at neighbour-list rebuilds, after migration) and sends everything a contact needs;
+// Refresh() sends the moving state of the same particles in the same order on the other steps.
+#pragma once
+
+#include "vofdem/dem/ParticleSwarm.hpp"
+
+#include <array>
+#include <vector>
+
+namespace vofdem {
+
+class Halo {
+public:
+  // Every rank's box from the grid's ownership ranges.
+  PetscErrorCode SetUp(const Grid &grid);
+  PetscErrorCode Build(const ParticleArrays &a, const PetscReal *omega, PetscReal cutoff);
+  PetscErrorCode Refresh(const ParticleArrays &a, const PetscReal *omega);
+
+  PetscInt Count() const { return (PetscInt)id.size(); }
+  // Ranks this rank exchanges ghosts with, and the local indices sent to each (same order).
+  const std::vector<PetscMPIInt>           &Ranks() const { return ranks_; }
+  const std::vector<std::vector<PetscInt>> &SendLists() const { return send_; }
+  MPI_Comm                                  Comm() const { return comm_; }
+
+  // Ghost state, structure of arrays; vectors hold x,y,z per ghost.
+  std::vector<PetscReal>  x, v, omega, radius, mass;
+  std::vector<PetscInt64> id;
+
+private:
+  PetscErrorCode Exchange(const ParticleArrays &a, const PetscReal *omega, bool full);
+
+  MPI_Comm                            comm_ = MPI_COMM_NULL;
+  PetscMPIInt                         rank_ = 0;
+  std::vector<std::array<PetscReal, 6>> boxes_;  // lo x,y,z, hi x,y,z of every rank
+  std::vector<PetscMPIInt>            ranks_;    // neighbours within the cut-off
+  std::vector<std::vector<PetscInt>>  send_;
+  std::vector<PetscInt>               recvCount_;
+  std::vector<PetscReal>              sendBuf_, recvBuf_;
+};
+
+}  // namespace vofdem

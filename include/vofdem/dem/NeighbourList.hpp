@@ -1,0 +1,45 @@
+// Verlet list of particle pairs closer than a cut-off (2 R_max + skin), built with linked cells and
+// reused until a particle has moved half the skin. Index j < nLocal is a local particle (then
+// j > i), j >= nLocal is ghost j - nLocal. Each pair carries its tangential spring (P3), so the
+// contact loop reads history from an array, not a hash; across rebuilds the springs of touching
+// pairs are carried by the particles' global ids (ContactHistory).
+#pragma once
+
+#include "vofdem/core/Random.hpp"
+
+#include <petscsys.h>
+
+#include <array>
+#include <cstdint>
+#include <unordered_map>
+#include <vector>
+
+namespace vofdem {
+
+// Springs of touching pairs keyed by the pair of global ids (lower id first), stored as seen from
+// the lower id. Lives only while lists are rebuilt and particles migrate.
+struct PairKey {
+  PetscInt64 lo, hi;
+  bool operator==(const PairKey &o) const { return lo == o.lo && hi == o.hi; }
+};
+struct PairKeyHash {
+  size_t operator()(const PairKey &k) const { return (size_t)random::Mix(random::Mix((std::uint64_t)k.lo) ^ (std::uint64_t)k.hi); }
+};
+using ContactHistory = std::unordered_map<PairKey, std::array<PetscReal, 3>, PairKeyHash>;
+
+class NeighbourList {
+public:
+  // Builds the pairs among nLocal local and nGhost ghost positions within `cutoff`, binning in the
+  // box [lo - cutoff, hi + cutoff].
+  PetscErrorCode Build(PetscInt nLocal, const PetscReal *xLocal, PetscInt nGhost, const PetscReal *xGhost, PetscReal cutoff,
+                       const PetscReal lo[3], const PetscReal hi[3]);
+
+  size_t Size() const { return first.size(); }
+  std::vector<PetscInt>  first, second;  // the pairs
+  std::vector<PetscReal> spring;         // 3 per pair: tangential spring as seen from the lower id
+
+private:
+  std::vector<PetscInt> cellStart_, cellOf_, order_;
+};
+
+}  // namespace vofdem

@@ -1,0 +1,197 @@
+// Contacts of the particle module: the rebuild sequence (springs by id -> migrate -> ghosts ->
+// exchange springs -> new list -> springs back onto pairs) and the force evaluation.
+#include "vofdem/dem/Dem.hpp"
+
+#include <algorithm>
+#include <cstring>
+#include <unordered_set>
+
+namespace vofdem {
+
+namespace {
+
+inline void Cross(const PetscReal a[3], const PetscReal b[3], PetscReal c[3]) {
+  c[0] = a[1] * b[2] - a[2] * b[1];
+  c[1] = a[2] * b[0] - a[0] * b[2];
+  c[2] = a[0] * b[1] - a[1] * b[0];
+}
+
+// Read-only view of one particle, local or ghost.
+struct Body {
+  const PetscReal *x, *v, *w;
+  PetscReal        r, m;
+  PetscInt64       id;
+};
+
+}  // namespace
+
+PetscErrorCode Dem::Rebuild() {
+  ParticleArrays          a;
+  std::vector<PetscInt64> localIds;
+
+  PetscFunctionBeginUser;
+  // 1. Springs of touching pairs, by the pair's global ids (local indices change below).
+  springs_.clear();
+  PetscCall(swarm_.GetArrays(&a));
+  const PetscInt n = a.n;
+  for (size_t k = 0; k < list_.Size(); ++k) {
+    const PetscReal *s = &list_.spring[3 * k];
+    if (s[0] == 0 && s[1] == 0 && s[2] == 0) continue;
+    const PetscInt   i = list_.first[k], j = list_.second[k];
+    const PetscInt64 idi = a.id[i], idj = j < n ? a.id[j] : halo_.id[j - n];
+    springs_[{std::min(idi, idj), std::max(idi, idj)}] = {s[0], s[1], s[2]};
+  }
+  PetscCall(swarm_.RestoreArrays(&a));
+  // 2. Particles to their owners; 3. ghosts within the cut-off.
+  PetscCall(swarm_.Migrate());
+  const PetscReal cutoff = 2 * radius_ + skin_;
+  PetscCall(swarm_.GetArrays(&a));
+  PetscCall(halo_.Build(a, a.omega, cutoff));
+  localIds.assign(a.id, a.id + a.n);
+  PetscCall(swarm_.RestoreArrays(&a));
+  // 4. Springs to the ranks that now hold one of the pair.
+  PetscCall(ExchangeSprings(localIds));
+  // 5. The new list, its springs from the carried ones.
+  PetscReal lo[3], hi[3];
+  grid_->LocalBox(lo, hi);
+  PetscCall(swarm_.GetArrays(&a));
+  PetscCall(list_.Build(a.n, a.x, halo_.Count(), halo_.x.data(), cutoff, lo, hi));
+  for (size_t k = 0; k < list_.Size() && !springs_.empty(); ++k) {
+    const PetscInt   i = list_.first[k], j = list_.second[k];
+    const PetscInt64 idi = a.id[i], idj = j < a.n ? a.id[j] : halo_.id[j - a.n];
+    const auto       it  = springs_.find({std::min(idi, idj), std::max(idi, idj)});
+    if (it != springs_.end()) std::copy(it->second.begin(), it->second.end(), &list_.spring[3 * k]);
+  }
+  PetscCall(swarm_.RestoreArrays(&a));
+  springs_.clear();
+  ++rebuilds_;
+  PetscFunctionReturn(0);
+}
+
+// Each rank sends a spring to a neighbour when the neighbour now holds one of the pair as a ghost,
+// or when one of the pair has left this rank (it is somewhere among the neighbours). Receivers
+// keep what they lack; springs of pairs that are not in the new list are dropped at step 5.
+PetscErrorCode Dem::ExchangeSprings(const std::vector<PetscInt64> &localIds) {
+  const auto &ranks = halo_.Ranks();
+  const auto &send  = halo_.SendLists();
+  const int   nq    = (int)ranks.size();
+  constexpr int width = 5;  // lo id, hi id (bits), spring x, y, z
+
+  PetscFunctionBeginUser;
+  if (nq == 0) PetscFunctionReturn(0);
+  std::unordered_set<PetscInt64> local(localIds.begin(), localIds.end());
+  std::vector<std::vector<PetscReal>> out(nq);
+  std::vector<PetscInt>               outCount(nq), inCount(nq);
+  for (int q = 0; q < nq; ++q) {
+    std::unordered_set<PetscInt64> sent;
+    for (PetscInt p : send[q]) sent.insert(localIds[p]);
+    for (const auto &[key, s] : springs_) {
+      const bool left = !local.count(key.lo) || !local.count(key.hi);
+      if (!left && !sent.count(key.lo) && !sent.count(key.hi)) continue;
+      PetscReal rec[width];
+      std::memcpy(&rec[0], &key.lo, sizeof(PetscInt64));
+      std::memcpy(&rec[1], &key.hi, sizeof(PetscInt64));
+      rec[2] = s[0], rec[3] = s[1], rec[4] = s[2];
+      out[q].insert(out[q].end(), rec, rec + width);
+    }
+    outCount[q] = (PetscInt)(out[q].size() / width);
+  }
+  std::vector<MPI_Request> req(2 * nq);
+  MPI_Comm                 comm = halo_.Comm();
+  for (int q = 0; q < nq; ++q) {
+    PetscCallMPI(MPI_Irecv(&inCount[q], 1, MPIU_INT, ranks[q], 73, comm, &req[q]));
+    PetscCallMPI(MPI_Isend(&outCount[q], 1, MPIU_INT, ranks[q], 73, comm, &req[nq + q]));
+  }
+  PetscCallMPI(MPI_Waitall(2 * nq, req.data(), MPI_STATUSES_IGNORE));
+  std::vector<std::vector<PetscReal>> in(nq);
+  for (int q = 0; q < nq; ++q) {
+    in[q].resize((size_t)width * inCount[q]);
+    PetscCallMPI(MPI_Irecv(in[q].data(), width * (int)inCount[q], MPIU_REAL, ranks[q], 74, comm, &req[q]));
+    PetscCallMPI(MPI_Isend(out[q].data(), width * (int)outCount[q], MPIU_REAL, ranks[q], 74, comm, &req[nq + q]));
+  }
+  PetscCallMPI(MPI_Waitall(2 * nq, req.data(), MPI_STATUSES_IGNORE));
+  for (int q = 0; q < nq; ++q)
+    for (PetscInt r = 0; r < inCount[q]; ++r) {
+      const PetscReal *rec = &in[q][(size_t)width * r];
+      PairKey          key;
+      std::memcpy(&key.lo, &rec[0], sizeof(PetscInt64));
+      std::memcpy(&key.hi, &rec[1], sizeof(PetscInt64));
+      springs_.emplace(key, std::array<PetscReal, 3>{rec[2], rec[3], rec[4]});
+    }
+  PetscFunctionReturn(0);
+}
+
+// Forces and torques on the local particles: gravity, the box faces, and the pairs of the list
+// (P3). A pair is always evaluated from its lower id ("a") to its higher id ("b"), so a pair that
+// two ranks both evaluate (one particle a ghost) gives bit-identical results and springs there.
+PetscErrorCode Dem::ComputeForces(PetscReal dt) {
+  ParticleArrays a;
+
+  PetscFunctionBeginUser;
+  stats_ = LocalStats{};
+  PetscCall(swarm_.GetArrays(&a));
+  const PetscReal *lo = grid_->Lower(), *hi = grid_->Upper();
+  for (PetscInt p = 0; p < a.n; ++p) {
+    PetscReal *f = &a.f[3 * p], *t = &a.torque[3 * p];
+    for (int d = 0; d < 3; ++d) f[d] = a.mass[p] * gravity_[d], t[d] = 0;
+    // Box faces: spheres of infinite radius and mass (P3), R* = R, m* = m.
+    const PetscReal r = a.radius[p], *x = &a.x[3 * p], *v = &a.v[3 * p], *w = &a.omega[3 * p];
+    for (int face = 0; face < 6; ++face) {
+      const int       d     = face / 2;
+      const PetscReal sign  = face % 2 ? -1 : 1;  // inward normal +e_d (lower face) or -e_d (upper)
+      const PetscReal delta = r - (face % 2 ? hi[d] - x[d] : x[d] - lo[d]);
+      PetscReal      *xi    = &a.wallSpring[18 * p + 3 * face];
+      if (delta <= 0) {
+        xi[0] = xi[1] = xi[2] = 0;
+        continue;
+      }
+      PetscReal n[3] = {0, 0, 0}, rn[3], wxr[3], vrel[3], F[3], Ft[3], tq[3];
+      n[d] = sign;
+      for (int e = 0; e < 3; ++e) rn[e] = -r * n[e];  // centre to contact point
+      Cross(w, rn, wxr);
+      for (int e = 0; e < 3; ++e) vrel[e] = v[e] + wxr[e];
+      hertz::Contact(wall_, delta, n, r, a.mass[p], vrel, dt, xi, F, Ft);
+      Cross(rn, Ft, tq);
+      for (int e = 0; e < 3; ++e) f[e] += F[e], t[e] += tq[e], stats_.wallForce[face][e] -= F[e];
+      ++stats_.wallContacts;
+      stats_.maxOverlap = std::max(stats_.maxOverlap, delta / (2 * r));
+    }
+  }
+  const PetscInt n = a.n;
+  auto body = [&](PetscInt j) {
+    if (j < n) return Body{&a.x[3 * j], &a.v[3 * j], &a.omega[3 * j], a.radius[j], a.mass[j], a.id[j]};
+    const PetscInt g = j - n;
+    return Body{&halo_.x[3 * g], &halo_.v[3 * g], &halo_.omega[3 * g], halo_.radius[g], halo_.mass[g], halo_.id[g]};
+  };
+  for (size_t k = 0; k < list_.Size(); ++k) {
+    PetscInt ia = list_.first[k], ib = list_.second[k];
+    Body     A = body(ia), B = body(ib);
+    if (A.id > B.id) std::swap(A, B), std::swap(ia, ib);
+    PetscReal      *xi = &list_.spring[3 * k];
+    PetscReal       dx[3] = {A.x[0] - B.x[0], A.x[1] - B.x[1], A.x[2] - B.x[2]};
+    const PetscReal dist2 = dx[0] * dx[0] + dx[1] * dx[1] + dx[2] * dx[2], rsum = A.r + B.r;
+    if (dist2 >= rsum * rsum) {
+      xi[0] = xi[1] = xi[2] = 0;
+      continue;
+    }
+    const PetscReal dist = std::sqrt(dist2), delta = rsum - dist;
+    PetscReal       nrm[3], rw[3], wxn[3], vrel[3], F[3], Ft[3], nxF[3];
+    for (int e = 0; e < 3; ++e) nrm[e] = dx[e] / dist, rw[e] = A.r * A.w[e] + B.r * B.w[e];
+    Cross(rw, nrm, wxn);
+    for (int e = 0; e < 3; ++e) vrel[e] = A.v[e] - B.v[e] - wxn[e];  // surface of A against surface of B
+    hertz::Contact(pair_, delta, nrm, hertz::EffectiveRadius(A.r, B.r), hertz::EffectiveMass(A.m, B.m), vrel, dt, xi, F, Ft);
+    Cross(nrm, Ft, nxF);
+    // Torques: -R n x F_t on both; forces +F on A, -F on B; only local particles are written.
+    if (ia < n)
+      for (int e = 0; e < 3; ++e) a.f[3 * ia + e] += F[e], a.torque[3 * ia + e] -= A.r * nxF[e];
+    if (ib < n)
+      for (int e = 0; e < 3; ++e) a.f[3 * ib + e] -= F[e], a.torque[3 * ib + e] -= B.r * nxF[e];
+    // A pair with a ghost is counted by both ranks: count it half on each.
+    stats_.pairContacts += (ia < n && ib < n) ? 2 : 1;
+    stats_.maxOverlap = std::max(stats_.maxOverlap, delta / (2 * std::min(A.r, B.r)));
+  }
+  PetscCall(swarm_.RestoreArrays(&a));
+  PetscFunctionReturn(0);
+}
+
+}  // namespace vofdem

@@ -1,0 +1,82 @@
+#include "vofdem/dem/Dem.hpp"
+
+#include "vofdem/core/Random.hpp"
+#include "vofdem/core/Runtime.hpp"
+
+#include <cmath>
+
+namespace vofdem {
+
+// Lattice fill: centres at lower + R + j + i*s, j the jitter amplitude, so that jittered particles
+// neither overlap each other nor leave the region. Every rank walks the same lattice and keeps
+// the points it owns; ids and jitter depend only on the lattice index and the seed, so the same
+// particles result on any rank count.
+PetscErrorCode Dem::Fill(std::uint64_t seed) {
+  PetscReal lo[3], hi[3];
+  PetscInt  n[3];
+
+  PetscFunctionBeginUser;
+  if (fillCount_ == 0) PetscFunctionReturn(0);
+  for (int d = 0; d < 3; ++d) {
+    lo[d] = fillLowerSet_ ? fillLower_[d] : grid_->Lower()[d];
+    hi[d] = fillUpperSet_ ? fillUpper_[d] : grid_->Upper()[d];
+    if (lo[d] < grid_->Lower()[d] || hi[d] > grid_->Upper()[d] || !(hi[d] > lo[d]))
+      VofdemInputError(comm_, "options -dem_fill_lower/-dem_fill_upper: the region [%g, %g] in %c must be non-empty and inside the box [%g, %g]",
+                       (double)lo[d], (double)hi[d], "xyz"[d], (double)grid_->Lower()[d], (double)grid_->Upper()[d]);
+  }
+  const PetscReal jitter = fillJitter_ * (fillSpacing_ - 2 * radius_) / 2;
+  PetscInt64      total  = 1;
+  for (int d = 0; d < 3; ++d) {
+    const PetscReal room = hi[d] - lo[d] - 2 * (radius_ + jitter);
+    n[d]                 = room < 0 ? 0 : (PetscInt)std::floor(room / fillSpacing_ * (1 + 1e-12)) + 1;
+    total *= n[d];
+  }
+  if (fillCount_ < 0 && total > PETSC_MAX_INT)
+    VofdemInputError(comm_, "option -dem_fill_count -1: the fill region holds %" PetscInt64_FMT " particles, more than this build's 32-bit indices allow; give a count or a smaller region",
+                     total);
+  if (fillCount_ > total)
+    VofdemInputError(comm_, "option -dem_fill_count: cannot fit %" PetscInt_FMT " particles, the fill region holds %" PetscInt64_FMT " at spacing %g m",
+                     fillCount_, total, (double)fillSpacing_);
+  const PetscInt64 want = fillCount_ < 0 ? total : fillCount_;
+  if (want == 0) VofdemInputError(comm_, "options -dem_fill_*: the fill region is too small for a single particle of radius %g m", (double)radius_);
+
+  auto centre = [&](PetscInt64 id, PetscReal x[3]) {
+    const PetscInt64 idx[3] = {id % n[0], (id / n[0]) % n[1], id / ((PetscInt64)n[0] * n[1])};
+    for (int d = 0; d < 3; ++d) x[d] = lo[d] + radius_ + jitter + idx[d] * fillSpacing_ + jitter * (2 * random::Uniform(seed, (std::uint64_t)id, d) - 1);
+  };
+  PetscInt local = 0;
+  for (PetscInt64 id = 0; id < want; ++id) {
+    PetscReal x[3];
+    centre(id, x);
+    if (grid_->OwnsPoint(x)) ++local;
+  }
+  PetscInt       first;
+  ParticleArrays a;
+  PetscCall(swarm_.AddLocal(local, &first));
+  PetscCall(swarm_.GetArrays(&a));
+  const PetscReal m = material_.density * 4.0 / 3.0 * PETSC_PI * radius_ * radius_ * radius_;
+  PetscInt        p = first;
+  for (PetscInt64 id = 0; id < want; ++id) {
+    PetscReal x[3];
+    centre(id, x);
+    if (!grid_->OwnsPoint(x)) continue;
+    for (int d = 0; d < 3; ++d) {
+      a.x[3 * p + d] = x[d];
+      a.v[3 * p + d] = fillVelocity_[d];
+      a.f[3 * p + d] = 0;
+    }
+    for (int d = 0; d < 18; ++d) a.wallSpring[18 * p + d] = 0;
+    for (int d = 0; d < 3; ++d) a.omega[3 * p + d] = a.torque[3 * p + d] = 0;
+    a.radius[p] = radius_;
+    a.mass[p]   = m;
+    a.id[p]     = id;
+    ++p;
+  }
+  PetscCall(swarm_.RestoreArrays(&a));
+  PetscCall(swarm_.GlobalCount(&inserted_));
+  PetscCheck(inserted_ == want, comm_, PETSC_ERR_PLIB, "lattice fill placed %" PetscInt_FMT " particles instead of %" PetscInt64_FMT, inserted_, want);
+  PetscCall(swarm_.Migrate());  // agree with the swarm's own point location; set the reference positions
+  PetscFunctionReturn(0);
+}
+
+}  // namespace vofdem

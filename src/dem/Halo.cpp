@@ -1,0 +1,140 @@
+#include "vofdem/dem/Halo.hpp"
+
+#include <algorithm>
+#include <cstring>
+
+namespace vofdem {
+
+namespace {
+
+// Squared distance from point x to the box b = {lo, hi}.
+inline PetscReal Distance2(const PetscReal x[3], const std::array<PetscReal, 6> &b) {
+  PetscReal s = 0;
+  for (int d = 0; d < 3; ++d) {
+    const PetscReal e = x[d] < b[d] ? b[d] - x[d] : (x[d] > b[3 + d] ? x[d] - b[3 + d] : 0);
+    s += e * e;
+  }
+  return s;
+}
+
+// Squared distance between two boxes.
+inline PetscReal BoxDistance2(const std::array<PetscReal, 6> &a, const std::array<PetscReal, 6> &b) {
+  PetscReal s = 0;
+  for (int d = 0; d < 3; ++d) {
+    const PetscReal e = std::max({a[d] - b[3 + d], b[d] - a[3 + d], (PetscReal)0});
+    s += e * e;
+  }
+  return s;
+}
+
+constexpr int kFull = 13;    // x3 v3 omega3 radius mass id(bits)
+constexpr int kMoving = 9;   // x3 v3 omega3
+
+}  // namespace
+
+PetscErrorCode Halo::SetUp(const Grid &grid) {
+  PetscInt        m[3];
+  const PetscInt *l[3];
+  PetscMPIInt     size;
+
+  PetscFunctionBeginUser;
+  comm_ = grid.Comm();
+  PetscCallMPI(MPI_Comm_rank(comm_, &rank_));
+  PetscCallMPI(MPI_Comm_size(comm_, &size));
+  PetscCall(DMDAGetInfo(grid.CellDM(), nullptr, nullptr, nullptr, nullptr, &m[0], &m[1], &m[2], nullptr, nullptr, nullptr, nullptr, nullptr, nullptr));
+  PetscCall(DMDAGetOwnershipRanges(grid.CellDM(), &l[0], &l[1], &l[2]));
+  boxes_.assign(size, {});
+  // DMDA numbers ranks x fastest: rank = i + m0 (j + m1 k).
+  for (PetscInt k = 0, zs = 0; k < m[2]; zs += l[2][k], ++k)
+    for (PetscInt j = 0, ys = 0; j < m[1]; ys += l[1][j], ++j)
+      for (PetscInt i = 0, xs = 0; i < m[0]; xs += l[0][i], ++i) {
+        const PetscInt start[3] = {xs, ys, zs}, count[3] = {l[0][i], l[1][j], l[2][k]};
+        auto          &b        = boxes_[i + m[0] * (j + m[1] * k)];
+        for (int d = 0; d < 3; ++d) {
+          b[d]     = grid.Lower()[d] + start[d] * grid.Spacing()[d];
+          b[3 + d] = start[d] + count[d] == grid.Cells()[d] ? grid.Upper()[d] : grid.Lower()[d] + (start[d] + count[d]) * grid.Spacing()[d];
+        }
+      }
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode Halo::Build(const ParticleArrays &a, const PetscReal *om, PetscReal cutoff) {
+  PetscFunctionBeginUser;
+  const PetscReal c2   = cutoff * cutoff;
+  const auto     &mine = boxes_[rank_];
+  ranks_.clear();
+  for (PetscMPIInt q = 0; q < (PetscMPIInt)boxes_.size(); ++q)
+    if (q != rank_ && BoxDistance2(mine, boxes_[q]) < c2) ranks_.push_back(q);
+  send_.assign(ranks_.size(), {});
+  for (PetscInt p = 0; p < a.n; ++p) {
+    const PetscReal *x = &a.x[3 * p];
+    // Particles deeper inside than the cut-off go nowhere.
+    PetscReal inner = PETSC_MAX_REAL;
+    for (int d = 0; d < 3; ++d) inner = std::min({inner, x[d] - mine[d], mine[3 + d] - x[d]});
+    if (inner > cutoff) continue;
+    for (size_t q = 0; q < ranks_.size(); ++q)
+      if (Distance2(x, boxes_[ranks_[q]]) < c2) send_[q].push_back(p);
+  }
+  PetscCall(Exchange(a, om, true));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode Halo::Refresh(const ParticleArrays &a, const PetscReal *om) {
+  PetscFunctionBeginUser;
+  PetscCall(Exchange(a, om, false));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode Halo::Exchange(const ParticleArrays &a, const PetscReal *om, bool full) {
+  const int                nq = (int)ranks_.size(), width = full ? kFull : kMoving;
+  std::vector<MPI_Request> req(2 * nq);
+
+  PetscFunctionBeginUser;
+  if (full) {  // counts first: the receiver sizes its ghost arrays
+    std::vector<PetscInt> sendCount(nq);
+    recvCount_.assign(nq, 0);
+    for (int q = 0; q < nq; ++q) {
+      sendCount[q] = (PetscInt)send_[q].size();
+      PetscCallMPI(MPI_Irecv(&recvCount_[q], 1, MPIU_INT, ranks_[q], 71, comm_, &req[q]));
+      PetscCallMPI(MPI_Isend(&sendCount[q], 1, MPIU_INT, ranks_[q], 71, comm_, &req[nq + q]));
+    }
+    PetscCallMPI(MPI_Waitall(2 * nq, req.data(), MPI_STATUSES_IGNORE));
+    PetscInt total = 0;
+    for (int q = 0; q < nq; ++q) total += recvCount_[q];
+    x.resize(3 * total), v.resize(3 * total), omega.resize(3 * total), radius.resize(total), mass.resize(total), id.resize(total);
+  }
+  size_t sendTotal = 0, recvTotal = 0;
+  for (int q = 0; q < nq; ++q) sendTotal += send_[q].size(), recvTotal += recvCount_[q];
+  sendBuf_.resize(width * sendTotal);
+  recvBuf_.resize(width * recvTotal);
+  PetscReal *s = sendBuf_.data();
+  for (int q = 0; q < nq; ++q)
+    for (PetscInt p : send_[q]) {
+      for (int d = 0; d < 3; ++d) s[d] = a.x[3 * p + d], s[3 + d] = a.v[3 * p + d], s[6 + d] = om[3 * p + d];
+      if (full) {
+        s[9]  = a.radius[p];
+        s[10] = a.mass[p];
+        std::memcpy(&s[11], &a.id[p], sizeof(PetscInt64));  // the id's bits, not its value
+        s[12] = 0;
+      }
+      s += width;
+    }
+  for (int q = 0, so = 0, ro = 0; q < nq; ++q) {
+    PetscCallMPI(MPI_Irecv(recvBuf_.data() + (size_t)width * ro, width * (int)recvCount_[q], MPIU_REAL, ranks_[q], 72, comm_, &req[q]));
+    PetscCallMPI(MPI_Isend(sendBuf_.data() + (size_t)width * so, width * (int)send_[q].size(), MPIU_REAL, ranks_[q], 72, comm_, &req[nq + q]));
+    so += (int)send_[q].size(), ro += (int)recvCount_[q];
+  }
+  PetscCallMPI(MPI_Waitall(2 * nq, req.data(), MPI_STATUSES_IGNORE));
+  const PetscReal *r = recvBuf_.data();
+  for (size_t g = 0; g < recvTotal; ++g, r += width) {
+    for (int d = 0; d < 3; ++d) x[3 * g + d] = r[d], v[3 * g + d] = r[3 + d], omega[3 * g + d] = r[6 + d];
+    if (full) {
+      radius[g] = r[9];
+      mass[g]   = r[10];
+      std::memcpy(&id[g], &r[11], sizeof(PetscInt64));
+    }
+  }
+  PetscFunctionReturn(0);
+}
+
+}  // namespace vofdem

@@ -1,0 +1,69 @@
+#include "vofdem/dem/NeighbourList.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace vofdem {
+
+PetscErrorCode NeighbourList::Build(PetscInt nLocal, const PetscReal *xLocal, PetscInt nGhost, const PetscReal *xGhost, PetscReal cutoff,
+                                    const PetscReal lo[3], const PetscReal hi[3]) {
+  PetscFunctionBeginUser;
+  const PetscInt n = nLocal + nGhost;
+  PetscInt       nc[3];
+  PetscReal      origin[3], inv[3];
+  for (int d = 0; d < 3; ++d) {
+    origin[d]           = lo[d] - cutoff;
+    const PetscReal len = hi[d] - lo[d] + 2 * cutoff;
+    nc[d]               = std::max<PetscInt>(1, std::min<PetscInt>((PetscInt)(len / cutoff), 1024));  // cells at least the cut-off wide
+    inv[d]              = nc[d] / len;
+  }
+  auto pos = [&](PetscInt p) { return p < nLocal ? &xLocal[3 * p] : &xGhost[3 * (p - nLocal)]; };
+  auto cellOf = [&](const PetscReal *x, PetscInt c[3]) {
+    for (int d = 0; d < 3; ++d) c[d] = std::min(nc[d] - 1, std::max<PetscInt>(0, (PetscInt)((x[d] - origin[d]) * inv[d])));
+  };
+  // Counting sort of particles by cell (CSR: cellStart_, order_).
+  const PetscInt ncell = nc[0] * nc[1] * nc[2];
+  cellStart_.assign(ncell + 1, 0);
+  cellOf_.resize(n);
+  order_.resize(n);
+  for (PetscInt p = 0; p < n; ++p) {
+    PetscInt c[3];
+    cellOf(pos(p), c);
+    cellOf_[p] = c[0] + nc[0] * (c[1] + nc[1] * c[2]);
+    ++cellStart_[cellOf_[p] + 1];
+  }
+  for (PetscInt c = 0; c < ncell; ++c) cellStart_[c + 1] += cellStart_[c];
+  {
+    std::vector<PetscInt> fill(cellStart_.begin(), cellStart_.end() - 1);
+    for (PetscInt p = 0; p < n; ++p) order_[fill[cellOf_[p]]++] = p;
+  }
+  first.clear();
+  second.clear();
+  const PetscReal c2 = cutoff * cutoff;
+  for (PetscInt i = 0; i < nLocal; ++i) {
+    const PetscReal *xi = pos(i);
+    PetscInt         c[3];
+    cellOf(xi, c);
+    for (PetscInt dz = -1; dz <= 1; ++dz)
+      for (PetscInt dy = -1; dy <= 1; ++dy)
+        for (PetscInt dx = -1; dx <= 1; ++dx) {
+          const PetscInt cx = c[0] + dx, cy = c[1] + dy, cz = c[2] + dz;
+          if (cx < 0 || cy < 0 || cz < 0 || cx >= nc[0] || cy >= nc[1] || cz >= nc[2]) continue;
+          const PetscInt cell = cx + nc[0] * (cy + nc[1] * cz);
+          for (PetscInt k = cellStart_[cell]; k < cellStart_[cell + 1]; ++k) {
+            const PetscInt j = order_[k];
+            if (j < nLocal && j <= i) continue;  // each local pair once; ghost pairs from the local side
+            const PetscReal *xj = pos(j);
+            const PetscReal  ex = xi[0] - xj[0], ey = xi[1] - xj[1], ez = xi[2] - xj[2];
+            if (ex * ex + ey * ey + ez * ez < c2) {
+              first.push_back(i);
+              second.push_back(j);
+            }
+          }
+        }
+  }
+  spring.assign(3 * first.size(), 0);
+  PetscFunctionReturn(0);
+}
+
+}  // namespace vofdem
