@@ -20,6 +20,7 @@ PetscErrorCode Dem::SetFromOptions(MPI_Comm comm) {
     PetscCall(opt.Real("-poisson_ratio", "Particle Poisson ratio nu", "-", &material_.poisson, RealRange::LeftOpen(-1, 0.5)));
     PetscCall(opt.Real("-restitution", "Coefficient of restitution e (P3)", "-", &material_.restitution, RealRange::LeftOpen(0, 1)));
     PetscCall(opt.Real("-friction", "Sliding friction coefficient mu_s (P3)", "-", &material_.friction, RealRange::NonNegative()));
+    PetscCall(opt.Bool("-limit_force", "Clip the normal contact force at zero: no tension from damping as a contact ends (LIGGGHTS' limitForce); the restitution then differs from -dem_restitution", &limitForce_));
     wallYoungs_   = material_.youngs;
     wallPoisson_  = material_.poisson;
     wallFriction_ = material_.friction;
@@ -35,6 +36,7 @@ PetscErrorCode Dem::SetFromOptions(MPI_Comm comm) {
     PetscCall(opt.Real("-fill_jitter", "Random displacement of lattice points, fraction of the free gap", "-", &fillJitter_, RealRange::Closed(0, 1)));
     PetscCall(opt.Int("-fill_count", "Number of particles to place on the fill lattice (0: none, -1: as many as the region holds)", &fillCount_, -1));
     PetscCall(opt.RealVector("-fill_velocity", "Initial velocity of inserted particles", "m/s", fillVelocity_, 3));
+    PetscCall(opt.String("-particles_file", "CSV of particles to insert after the fill: a header line, then x,y,z,vx,vy,vz[,wx,wy,wz] in m, m/s, rad/s", &particlesFile_));
   }
   PetscOptionsEnd();
   if (fillSpacing_ == 0) fillSpacing_ = 2.2 * radius_;
@@ -49,12 +51,14 @@ PetscErrorCode Dem::SetUp(const Grid &grid, const PetscReal gravity[3], std::uin
   grid_ = &grid;
   std::copy(gravity, gravity + 3, gravity_);
   const DemMaterial &m = material_;
-  pair_         = hertz::MakePairMaterial(m.youngs, m.poisson, m.youngs, m.poisson, m.restitution, m.friction);
-  wall_         = hertz::MakePairMaterial(m.youngs, m.poisson, wallYoungs_, wallPoisson_, m.restitution, wallFriction_);
+  pair_         = hertz::MakePairMaterial(m.youngs, m.poisson, m.youngs, m.poisson, m.restitution, m.friction, limitForce_);
+  wall_         = hertz::MakePairMaterial(m.youngs, m.poisson, wallYoungs_, wallPoisson_, m.restitution, wallFriction_, limitForce_);
   rayleighTime_ = hertz::RayleighTime(radius_, m.density, m.youngs, m.poisson);
   PetscCall(swarm_.Create(grid));
   PetscCall(halo_.SetUp(grid));
   PetscCall(Fill(seed));
+  PetscCall(ReadParticles());
+  PetscCall(swarm_.GlobalCount(&inserted_));
   PetscCall(Rebuild());
   PetscCall(ComputeForces(0));
   PetscFunctionReturn(0);

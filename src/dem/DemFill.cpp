@@ -3,7 +3,12 @@
 #include "vofdem/core/Random.hpp"
 #include "vofdem/core/Runtime.hpp"
 
+#include <array>
 #include <cmath>
+#include <cstdlib>
+#include <fstream>
+#include <sstream>
+#include <vector>
 
 namespace vofdem {
 
@@ -76,6 +81,67 @@ PetscErrorCode Dem::Fill(std::uint64_t seed) {
   PetscCall(swarm_.GlobalCount(&inserted_));
   PetscCheck(inserted_ == want, comm_, PETSC_ERR_PLIB, "lattice fill placed %" PetscInt_FMT " particles instead of %" PetscInt64_FMT, inserted_, want);
   PetscCall(swarm_.Migrate());  // agree with the swarm's own point location; set the reference positions
+  PetscFunctionReturn(0);
+}
+
+// Particles from a CSV file, after the lattice fill (ids continue from it). Every rank reads the
+// file and keeps the particles it owns, so the result does not depend on the rank count. A bad
+// file is an input error naming file and line; so is a particle outside the box or cut by a face.
+PetscErrorCode Dem::ReadParticles() {
+  PetscFunctionBeginUser;
+  if (particlesFile_.empty()) PetscFunctionReturn(0);
+  std::ifstream in(particlesFile_);
+  if (!in) VofdemInputError(comm_, "option -dem_particles_file: cannot open '%s'", particlesFile_.c_str());
+  std::vector<std::array<PetscReal, 9>> rows;
+  std::string                           line;
+  int                                   lineNo = 0;
+  std::getline(in, line);  // header
+  ++lineNo;
+  while (std::getline(in, line)) {
+    ++lineNo;
+    if (line.find_first_not_of(" \t\r") == std::string::npos) continue;
+    std::array<PetscReal, 9> r{};
+    std::stringstream        ss(line);
+    std::string              cell;
+    int                      k = 0;
+    bool                     ok = true;
+    while (std::getline(ss, cell, ',')) {
+      char *end = nullptr;
+      if (k < 9) r[k] = std::strtod(cell.c_str(), &end);
+      ok = ok && k < 9 && end != cell.c_str() && std::string(end).find_first_not_of(" \t\r") == std::string::npos;
+      ++k;
+    }
+    if (!ok || (k != 6 && k != 9))
+      VofdemInputError(comm_, "%s:%d: expected 6 or 9 comma-separated numbers (x,y,z,vx,vy,vz[,wx,wy,wz])", particlesFile_.c_str(), lineNo);
+    for (int d = 0; d < 3; ++d)
+      if (r[d] - radius_ < grid_->Lower()[d] || r[d] + radius_ > grid_->Upper()[d])
+        VofdemInputError(comm_, "%s:%d: the particle at (%g, %g, %g) m with radius %g m is not inside the box", particlesFile_.c_str(), lineNo,
+                         (double)r[0], (double)r[1], (double)r[2], (double)radius_);
+    rows.push_back(r);
+  }
+  PetscInt first, local = 0, start;
+  for (const auto &r : rows) local += grid_->OwnsPoint(r.data());
+  PetscCall(swarm_.GlobalCount(&start));
+  PetscCall(swarm_.AddLocal(local, &first));
+  ParticleArrays a;
+  PetscCall(swarm_.GetArrays(&a));
+  const PetscReal m = material_.density * 4.0 / 3.0 * PETSC_PI * radius_ * radius_ * radius_;
+  for (size_t k = 0, p = first; k < rows.size(); ++k) {
+    if (!grid_->OwnsPoint(rows[k].data())) continue;
+    for (int d = 0; d < 3; ++d) {
+      a.x[3 * p + d]     = rows[k][d];
+      a.v[3 * p + d]     = rows[k][3 + d];
+      a.omega[3 * p + d] = rows[k][6 + d];
+      a.f[3 * p + d] = a.torque[3 * p + d] = 0;
+    }
+    for (int d = 0; d < 18; ++d) a.wallSpring[18 * p + d] = 0;
+    a.radius[p] = radius_;
+    a.mass[p]   = m;
+    a.id[p]     = start + (PetscInt64)k;
+    ++p;
+  }
+  PetscCall(swarm_.RestoreArrays(&a));
+  PetscCall(swarm_.Migrate());
   PetscFunctionReturn(0);
 }
 

@@ -13,6 +13,7 @@
 #include "vofdem/grid/Grid.hpp"
 
 #include <cstdint>
+#include <string>
 
 namespace vofdem {
 
@@ -58,6 +59,7 @@ public:
 
 private:
   PetscErrorCode Fill(std::uint64_t seed);              // DemFill.cpp
+  PetscErrorCode ReadParticles();                       // DemFill.cpp: -dem_particles_file
   PetscErrorCode Rebuild();                             // DemContacts.cpp: migrate, halo, list, springs
   PetscErrorCode ComputeForces(PetscReal dt);           // DemContacts.cpp
   PetscErrorCode ExchangeSprings(const std::vector<PetscInt64> &localIds);
@@ -76,6 +78,7 @@ private:
   LocalStats    stats_;
   DemMaterial   material_;
   PetscReal     wallYoungs_ = -1, wallPoisson_ = -1, wallFriction_ = -1;  // default: the particles'
+  PetscBool     limitForce_ = PETSC_FALSE;
   hertz::PairMaterial pair_{}, wall_{};
   PetscReal     radius_     = 5e-4;  // m
   PetscReal     dtFactor_   = 0.3;   // of the Rayleigh time (seed 001)
@@ -91,6 +94,7 @@ private:
   PetscReal fillJitter_   = 0;  // fraction of the free gap
   PetscInt  fillCount_    = 0;  // 0 = no fill, -1 = as many as fit
   PetscReal fillVelocity_[3] = {0, 0, 0};
+  std::string particlesFile_;  // CSV: x,y,z,vx,vy,vz[,wx,wy,wz] per line, one header line
   PetscInt  inserted_     = 0;
   MPI_Comm  comm_         = MPI_COMM_NULL;
 };
