@@ -36,6 +36,7 @@ PetscErrorCode Dem::SetFromOptions(MPI_Comm comm) {
     PetscCall(opt.Real("-fill_jitter", "Random displacement of lattice points, fraction of the free gap", "-", &fillJitter_, RealRange::Closed(0, 1)));
     PetscCall(opt.Int("-fill_count", "Number of particles to place on the fill lattice (0: none, -1: as many as the region holds)", &fillCount_, -1));
     PetscCall(opt.RealVector("-fill_velocity", "Initial velocity of inserted particles", "m/s", fillVelocity_, 3));
+    PetscCall(opt.Real("-fill_velocity_spread", "Random part of the initial velocity: each component uniform in [-spread, spread]", "m/s", &fillSpread_, RealRange::NonNegative()));
     PetscCall(opt.String("-particles_file", "CSV of particles to insert after the fill: a header line, then x,y,z,vx,vy,vz[,wx,wy,wz] in m, m/s, rad/s", &particlesFile_));
   }
   PetscOptionsEnd();
@@ -103,7 +104,7 @@ PetscErrorCode Dem::Step(PetscReal dt) {
 
 PetscErrorCode Dem::Summarize(DemSummary *s) const {
   ParticleArrays a;
-  PetscReal      sums[2 + 18] = {0}, global[2 + 18];
+  PetscReal      sums[3 + 18] = {0}, global[3 + 18];
   PetscInt       counts[2] = {stats_.pairContacts, stats_.wallContacts}, gcounts[2];
 
   PetscFunctionBeginUser;
@@ -114,19 +115,21 @@ PetscErrorCode Dem::Summarize(DemSummary *s) const {
     sums[1] += 0.2 * a.mass[p] * a.radius[p] * a.radius[p] * (w[0] * w[0] + w[1] * w[1] + w[2] * w[2]);
   }
   PetscCall(swarm_.RestoreArrays(&a));
+  sums[2] = stats_.elastic;
   for (int f = 0; f < 6; ++f)
-    for (int d = 0; d < 3; ++d) sums[2 + 3 * f + d] = stats_.wallForce[f][d];
-  PetscCallMPI(MPI_Allreduce(sums, global, 20, MPIU_REAL, MPIU_SUM, comm_));
+    for (int d = 0; d < 3; ++d) sums[3 + 3 * f + d] = stats_.wallForce[f][d];
+  PetscCallMPI(MPI_Allreduce(sums, global, 21, MPIU_REAL, MPIU_SUM, comm_));
   PetscCallMPI(MPI_Allreduce(counts, gcounts, 2, MPIU_INT, MPI_SUM, comm_));
   PetscCallMPI(MPI_Allreduce(&stats_.maxOverlap, &s->maxOverlap, 1, MPIU_REAL, MPIU_MAX, comm_));
   PetscCall(swarm_.GlobalCount(&s->particles));
   s->kinetic      = global[0];
   s->rotational   = global[1];
+  s->elastic      = global[2];
   s->pairContacts = gcounts[0] / 2;  // each pair was counted twice (see ComputeForces)
   s->wallContacts = gcounts[1];
   s->coordination = s->particles ? (PetscReal)gcounts[0] / s->particles : 0;
   for (int f = 0; f < 6; ++f)
-    for (int d = 0; d < 3; ++d) s->wallForce[f][d] = global[2 + 3 * f + d];
+    for (int d = 0; d < 3; ++d) s->wallForce[f][d] = global[3 + 3 * f + d];
   PetscFunctionReturn(0);
 }
 

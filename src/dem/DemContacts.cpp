@@ -154,6 +154,7 @@ PetscErrorCode Dem::ComputeForces(PetscReal dt) {
       Cross(rn, Ft, tq);
       for (int e = 0; e < 3; ++e) f[e] += F[e], t[e] += tq[e], stats_.wallForce[face][e] -= F[e];
       ++stats_.wallContacts;
+      stats_.elastic += hertz::ElasticEnergy(wall_, delta, r);
       stats_.maxOverlap = std::max(stats_.maxOverlap, delta / (2 * r));
     }
   }
@@ -188,6 +189,7 @@ PetscErrorCode Dem::ComputeForces(PetscReal dt) {
       for (int e = 0; e < 3; ++e) a.f[3 * ib + e] -= F[e], a.torque[3 * ib + e] -= B.r * nxF[e];
     // A pair with a ghost is counted by both ranks: count it half on each.
     stats_.pairContacts += (ia < n && ib < n) ? 2 : 1;
+    stats_.elastic += ((ia < n && ib < n) ? 1.0 : 0.5) * hertz::ElasticEnergy(pair_, delta, hertz::EffectiveRadius(A.r, B.r));
     stats_.maxOverlap = std::max(stats_.maxOverlap, delta / (2 * std::min(A.r, B.r)));
   }
   PetscCall(swarm_.RestoreArrays(&a));

@@ -67,7 +67,7 @@ PetscErrorCode Dem::Fill(std::uint64_t seed) {
     if (!grid_->OwnsPoint(x)) continue;
     for (int d = 0; d < 3; ++d) {
       a.x[3 * p + d] = x[d];
-      a.v[3 * p + d] = fillVelocity_[d];
+      a.v[3 * p + d] = fillVelocity_[d] + fillSpread_ * (2 * random::Uniform(seed, (std::uint64_t)id, 3 + d) - 1);
       a.f[3 * p + d] = 0;
     }
     for (int d = 0; d < 18; ++d) a.wallSpring[18 * p + d] = 0;

@@ -30,6 +30,7 @@ struct DemSummary {
   PetscInt  particles    = 0;
   PetscReal kinetic      = 0;  // translational kinetic energy, J
   PetscReal rotational   = 0;  // rotational kinetic energy, J
+  PetscReal elastic      = 0;  // energy stored in the normal Hertz springs of all contacts, J
   PetscInt  pairContacts = 0;
   PetscInt  wallContacts = 0;
   PetscReal coordination = 0;  // mean number of particle contacts per particle
@@ -67,7 +68,7 @@ private:
   // Per-evaluation contact statistics of this rank (summed over ranks by Summarize).
   struct LocalStats {
     PetscInt  pairContacts = 0, wallContacts = 0;
-    PetscReal maxOverlap = 0, wallForce[6][3] = {};
+    PetscReal maxOverlap = 0, elastic = 0, wallForce[6][3] = {};
   };
 
   const Grid   *grid_ = nullptr;
@@ -94,6 +95,7 @@ private:
   PetscReal fillJitter_   = 0;  // fraction of the free gap
   PetscInt  fillCount_    = 0;  // 0 = no fill, -1 = as many as fit
   PetscReal fillVelocity_[3] = {0, 0, 0};
+  PetscReal fillSpread_   = 0;  // m/s, random velocity components uniform in [-spread, spread]
   std::string particlesFile_;  // CSV: x,y,z,vx,vy,vz[,wx,wy,wz] per line, one header line
   PetscInt  inserted_     = 0;
   MPI_Comm  comm_         = MPI_COMM_NULL;

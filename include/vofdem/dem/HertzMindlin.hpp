@@ -134,3 +134,13 @@ inline void Contact(const PairMaterial &c, PetscReal delta, const PetscReal n[3]
 }
 
 }  // namespace vofdem::hertz
+
+namespace vofdem::hertz {
+
+// Energy stored in the normal Hertz spring: the integral of (4/3) E* sqrt(R*) delta^1.5, i.e.
+// (8/15) E* sqrt(R*) delta^2.5 (P3; counted in the energy balance of VERIFICATION.md D4).
+inline PetscReal ElasticEnergy(const PairMaterial &c, PetscReal delta, PetscReal Rstar) {
+  return 8.0 / 15.0 * c.Estar * std::sqrt(Rstar) * delta * delta * std::sqrt(delta);
+}
+
+}  // namespace vofdem::hertz
