@@ -5,6 +5,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
+#include <vector>
 
 namespace vofdem {
 
@@ -20,6 +22,18 @@ PetscErrorCode Dem::SetFromOptions(MPI_Comm comm) {
     PetscCall(opt.Real("-poisson_ratio", "Particle Poisson ratio nu", "-", &material_.poisson, RealRange::LeftOpen(-1, 0.5)));
     PetscCall(opt.Real("-restitution", "Coefficient of restitution e (P3)", "-", &material_.restitution, RealRange::LeftOpen(0, 1)));
     PetscCall(opt.Real("-friction", "Sliding friction coefficient mu_s (P3)", "-", &material_.friction, RealRange::NonNegative()));
+    {
+      static const std::vector<std::string> models = {"none", "cdt", "epsd", "epsd2"};
+      std::vector<std::string>              chosen = {"none"};
+      PetscCall(opt.NameList("-rolling", "Rolling resistance (P5): none, cdt (constant torque), epsd (elastic-plastic spring-dashpot, Ai et al.), epsd2 (LIGGGHTS' undamped epsd2)",
+                             models, &chosen));
+      if (chosen.size() != 1) VofdemInputError(comm, "option -dem_rolling: give one model (none, cdt, epsd or epsd2)");
+      rolling_ = chosen[0] == "cdt" ? hertz::Rolling::ConstantTorque
+               : chosen[0] == "epsd" ? hertz::Rolling::Epsd
+               : chosen[0] == "epsd2" ? hertz::Rolling::Epsd2 : hertz::Rolling::None;
+      PetscCall(opt.Real("-rolling_friction", "Rolling friction coefficient mu_r (P5)", "-", &rollingParams_.mu, RealRange::NonNegative()));
+      PetscCall(opt.Real("-rolling_damping", "EPSD rolling damping as a fraction of critical", "-", &rollingParams_.eta, RealRange::NonNegative()));
+    }
     PetscCall(opt.Bool("-limit_force", "Clip the normal contact force at zero: no tension from damping as a contact ends (LIGGGHTS' limitForce); the restitution then differs from -dem_restitution", &limitForce_));
     wallYoungs_   = material_.youngs;
     wallPoisson_  = material_.poisson;

@@ -35,11 +35,12 @@ PetscErrorCode Dem::Rebuild() {
   PetscCall(swarm_.GetArrays(&a));
   const PetscInt n = a.n;
   for (size_t k = 0; k < list_.Size(); ++k) {
-    const PetscReal *s = &list_.spring[3 * k];
-    if (s[0] == 0 && s[1] == 0 && s[2] == 0) continue;
+    const PetscReal *s = &list_.spring[kSpringWidth * k];
+    if (std::all_of(s, s + kSpringWidth, [](PetscReal v) { return v == 0; })) continue;
     const PetscInt   i = list_.first[k], j = list_.second[k];
     const PetscInt64 idi = a.id[i], idj = j < n ? a.id[j] : halo_.id[j - n];
-    springs_[{std::min(idi, idj), std::max(idi, idj)}] = {s[0], s[1], s[2]};
+    auto            &h   = springs_[{std::min(idi, idj), std::max(idi, idj)}];
+    std::copy(s, s + kSpringWidth, h.begin());
   }
   PetscCall(swarm_.RestoreArrays(&a));
   // 2. Particles to their owners; 3. ghosts within the cut-off.
@@ -60,7 +61,7 @@ PetscErrorCode Dem::Rebuild() {
     const PetscInt   i = list_.first[k], j = list_.second[k];
     const PetscInt64 idi = a.id[i], idj = j < a.n ? a.id[j] : halo_.id[j - a.n];
     const auto       it  = springs_.find({std::min(idi, idj), std::max(idi, idj)});
-    if (it != springs_.end()) std::copy(it->second.begin(), it->second.end(), &list_.spring[3 * k]);
+    if (it != springs_.end()) std::copy(it->second.begin(), it->second.end(), &list_.spring[kSpringWidth * k]);
   }
   PetscCall(swarm_.RestoreArrays(&a));
   springs_.clear();
@@ -75,7 +76,7 @@ PetscErrorCode Dem::ExchangeSprings(const std::vector<PetscInt64> &localIds) {
   const auto &ranks = halo_.Ranks();
   const auto &send  = halo_.SendLists();
   const int   nq    = (int)ranks.size();
-  constexpr int width = 5;  // lo id, hi id (bits), spring x, y, z
+  constexpr int width = 2 + kSpringWidth;  // lo id, hi id (bits), springs
 
   PetscFunctionBeginUser;
   if (nq == 0) PetscFunctionReturn(0);
@@ -91,7 +92,7 @@ PetscErrorCode Dem::ExchangeSprings(const std::vector<PetscInt64> &localIds) {
       PetscReal rec[width];
       std::memcpy(&rec[0], &key.lo, sizeof(PetscInt64));
       std::memcpy(&rec[1], &key.hi, sizeof(PetscInt64));
-      rec[2] = s[0], rec[3] = s[1], rec[4] = s[2];
+      std::copy(s.begin(), s.end(), &rec[2]);
       out[q].insert(out[q].end(), rec, rec + width);
     }
     outCount[q] = (PetscInt)(out[q].size() / width);
@@ -116,16 +117,32 @@ PetscErrorCode Dem::ExchangeSprings(const std::vector<PetscInt64> &localIds) {
       PairKey          key;
       std::memcpy(&key.lo, &rec[0], sizeof(PetscInt64));
       std::memcpy(&key.hi, &rec[1], sizeof(PetscInt64));
-      springs_.emplace(key, std::array<PetscReal, 3>{rec[2], rec[3], rec[4]});
+      std::array<PetscReal, kSpringWidth> h;
+      std::copy(&rec[2], &rec[2] + kSpringWidth, h.begin());
+      springs_.emplace(key, h);
     }
   PetscFunctionReturn(0);
 }
 
-// Forces and torques on the local particles: gravity, the box faces, and the pairs of the list
-// (P3). A pair is always evaluated from its lower id ("a") to its higher id ("b"), so a pair that
-// two ranks both evaluate (one particle a ghost) gives bit-identical results and springs there.
 PetscErrorCode Dem::ComputeForces(PetscReal dt) {
+  PetscFunctionBeginUser;
+  // The rolling model is chosen once per scene and bound here, outside the contact loops.
+  switch (rolling_) {
+  case hertz::Rolling::None: PetscCall(ComputeForcesWith<hertz::Rolling::None>(dt)); break;
+  case hertz::Rolling::ConstantTorque: PetscCall(ComputeForcesWith<hertz::Rolling::ConstantTorque>(dt)); break;
+  case hertz::Rolling::Epsd: PetscCall(ComputeForcesWith<hertz::Rolling::Epsd>(dt)); break;
+  case hertz::Rolling::Epsd2: PetscCall(ComputeForcesWith<hertz::Rolling::Epsd2>(dt)); break;
+  }
+  PetscFunctionReturn(0);
+}
+
+// Forces and torques on the local particles: gravity, the box faces, and the pairs of the list
+// (P3, P5). A pair is always evaluated from its lower id ("a") to its higher id ("b"), so a pair
+// that two ranks both evaluate (one particle a ghost) gives bit-identical results and springs there.
+template <hertz::Rolling RM>
+PetscErrorCode Dem::ComputeForcesWith(PetscReal dt) {
   ParticleArrays a;
+  constexpr int  W = kWallSpringWidth;
 
   PetscFunctionBeginUser;
   stats_ = LocalStats{};
@@ -140,19 +157,21 @@ PetscErrorCode Dem::ComputeForces(PetscReal dt) {
       const int       d     = face / 2;
       const PetscReal sign  = face % 2 ? -1 : 1;  // inward normal +e_d (lower face) or -e_d (upper)
       const PetscReal delta = r - (face % 2 ? hi[d] - x[d] : x[d] - lo[d]);
-      PetscReal      *xi    = &a.wallSpring[18 * p + 3 * face];
+      PetscReal      *xi    = &a.wallSpring[6 * W * p + W * face];
       if (delta <= 0) {
-        xi[0] = xi[1] = xi[2] = 0;
+        std::fill(xi, xi + W, 0);
         continue;
       }
-      PetscReal n[3] = {0, 0, 0}, rn[3], wxr[3], vrel[3], F[3], Ft[3], tq[3];
+      PetscReal n[3] = {0, 0, 0}, rn[3], wxr[3], vrel[3], F[3], Ft[3], tq[3], M[3];
       n[d] = sign;
       for (int e = 0; e < 3; ++e) rn[e] = -r * n[e];  // centre to contact point
       Cross(w, rn, wxr);
       for (int e = 0; e < 3; ++e) vrel[e] = v[e] + wxr[e];
-      hertz::Contact(wall_, delta, n, r, a.mass[p], vrel, dt, xi, F, Ft);
+      const PetscReal Fn = hertz::Contact(wall_, delta, n, r, a.mass[p], vrel, dt, xi, F, Ft);
       Cross(rn, Ft, tq);
-      for (int e = 0; e < 3; ++e) f[e] += F[e], t[e] += tq[e], stats_.wallForce[face][e] -= F[e];
+      // Rolling against the face: w_rel = w, I_r = I + m R^2 = 1.4 m R^2 about the contact.
+      hertz::RollingTorque<RM>(rollingParams_, Fn, wall_.Estar * 4.0 / 3.0 * std::sqrt(r * delta), r, 1.4 * a.mass[p] * r * r, n, w, dt, xi + 3, M);
+      for (int e = 0; e < 3; ++e) f[e] += F[e], t[e] += tq[e] + M[e], stats_.wallForce[face][e] -= F[e];
       ++stats_.wallContacts;
       stats_.elastic += hertz::ElasticEnergy(wall_, delta, r);
       stats_.maxOverlap = std::max(stats_.maxOverlap, delta / (2 * r));
@@ -168,28 +187,36 @@ PetscErrorCode Dem::ComputeForces(PetscReal dt) {
     PetscInt ia = list_.first[k], ib = list_.second[k];
     Body     A = body(ia), B = body(ib);
     if (A.id > B.id) std::swap(A, B), std::swap(ia, ib);
-    PetscReal      *xi = &list_.spring[3 * k];
+    PetscReal      *xi = &list_.spring[kSpringWidth * k];
     PetscReal       dx[3] = {A.x[0] - B.x[0], A.x[1] - B.x[1], A.x[2] - B.x[2]};
     const PetscReal dist2 = dx[0] * dx[0] + dx[1] * dx[1] + dx[2] * dx[2], rsum = A.r + B.r;
     if (dist2 >= rsum * rsum) {
-      xi[0] = xi[1] = xi[2] = 0;
+      std::fill(xi, xi + kSpringWidth, 0);
       continue;
     }
-    const PetscReal dist = std::sqrt(dist2), delta = rsum - dist;
-    PetscReal       nrm[3], rw[3], wxn[3], vrel[3], F[3], Ft[3], nxF[3];
-    for (int e = 0; e < 3; ++e) nrm[e] = dx[e] / dist, rw[e] = A.r * A.w[e] + B.r * B.w[e];
+    const PetscReal dist = std::sqrt(dist2), delta = rsum - dist, Rstar = hertz::EffectiveRadius(A.r, B.r);
+    PetscReal       nrm[3], rw[3], wxn[3], vrel[3], F[3], Ft[3], nxF[3], wrel[3], M[3];
+    for (int e = 0; e < 3; ++e) nrm[e] = dx[e] / dist, rw[e] = A.r * A.w[e] + B.r * B.w[e], wrel[e] = A.w[e] - B.w[e];
     Cross(rw, nrm, wxn);
     for (int e = 0; e < 3; ++e) vrel[e] = A.v[e] - B.v[e] - wxn[e];  // surface of A against surface of B
-    hertz::Contact(pair_, delta, nrm, hertz::EffectiveRadius(A.r, B.r), hertz::EffectiveMass(A.m, B.m), vrel, dt, xi, F, Ft);
+    const PetscReal Fn = hertz::Contact(pair_, delta, nrm, Rstar, hertz::EffectiveMass(A.m, B.m), vrel, dt, xi, F, Ft);
     Cross(nrm, Ft, nxF);
-    // Torques: -R n x F_t on both; forces +F on A, -F on B; only local particles are written.
+    if constexpr (RM != hertz::Rolling::None) {
+      const PetscReal Ia = 1.4 * A.m * A.r * A.r, Ib = 1.4 * B.m * B.r * B.r;  // about the contact point
+      hertz::RollingTorque<RM>(rollingParams_, Fn, pair_.Estar * 4.0 / 3.0 * std::sqrt(Rstar * delta), Rstar, Ia * Ib / (Ia + Ib), nrm, wrel, dt,
+                               xi + 3, M);
+    } else {
+      M[0] = M[1] = M[2] = 0;
+    }
+    // Torques: -R n x F_t on both, +M on A and -M on B; forces +F on A, -F on B; only local
+    // particles are written.
     if (ia < n)
-      for (int e = 0; e < 3; ++e) a.f[3 * ia + e] += F[e], a.torque[3 * ia + e] -= A.r * nxF[e];
+      for (int e = 0; e < 3; ++e) a.f[3 * ia + e] += F[e], a.torque[3 * ia + e] += M[e] - A.r * nxF[e];
     if (ib < n)
-      for (int e = 0; e < 3; ++e) a.f[3 * ib + e] -= F[e], a.torque[3 * ib + e] -= B.r * nxF[e];
+      for (int e = 0; e < 3; ++e) a.f[3 * ib + e] -= F[e], a.torque[3 * ib + e] -= M[e] + B.r * nxF[e];
     // A pair with a ghost is counted by both ranks: count it half on each.
     stats_.pairContacts += (ia < n && ib < n) ? 2 : 1;
-    stats_.elastic += ((ia < n && ib < n) ? 1.0 : 0.5) * hertz::ElasticEnergy(pair_, delta, hertz::EffectiveRadius(A.r, B.r));
+    stats_.elastic += ((ia < n && ib < n) ? 1.0 : 0.5) * hertz::ElasticEnergy(pair_, delta, Rstar);
     stats_.maxOverlap = std::max(stats_.maxOverlap, delta / (2 * std::min(A.r, B.r)));
   }
   PetscCall(swarm_.RestoreArrays(&a));

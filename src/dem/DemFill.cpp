@@ -70,7 +70,7 @@ PetscErrorCode Dem::Fill(std::uint64_t seed) {
       a.v[3 * p + d] = fillVelocity_[d] + fillSpread_ * (2 * random::Uniform(seed, (std::uint64_t)id, 3 + d) - 1);
       a.f[3 * p + d] = 0;
     }
-    for (int d = 0; d < 18; ++d) a.wallSpring[18 * p + d] = 0;
+    for (int d = 0; d < 6 * kWallSpringWidth; ++d) a.wallSpring[6 * kWallSpringWidth * p + d] = 0;
     for (int d = 0; d < 3; ++d) a.omega[3 * p + d] = a.torque[3 * p + d] = 0;
     a.radius[p] = radius_;
     a.mass[p]   = m;
@@ -134,7 +134,7 @@ PetscErrorCode Dem::ReadParticles() {
       a.omega[3 * p + d] = rows[k][6 + d];
       a.f[3 * p + d] = a.torque[3 * p + d] = 0;
     }
-    for (int d = 0; d < 18; ++d) a.wallSpring[18 * p + d] = 0;
+    for (int d = 0; d < 6 * kWallSpringWidth; ++d) a.wallSpring[6 * kWallSpringWidth * p + d] = 0;
     a.radius[p] = radius_;
     a.mass[p]   = m;
     a.id[p]     = start + (PetscInt64)k;

@@ -62,7 +62,7 @@ PetscErrorCode NeighbourList::Build(PetscInt nLocal, const PetscReal *xLocal, Pe
           }
         }
   }
-  spring.assign(3 * first.size(), 0);
+  spring.assign(kSpringWidth * first.size(), 0);
   PetscFunctionReturn(0);
 }
 

@@ -63,6 +63,8 @@ private:
   PetscErrorCode ReadParticles();                       // DemFill.cpp: -dem_particles_file
   PetscErrorCode Rebuild();                             // DemContacts.cpp: migrate, halo, list, springs
   PetscErrorCode ComputeForces(PetscReal dt);           // DemContacts.cpp
+  template <hertz::Rolling model>
+  PetscErrorCode ComputeForcesWith(PetscReal dt);
   PetscErrorCode ExchangeSprings(const std::vector<PetscInt64> &localIds);
 
   // Per-evaluation contact statistics of this rank (summed over ranks by Summarize).
@@ -80,6 +82,8 @@ private:
   DemMaterial   material_;
   PetscReal     wallYoungs_ = -1, wallPoisson_ = -1, wallFriction_ = -1;  // default: the particles'
   PetscBool     limitForce_ = PETSC_FALSE;
+  hertz::Rolling       rolling_ = hertz::Rolling::None;
+  hertz::RollingParams rollingParams_{};
   hertz::PairMaterial pair_{}, wall_{};
   PetscReal     radius_     = 5e-4;  // m
   PetscReal     dtFactor_   = 0.3;   // of the Rayleigh time (seed 001)

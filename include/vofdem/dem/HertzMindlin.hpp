@@ -83,7 +83,7 @@ inline PairMaterial MakePairMaterial(PetscReal Ei, PetscReal nui, PetscReal Ej, 
 // to this particle, R* and m*, the relative velocity of this particle's surface against the
 // partner's at the contact point (vrel), the step dt, and the tangential spring xi (history, m),
 // which is updated. Output: the force on this particle (the partner gets minus it) and its
-// tangential part Ft, from which each side's torque is -R n x Ft.
+// tangential part Ft, from which each side's torque is -R n x Ft. Returns the normal force F_n.
 // Without limitForce the damping is not clipped (D1 needs that to give the input restitution) and
 // F_n turns slightly attractive as a contact ends. Friction needs compression: the Coulomb limit is
 // mu max(F_n, 0), never mu |F_n| (which made friction act under tension: the oblique impact's
@@ -96,8 +96,8 @@ inline PairMaterial MakePairMaterial(PetscReal Ei, PetscReal nui, PetscReal Ej, 
 // backwards early in a contact, where gamma_t v_t alone exceeds the cap, and the friction impulse
 // fell 7 % short of mu times the normal impulse; capping only the spring part and adding damping
 // while sticking (LIGGGHTS) let |F_t| exceed mu |F_n| and the impulse came out 16 % too large.
-inline void Contact(const PairMaterial &c, PetscReal delta, const PetscReal n[3], PetscReal Rstar, PetscReal mstar, const PetscReal vrel[3],
-                    PetscReal dt, PetscReal xi[3], PetscReal F[3], PetscReal Ft[3]) {
+inline PetscReal Contact(const PairMaterial &c, PetscReal delta, const PetscReal n[3], PetscReal Rstar, PetscReal mstar, const PetscReal vrel[3],
+                         PetscReal dt, PetscReal xi[3], PetscReal F[3], PetscReal Ft[3]) {
   const PetscReal sqrtRd = std::sqrt(Rstar * delta);
   const PetscReal Sn = 2 * c.Estar * sqrtRd, St = 8 * c.Gstar * sqrtRd;
   const PetscReal k5 = -2 * std::sqrt(5.0 / 6.0) * c.beta;  // >= 0
@@ -131,6 +131,7 @@ inline void Contact(const PairMaterial &c, PetscReal delta, const PetscReal n[3]
     }
   }
   for (int d = 0; d < 3; ++d) F[d] = Fn * n[d] + Ft[d];
+  return Fn;
 }
 
 }  // namespace vofdem::hertz
@@ -144,3 +145,60 @@ inline PetscReal ElasticEnergy(const PairMaterial &c, PetscReal delta, PetscReal
 }
 
 }  // namespace vofdem::hertz
+
+namespace vofdem::hertz {
+
+// Rolling resistance (P5), chosen per scene and bound outside the contact loops.
+enum class Rolling { None, ConstantTorque, Epsd, Epsd2 };
+
+struct RollingParams {
+  PetscReal mu  = 0;    // rolling friction coefficient mu_r
+  PetscReal eta = 0.3;  // EPSD: viscous damping as a fraction of critical (Ai et al. 2011)
+};
+
+// Rolling torque on this particle (the partner gets minus it) from the relative angular velocity
+// wrel = w_this - w_partner, with twisting about n removed. Fn: the normal force (only compression
+// counts), kn: the secant normal stiffness F_n,elastic/delta (as in LIGGGHTS), Ir: the equivalent
+// moment of inertia about the contact, spring: the rolling spring (history, N m), updated.
+//  - ConstantTorque: M = -mu_r R* F_n w/|w|, the classic model; it chatters around w = 0.
+//  - Epsd (Ai et al. 2011, model C): spring k_r = 2.25 k_n mu_r^2 R*^2 with dM = -k_r w dt, capped at
+//    mu_r R* F_n, plus damping -eta 2 sqrt(I_r k_r) w while not at the cap; holds a pile at rest.
+//  - Epsd2 (LIGGGHTS' epsd2): the same spring and cap without damping.
+template <Rolling model>
+inline void RollingTorque(const RollingParams &p, PetscReal Fn, PetscReal kn, PetscReal Rstar, PetscReal Ir, const PetscReal n[3],
+                          const PetscReal wrel[3], PetscReal dt, PetscReal spring[3], PetscReal M[3]) {
+  M[0] = M[1] = M[2] = 0;
+  if constexpr (model == Rolling::None) return;
+  const PetscReal wn = wrel[0] * n[0] + wrel[1] * n[1] + wrel[2] * n[2];
+  PetscReal       w[3];
+  for (int d = 0; d < 3; ++d) w[d] = wrel[d] - wn * n[d];
+  const PetscReal Mmax = p.mu * Rstar * std::max(Fn, (PetscReal)0);
+  if constexpr (model == Rolling::ConstantTorque) {
+    const PetscReal wmag = std::sqrt(w[0] * w[0] + w[1] * w[1] + w[2] * w[2]);
+    if (wmag > 0)
+      for (int d = 0; d < 3; ++d) M[d] = -Mmax * w[d] / wmag;
+  } else {
+    // Turn the spring into the tangent plane keeping its length, as the tangential spring.
+    const PetscReal old2 = spring[0] * spring[0] + spring[1] * spring[1] + spring[2] * spring[2];
+    if (old2 > 0) {
+      const PetscReal sn = spring[0] * n[0] + spring[1] * n[1] + spring[2] * n[2];
+      for (int d = 0; d < 3; ++d) spring[d] -= sn * n[d];
+      const PetscReal new2 = spring[0] * spring[0] + spring[1] * spring[1] + spring[2] * spring[2];
+      if (new2 > 0)
+        for (int d = 0; d < 3; ++d) spring[d] *= std::sqrt(old2 / new2);
+    }
+    const PetscReal kr = 2.25 * kn * p.mu * p.mu * Rstar * Rstar;
+    for (int d = 0; d < 3; ++d) spring[d] -= kr * w[d] * dt;
+    const PetscReal s2 = spring[0] * spring[0] + spring[1] * spring[1] + spring[2] * spring[2];
+    const bool      full = s2 > Mmax * Mmax;
+    if (full) {
+      const PetscReal s = Mmax / std::sqrt(s2);
+      for (int d = 0; d < 3; ++d) spring[d] *= s;
+    }
+    const PetscReal damp = (model == Rolling::Epsd && !full) ? p.eta * 2 * std::sqrt(Ir * kr) : 0;
+    for (int d = 0; d < 3; ++d) M[d] = spring[d] - damp * w[d];
+  }
+}
+
+}  // namespace vofdem::hertz
+

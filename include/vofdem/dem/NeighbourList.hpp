@@ -16,6 +16,9 @@
 
 namespace vofdem {
 
+// History values per contact: the tangential spring (m) and the rolling spring (N m), x,y,z each.
+inline constexpr int kSpringWidth = 6;
+
 // Springs of touching pairs keyed by the pair of global ids (lower id first), stored as seen from
 // the lower id. Lives only while lists are rebuilt and particles migrate.
 struct PairKey {
@@ -25,7 +28,7 @@ struct PairKey {
 struct PairKeyHash {
   size_t operator()(const PairKey &k) const { return (size_t)random::Mix(random::Mix((std::uint64_t)k.lo) ^ (std::uint64_t)k.hi); }
 };
-using ContactHistory = std::unordered_map<PairKey, std::array<PetscReal, 3>, PairKeyHash>;
+using ContactHistory = std::unordered_map<PairKey, std::array<PetscReal, kSpringWidth>, PairKeyHash>;
 
 class NeighbourList {
 public:
@@ -36,7 +39,7 @@ public:
 
   size_t Size() const { return first.size(); }
   std::vector<PetscInt>  first, second;  // the pairs
-  std::vector<PetscReal> spring;         // 3 per pair: tangential spring as seen from the lower id
+  std::vector<PetscReal> spring;         // kSpringWidth per pair, as seen from the lower id
 
 private:
   std::vector<PetscInt> cellStart_, cellOf_, order_;

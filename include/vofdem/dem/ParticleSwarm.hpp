@@ -10,6 +10,9 @@
 namespace vofdem {
 
 // Names of the swarm fields (each one contiguous array; vectors are 3 values per particle).
+// Per box face: tangential spring (m) and rolling spring (N m), x,y,z each.
+inline constexpr int kWallSpringWidth = 6;
+
 namespace field {
 inline constexpr const char *position = DMSwarmPICField_coor;  // m
 inline constexpr const char *velocity = "velocity";            // m/s
@@ -20,7 +23,7 @@ inline constexpr const char *id       = "id";                  // global id, Pet
 inline constexpr const char *reference = "reference";          // m, position at the last migration
 inline constexpr const char *omega    = "omega";               // rad/s, angular velocity
 inline constexpr const char *torque   = "torque";              // N m, total torque of the last evaluation
-inline constexpr const char *wallSpring = "wall_spring";       // m, tangential spring against each box face (6 x 3)
+inline constexpr const char *wallSpring = "wall_spring";       // springs against each box face (6 faces x kWallSpringWidth)
 }  // namespace field
 
 // Every field of the local particles at once, for loops over particles (structure of arrays;
