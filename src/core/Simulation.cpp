@@ -126,6 +126,7 @@ PetscErrorCode Simulation::Run() {
     const bool last = step_ == maxSteps_ || time_ >= finalTime_ * (1 - 1e-12);
     if (step_ % monitorEvery_ == 0 || last) PetscCall(Monitor());
   }
+  if (physics_.dem && !dem_->SaveParticlesPath().empty()) PetscCall(dem_->SaveParticles(dem_->SaveParticlesPath()));
   PetscCall(PetscPrintf(comm_, "vofdem: finished after %" PetscInt_FMT " steps at t = %g s%s%s\n", step_, (double)time_,
                         csv_ ? "; monitor table in " : "", csv_ ? (outputDir_ + "/monitor.csv").c_str() : ""));
   PetscFunctionReturn(0);

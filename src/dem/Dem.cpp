@@ -51,6 +51,7 @@ PetscErrorCode Dem::SetFromOptions(MPI_Comm comm) {
     PetscCall(opt.Int("-fill_count", "Number of particles to place on the fill lattice (0: none, -1: as many as the region holds)", &fillCount_, -1));
     PetscCall(opt.RealVector("-fill_velocity", "Initial velocity of inserted particles", "m/s", fillVelocity_, 3));
     PetscCall(opt.Real("-fill_velocity_spread", "Random part of the initial velocity: each component uniform in [-spread, spread]", "m/s", &fillSpread_, RealRange::NonNegative()));
+    PetscCall(opt.String("-save_particles", "Write all particles at the end of the run to this CSV (the format -dem_particles_file reads)", &savePath_));
     PetscCall(opt.String("-particles_file", "CSV of particles to insert after the fill: a header line, then x,y,z,vx,vy,vz[,wx,wy,wz] in m, m/s, rad/s", &particlesFile_));
   }
   PetscOptionsEnd();
@@ -69,6 +70,12 @@ PetscErrorCode Dem::SetUp(const Grid &grid, const PetscReal gravity[3], std::uin
   pair_         = hertz::MakePairMaterial(m.youngs, m.poisson, m.youngs, m.poisson, m.restitution, m.friction, limitForce_);
   wall_         = hertz::MakePairMaterial(m.youngs, m.poisson, wallYoungs_, wallPoisson_, m.restitution, wallFriction_, limitForce_);
   rayleighTime_ = hertz::RayleighTime(radius_, m.density, m.youngs, m.poisson);
+  PetscClassId classId;
+  PetscCall(PetscClassIdRegister("DEM", &classId));
+  PetscCall(PetscLogEventRegister("DEMRebuild", classId, &evRebuild_));
+  PetscCall(PetscLogEventRegister("DEMHaloRefresh", classId, &evHalo_));
+  PetscCall(PetscLogEventRegister("DEMForces", classId, &evForces_));
+  PetscCall(PetscLogEventRegister("DEMIntegrate", classId, &evIntegrate_));
   PetscCall(swarm_.Create(grid));
   PetscCall(halo_.SetUp(grid));
   PetscCall(Fill(seed));
@@ -86,6 +93,7 @@ PetscErrorCode Dem::Step(PetscReal dt) {
   PetscBool      rebuild;
 
   PetscFunctionBeginUser;
+  PetscCall(PetscLogEventBegin(evIntegrate_, 0, 0, 0, 0));
   PetscCall(swarm_.GetArrays(&a));
   for (PetscInt p = 0; p < a.n; ++p) {
     const PetscReal h = 0.5 * dt / a.mass[p], hI = h / (0.4 * a.radius[p] * a.radius[p]);
@@ -97,13 +105,22 @@ PetscErrorCode Dem::Step(PetscReal dt) {
   }
   PetscCall(swarm_.RestoreArrays(&a));
   PetscCall(swarm_.NeedsRebuild(0.5 * skin_, &rebuild));
-  if (rebuild) PetscCall(Rebuild());
-  else {
+  PetscCall(PetscLogEventEnd(evIntegrate_, 0, 0, 0, 0));
+  if (rebuild) {
+    PetscCall(PetscLogEventBegin(evRebuild_, 0, 0, 0, 0));
+    PetscCall(Rebuild());
+    PetscCall(PetscLogEventEnd(evRebuild_, 0, 0, 0, 0));
+  } else {
+    PetscCall(PetscLogEventBegin(evHalo_, 0, 0, 0, 0));
     PetscCall(swarm_.GetArrays(&a));
     PetscCall(halo_.Refresh(a, a.omega));
     PetscCall(swarm_.RestoreArrays(&a));
+    PetscCall(PetscLogEventEnd(evHalo_, 0, 0, 0, 0));
   }
+  PetscCall(PetscLogEventBegin(evForces_, 0, 0, 0, 0));
   PetscCall(ComputeForces(dt));
+  PetscCall(PetscLogEventEnd(evForces_, 0, 0, 0, 0));
+  PetscCall(PetscLogEventBegin(evIntegrate_, 0, 0, 0, 0));
   PetscCall(swarm_.GetArrays(&a));
   for (PetscInt p = 0; p < a.n; ++p) {
     const PetscReal h = 0.5 * dt / a.mass[p], hI = h / (0.4 * a.radius[p] * a.radius[p]);
@@ -113,6 +130,7 @@ PetscErrorCode Dem::Step(PetscReal dt) {
     }
   }
   PetscCall(swarm_.RestoreArrays(&a));
+  PetscCall(PetscLogEventEnd(evIntegrate_, 0, 0, 0, 0));
   PetscFunctionReturn(0);
 }
 

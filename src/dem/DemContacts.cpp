@@ -16,13 +16,6 @@ inline void Cross(const PetscReal a[3], const PetscReal b[3], PetscReal c[3]) {
   c[2] = a[0] * b[1] - a[1] * b[0];
 }
 
-// Read-only view of one particle, local or ghost.
-struct Body {
-  const PetscReal *x, *v, *w;
-  PetscReal        r, m;
-  PetscInt64       id;
-};
-
 }  // namespace
 
 PetscErrorCode Dem::Rebuild() {
@@ -36,7 +29,7 @@ PetscErrorCode Dem::Rebuild() {
   const PetscInt n = a.n;
   for (size_t k = 0; k < list_.Size(); ++k) {
     const PetscReal *s = &list_.spring[kSpringWidth * k];
-    if (std::all_of(s, s + kSpringWidth, [](PetscReal v) { return v == 0; })) continue;
+    if (!list_.touching[k] || std::all_of(s, s + kSpringWidth, [](PetscReal v) { return v == 0; })) continue;
     const PetscInt   i = list_.first[k], j = list_.second[k];
     const PetscInt64 idi = a.id[i], idj = j < n ? a.id[j] : halo_.id[j - n];
     auto            &h   = springs_[{std::min(idi, idj), std::max(idi, idj)}];
@@ -56,12 +49,16 @@ PetscErrorCode Dem::Rebuild() {
   PetscReal lo[3], hi[3];
   grid_->LocalBox(lo, hi);
   PetscCall(swarm_.GetArrays(&a));
-  PetscCall(list_.Build(a.n, a.x, halo_.Count(), halo_.x.data(), cutoff, lo, hi));
+  PetscCall(list_.Build(a.n, a.x, a.radius, a.mass, a.id, halo_.Count(), halo_.x.data(), halo_.radius.data(), halo_.mass.data(), halo_.id.data(),
+                        cutoff, lo, hi));
   for (size_t k = 0; k < list_.Size() && !springs_.empty(); ++k) {
     const PetscInt   i = list_.first[k], j = list_.second[k];
     const PetscInt64 idi = a.id[i], idj = j < a.n ? a.id[j] : halo_.id[j - a.n];
     const auto       it  = springs_.find({std::min(idi, idj), std::max(idi, idj)});
-    if (it != springs_.end()) std::copy(it->second.begin(), it->second.end(), &list_.spring[kSpringWidth * k]);
+    if (it != springs_.end()) {
+      std::copy(it->second.begin(), it->second.end(), &list_.spring[kSpringWidth * k]);
+      list_.touching[k] = 1;
+    }
   }
   PetscCall(swarm_.RestoreArrays(&a));
   springs_.clear();
@@ -157,54 +154,67 @@ PetscErrorCode Dem::ComputeForcesWith(PetscReal dt) {
       const int       d     = face / 2;
       const PetscReal sign  = face % 2 ? -1 : 1;  // inward normal +e_d (lower face) or -e_d (upper)
       const PetscReal delta = r - (face % 2 ? hi[d] - x[d] : x[d] - lo[d]);
-      PetscReal      *xi    = &a.wallSpring[6 * W * p + W * face];
+      const PetscInt  bit   = (PetscInt)1 << face;
       if (delta <= 0) {
-        std::fill(xi, xi + W, 0);
+        // Springs are cleared when a contact ends, not re-zeroed on every step (memory traffic).
+        if (a.wallTouch[p] & bit) std::fill(&a.wallSpring[6 * W * p + W * face], &a.wallSpring[6 * W * p + W * face] + W, 0);
+        a.wallTouch[p] &= ~bit;
         continue;
       }
+      a.wallTouch[p] |= bit;
+      PetscReal *xi = &a.wallSpring[6 * W * p + W * face];
       PetscReal n[3] = {0, 0, 0}, rn[3], wxr[3], vrel[3], F[3], Ft[3], tq[3], M[3];
       n[d] = sign;
       for (int e = 0; e < 3; ++e) rn[e] = -r * n[e];  // centre to contact point
       Cross(w, rn, wxr);
       for (int e = 0; e < 3; ++e) vrel[e] = v[e] + wxr[e];
-      const PetscReal Fn = hertz::Contact(wall_, delta, n, r, a.mass[p], vrel, dt, xi, F, Ft);
+      PetscReal       Sn;
+      const PetscReal Fn = hertz::Contact(wall_, delta, n, r, std::sqrt(a.mass[p]), vrel, dt, xi, F, Ft, &Sn);
       Cross(rn, Ft, tq);
-      // Rolling against the face: w_rel = w, I_r = I + m R^2 = 1.4 m R^2 about the contact.
-      hertz::RollingTorque<RM>(rollingParams_, Fn, wall_.Estar * 4.0 / 3.0 * std::sqrt(r * delta), r, 1.4 * a.mass[p] * r * r, n, w, dt, xi + 3, M);
+      // Rolling against the face: w_rel = w, I_r = I + m R^2 = 1.4 m R^2 about the contact; the
+      // secant normal stiffness F_n,elastic / delta is (2/3) S_n.
+      hertz::RollingTorque<RM>(rollingParams_, Fn, 2.0 / 3.0 * Sn, r, 1.4 * a.mass[p] * r * r, n, w, dt, xi + 3, M);
       for (int e = 0; e < 3; ++e) f[e] += F[e], t[e] += tq[e] + M[e], stats_.wallForce[face][e] -= F[e];
       ++stats_.wallContacts;
-      stats_.elastic += hertz::ElasticEnergy(wall_, delta, r);
+      stats_.elastic += hertz::ElasticEnergy(Sn, delta);
       stats_.maxOverlap = std::max(stats_.maxOverlap, delta / (2 * r));
     }
   }
-  const PetscInt n = a.n;
-  auto body = [&](PetscInt j) {
-    if (j < n) return Body{&a.x[3 * j], &a.v[3 * j], &a.omega[3 * j], a.radius[j], a.mass[j], a.id[j]};
-    const PetscInt g = j - n;
-    return Body{&halo_.x[3 * g], &halo_.v[3 * g], &halo_.omega[3 * g], halo_.radius[g], halo_.mass[g], halo_.id[g]};
-  };
+  const PetscInt n = a.n, ng = halo_.Count();
+  hot_.resize(n + ng);
+  for (PetscInt p = 0; p < n; ++p) {
+    HotParticle &h = hot_[p];
+    for (int e = 0; e < 3; ++e) h.x[e] = a.x[3 * p + e], h.v[e] = a.v[3 * p + e], h.w[e] = a.omega[3 * p + e];
+    h.r = a.radius[p], h.m = a.mass[p];
+  }
+  for (PetscInt g = 0; g < ng; ++g) {
+    HotParticle &h = hot_[n + g];
+    for (int e = 0; e < 3; ++e) h.x[e] = halo_.x[3 * g + e], h.v[e] = halo_.v[3 * g + e], h.w[e] = halo_.omega[3 * g + e];
+    h.r = halo_.radius[g], h.m = halo_.mass[g];
+  }
   for (size_t k = 0; k < list_.Size(); ++k) {
-    PetscInt ia = list_.first[k], ib = list_.second[k];
-    Body     A = body(ia), B = body(ib);
-    if (A.id > B.id) std::swap(A, B), std::swap(ia, ib);
-    PetscReal      *xi = &list_.spring[kSpringWidth * k];
-    PetscReal       dx[3] = {A.x[0] - B.x[0], A.x[1] - B.x[1], A.x[2] - B.x[2]};
-    const PetscReal dist2 = dx[0] * dx[0] + dx[1] * dx[1] + dx[2] * dx[2], rsum = A.r + B.r;
+    const PetscInt ia = list_.first[k], ib = list_.second[k];  // lower id first
+    const PetscReal *xa = hot_[ia].x, *xb = hot_[ib].x;
+    const PetscReal  dx[3] = {xa[0] - xb[0], xa[1] - xb[1], xa[2] - xb[2]};
+    const PetscReal  dist2 = dx[0] * dx[0] + dx[1] * dx[1] + dx[2] * dx[2], rsum = hot_[ia].r + hot_[ib].r;
+    PetscReal       *xi = &list_.spring[kSpringWidth * k];
     if (dist2 >= rsum * rsum) {
-      std::fill(xi, xi + kSpringWidth, 0);
+      if (list_.touching[k]) std::fill(xi, xi + kSpringWidth, 0), list_.touching[k] = 0;
       continue;
     }
-    const PetscReal dist = std::sqrt(dist2), delta = rsum - dist, Rstar = hertz::EffectiveRadius(A.r, B.r);
-    PetscReal       nrm[3], rw[3], wxn[3], vrel[3], F[3], Ft[3], nxF[3], wrel[3], M[3];
-    for (int e = 0; e < 3; ++e) nrm[e] = dx[e] / dist, rw[e] = A.r * A.w[e] + B.r * B.w[e], wrel[e] = A.w[e] - B.w[e];
+    list_.touching[k] = 1;
+    // Copies, not references: stores into the force arrays below cannot alias them.
+    const HotParticle A = hot_[ia], B = hot_[ib];
+    const PetscReal   dist = std::sqrt(dist2), inv = 1 / dist, delta = rsum - dist, Rstar = list_.rstar[k];
+    PetscReal         nrm[3], rw[3], wxn[3], vrel[3], F[3], Ft[3], nxF[3], wrel[3], M[3], Sn;
+    for (int e = 0; e < 3; ++e) nrm[e] = dx[e] * inv, rw[e] = A.r * A.w[e] + B.r * B.w[e], wrel[e] = A.w[e] - B.w[e];
     Cross(rw, nrm, wxn);
     for (int e = 0; e < 3; ++e) vrel[e] = A.v[e] - B.v[e] - wxn[e];  // surface of A against surface of B
-    const PetscReal Fn = hertz::Contact(pair_, delta, nrm, Rstar, hertz::EffectiveMass(A.m, B.m), vrel, dt, xi, F, Ft);
+    const PetscReal Fn = hertz::Contact(pair_, delta, nrm, Rstar, list_.sqrtMstar[k], vrel, dt, xi, F, Ft, &Sn);
     Cross(nrm, Ft, nxF);
     if constexpr (RM != hertz::Rolling::None) {
       const PetscReal Ia = 1.4 * A.m * A.r * A.r, Ib = 1.4 * B.m * B.r * B.r;  // about the contact point
-      hertz::RollingTorque<RM>(rollingParams_, Fn, pair_.Estar * 4.0 / 3.0 * std::sqrt(Rstar * delta), Rstar, Ia * Ib / (Ia + Ib), nrm, wrel, dt,
-                               xi + 3, M);
+      hertz::RollingTorque<RM>(rollingParams_, Fn, 2.0 / 3.0 * Sn, Rstar, Ia * Ib / (Ia + Ib), nrm, wrel, dt, xi + 3, M);
     } else {
       M[0] = M[1] = M[2] = 0;
     }
@@ -215,8 +225,9 @@ PetscErrorCode Dem::ComputeForcesWith(PetscReal dt) {
     if (ib < n)
       for (int e = 0; e < 3; ++e) a.f[3 * ib + e] -= F[e], a.torque[3 * ib + e] -= M[e] + B.r * nxF[e];
     // A pair with a ghost is counted by both ranks: count it half on each.
-    stats_.pairContacts += (ia < n && ib < n) ? 2 : 1;
-    stats_.elastic += ((ia < n && ib < n) ? 1.0 : 0.5) * hertz::ElasticEnergy(pair_, delta, Rstar);
+    const bool both = ia < n && ib < n;
+    stats_.pairContacts += both ? 2 : 1;
+    stats_.elastic += (both ? 1.0 : 0.5) * hertz::ElasticEnergy(Sn, delta);
     stats_.maxOverlap = std::max(stats_.maxOverlap, delta / (2 * std::min(A.r, B.r)));
   }
   PetscCall(swarm_.RestoreArrays(&a));

@@ -3,8 +3,10 @@
 #include "vofdem/core/Random.hpp"
 #include "vofdem/core/Runtime.hpp"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <fstream>
 #include <sstream>
@@ -71,6 +73,7 @@ PetscErrorCode Dem::Fill(std::uint64_t seed) {
       a.f[3 * p + d] = 0;
     }
     for (int d = 0; d < 6 * kWallSpringWidth; ++d) a.wallSpring[6 * kWallSpringWidth * p + d] = 0;
+    a.wallTouch[p] = 0;
     for (int d = 0; d < 3; ++d) a.omega[3 * p + d] = a.torque[3 * p + d] = 0;
     a.radius[p] = radius_;
     a.mass[p]   = m;
@@ -86,7 +89,7 @@ PetscErrorCode Dem::Fill(std::uint64_t seed) {
 
 // Particles from a CSV file, after the lattice fill (ids continue from it). Every rank reads the
 // file and keeps the particles it owns, so the result does not depend on the rank count. A bad
-// file is an input error naming file and line; so is a particle outside the box or cut by a face.
+// file is an input error naming file and line; so is a particle outside the box or cut deeply by a face.
 PetscErrorCode Dem::ReadParticles() {
   PetscFunctionBeginUser;
   if (particlesFile_.empty()) PetscFunctionReturn(0);
@@ -113,10 +116,12 @@ PetscErrorCode Dem::ReadParticles() {
     }
     if (!ok || (k != 6 && k != 9))
       VofdemInputError(comm_, "%s:%d: expected 6 or 9 comma-separated numbers (x,y,z,vx,vy,vz[,wx,wy,wz])", particlesFile_.c_str(), lineNo);
+    // A settled particle rests with a small overlap on a wall: accept up to 5 % of the radius.
+    const PetscReal inside = 0.95 * radius_;
     for (int d = 0; d < 3; ++d)
-      if (r[d] - radius_ < grid_->Lower()[d] || r[d] + radius_ > grid_->Upper()[d])
-        VofdemInputError(comm_, "%s:%d: the particle at (%g, %g, %g) m with radius %g m is not inside the box", particlesFile_.c_str(), lineNo,
-                         (double)r[0], (double)r[1], (double)r[2], (double)radius_);
+      if (r[d] - inside < grid_->Lower()[d] || r[d] + inside > grid_->Upper()[d])
+        VofdemInputError(comm_, "%s:%d: the particle at (%g, %g, %g) m with radius %g m is not inside the box (or overlaps a wall by more than 5 %% of its radius)",
+                         particlesFile_.c_str(), lineNo, (double)r[0], (double)r[1], (double)r[2], (double)radius_);
     rows.push_back(r);
   }
   PetscInt first, local = 0, start;
@@ -135,6 +140,7 @@ PetscErrorCode Dem::ReadParticles() {
       a.f[3 * p + d] = a.torque[3 * p + d] = 0;
     }
     for (int d = 0; d < 6 * kWallSpringWidth; ++d) a.wallSpring[6 * kWallSpringWidth * p + d] = 0;
+    a.wallTouch[p] = 0;
     a.radius[p] = radius_;
     a.mass[p]   = m;
     a.id[p]     = start + (PetscInt64)k;
@@ -142,6 +148,52 @@ PetscErrorCode Dem::ReadParticles() {
   }
   PetscCall(swarm_.RestoreArrays(&a));
   PetscCall(swarm_.Migrate());
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode Dem::SaveParticles(const std::string &path) const {
+  ParticleArrays            a;
+  PetscMPIInt               rank, size;
+  std::vector<PetscReal>    mine;
+  std::vector<PetscReal>    all;
+  std::vector<PetscMPIInt>  counts, displs;
+  constexpr int             W = 10;  // id (as a real: exact below 2^53) + 9 values
+
+  PetscFunctionBeginUser;
+  PetscCallMPI(MPI_Comm_rank(comm_, &rank));
+  PetscCallMPI(MPI_Comm_size(comm_, &size));
+  PetscCall(swarm_.GetArrays(&a));
+  mine.resize((size_t)W * a.n);
+  for (PetscInt p = 0; p < a.n; ++p) {
+    mine[W * p] = (PetscReal)a.id[p];
+    for (int d = 0; d < 3; ++d) mine[W * p + 1 + d] = a.x[3 * p + d], mine[W * p + 4 + d] = a.v[3 * p + d], mine[W * p + 7 + d] = a.omega[3 * p + d];
+  }
+  PetscCall(swarm_.RestoreArrays(&a));
+  PetscMPIInt n = (PetscMPIInt)mine.size();
+  counts.resize(size), displs.resize(size);
+  PetscCallMPI(MPI_Gather(&n, 1, MPI_INT, counts.data(), 1, MPI_INT, 0, comm_));
+  PetscMPIInt total = 0;
+  if (rank == 0)
+    for (int q = 0; q < size; ++q) displs[q] = total, total += counts[q];
+  all.resize(total);
+  PetscCallMPI(MPI_Gatherv(mine.data(), n, MPIU_REAL, all.data(), counts.data(), displs.data(), MPIU_REAL, 0, comm_));
+  int ok = 1;
+  if (rank == 0) {
+    std::vector<std::array<PetscReal, W>> rows(total / W);
+    for (size_t r = 0; r < rows.size(); ++r) std::copy(&all[W * r], &all[W * r] + W, rows[r].begin());
+    std::sort(rows.begin(), rows.end(), [](const auto &x, const auto &y) { return x[0] < y[0]; });
+    const std::string tmp = path + ".tmp";
+    FILE             *f   = std::fopen(tmp.c_str(), "w");
+    ok                    = f != nullptr;
+    if (f) {
+      std::fprintf(f, "x,y,z,vx,vy,vz,wx,wy,wz\n");
+      for (const auto &r : rows)
+        std::fprintf(f, "%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g\n", r[1], r[2], r[3], r[4], r[5], r[6], r[7], r[8], r[9]);
+      ok = std::fclose(f) == 0 && std::rename(tmp.c_str(), path.c_str()) == 0;
+    }
+  }
+  PetscCallMPI(MPI_Bcast(&ok, 1, MPI_INT, 0, comm_));
+  if (!ok) VofdemInputError(comm_, "option -dem_save_particles: cannot write '%s'", path.c_str());
   PetscFunctionReturn(0);
 }
 

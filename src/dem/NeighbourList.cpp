@@ -5,8 +5,10 @@
 
 namespace vofdem {
 
-PetscErrorCode NeighbourList::Build(PetscInt nLocal, const PetscReal *xLocal, PetscInt nGhost, const PetscReal *xGhost, PetscReal cutoff,
-                                    const PetscReal lo[3], const PetscReal hi[3]) {
+PetscErrorCode NeighbourList::Build(PetscInt nLocal, const PetscReal *xLocal, const PetscReal *rLocal, const PetscReal *mLocal,
+                                    const PetscInt64 *idLocal, PetscInt nGhost, const PetscReal *xGhost, const PetscReal *rGhost,
+                                    const PetscReal *mGhost, const PetscInt64 *idGhost, PetscReal cutoff, const PetscReal lo[3],
+                                    const PetscReal hi[3]) {
   PetscFunctionBeginUser;
   const PetscInt n = nLocal + nGhost;
   PetscInt       nc[3];
@@ -63,6 +65,19 @@ PetscErrorCode NeighbourList::Build(PetscInt nLocal, const PetscReal *xLocal, Pe
         }
   }
   spring.assign(kSpringWidth * first.size(), 0);
+  touching.assign(first.size(), 0);
+  rstar.resize(first.size());
+  sqrtMstar.resize(first.size());
+  for (size_t k = 0; k < first.size(); ++k) {
+    // Lower global id first (see the header).
+    const PetscInt64 idi = idLocal[first[k]], idj = second[k] < nLocal ? idLocal[second[k]] : idGhost[second[k] - nLocal];
+    if (idi > idj) std::swap(first[k], second[k]);
+    const PetscInt  i = first[k], j = second[k];
+    const PetscReal ri = i < nLocal ? rLocal[i] : rGhost[i - nLocal], mi = i < nLocal ? mLocal[i] : mGhost[i - nLocal];
+    const PetscReal rj = j < nLocal ? rLocal[j] : rGhost[j - nLocal], mj = j < nLocal ? mLocal[j] : mGhost[j - nLocal];
+    rstar[k]     = ri * rj / (ri + rj);
+    sqrtMstar[k] = std::sqrt(mi * mj / (mi + mj));
+  }
   PetscFunctionReturn(0);
 }
 

@@ -14,6 +14,7 @@
 
 #include <cstdint>
 #include <string>
+#include <vector>
 
 namespace vofdem {
 
@@ -48,6 +49,10 @@ public:
   PetscReal RayleighTime() const { return rayleighTime_; }
   PetscErrorCode Step(PetscReal dt);  // one velocity-Verlet step
   PetscErrorCode Summarize(DemSummary *s) const;
+  // Collective: writes every particle, in id order, as the CSV that -dem_particles_file reads
+  // (x,y,z,vx,vy,vz,wx,wy,wz), through rank 0; the file is written to a temporary name and renamed.
+  PetscErrorCode SaveParticles(const std::string &path) const;
+  const std::string &SaveParticlesPath() const { return savePath_; }
   PetscErrorCode View(PetscViewer viewer) const;
   PetscErrorCode Destroy();
 
@@ -73,6 +78,13 @@ private:
     PetscReal maxOverlap = 0, elastic = 0, wallForce[6][3] = {};
   };
 
+  // The state the pair loop reads, local particles then ghosts, packed so that one particle is one
+  // or two cache lines and no branch picks between local and ghost arrays; filled per evaluation.
+  struct HotParticle {
+    PetscReal x[3], v[3], w[3], r, m;
+  };
+  std::vector<HotParticle> hot_;
+
   const Grid   *grid_ = nullptr;
   ParticleSwarm swarm_;
   Halo          halo_;
@@ -91,6 +103,8 @@ private:
   PetscReal     gravity_[3] = {0, 0, 0};
   PetscReal     rayleighTime_ = 0;
   PetscInt      rebuilds_   = 0;
+  // -log_view events: where a DEM step spends its time.
+  PetscLogEvent evRebuild_ = 0, evHalo_ = 0, evForces_ = 0, evIntegrate_ = 0;
 
   // Lattice fill of a region (-dem_fill_*)
   PetscReal fillLower_[3] = {0, 0, 0}, fillUpper_[3] = {0, 0, 0};
@@ -101,6 +115,7 @@ private:
   PetscReal fillVelocity_[3] = {0, 0, 0};
   PetscReal fillSpread_   = 0;  // m/s, random velocity components uniform in [-spread, spread]
   std::string particlesFile_;  // CSV: x,y,z,vx,vy,vz[,wx,wy,wz] per line, one header line
+  std::string savePath_;       // -dem_save_particles: the same CSV at the end of the run
   PetscInt  inserted_     = 0;
   MPI_Comm  comm_         = MPI_COMM_NULL;
 };

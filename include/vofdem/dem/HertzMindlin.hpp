@@ -27,26 +27,6 @@ inline PetscReal DampingRatio(PetscReal e) {
   return l / std::sqrt(l * l + PETSC_PI * PETSC_PI);
 }
 
-// Precomputed constants of one normal contact pair type.
-struct NormalContact {
-  PetscReal kHertz;   // (4/3) E* sqrt(R*): F_elastic = kHertz * delta^1.5
-  PetscReal dampPre;  // -2 sqrt(5/6) beta sqrt(2 E* sqrt(R*) m*): gamma_n = dampPre * delta^(1/4)
-};
-
-inline NormalContact MakeNormalContact(PetscReal Estar, PetscReal Rstar, PetscReal mstar, PetscReal e) {
-  const PetscReal sqrtR = std::sqrt(Rstar);
-  return {4.0 / 3.0 * Estar * sqrtR, -2.0 * std::sqrt(5.0 / 6.0) * DampingRatio(e) * std::sqrt(2.0 * Estar * sqrtR * mstar)};
-}
-
-// Normal force magnitude along the contact normal (positive = repulsive) for overlap delta > 0 and
-// normal relative velocity vn (negative while approaching):
-// F_n = (4/3) E* sqrt(R*) delta^1.5 - gamma_n vn, gamma_n = -2 sqrt(5/6) beta sqrt(S_n m*),
-// S_n = 2 E* sqrt(R* delta)   (P3). The damping part is not clipped (VERIFICATION.md D1).
-inline PetscReal NormalForce(const NormalContact &c, PetscReal delta, PetscReal vn) {
-  const PetscReal q = std::sqrt(std::sqrt(delta));  // delta^(1/4)
-  return c.kHertz * delta * q * q - c.dampPre * q * vn;
-}
-
 // Rayleigh time T_R = pi R sqrt(rho/G) / (0.1631 nu + 0.8766), G = E / (2 (1 + nu))   (P9)
 inline PetscReal RayleighTime(PetscReal R, PetscReal rho, PetscReal E, PetscReal nu) {
   const PetscReal G = E / (2 * (1 + nu));
@@ -73,17 +53,40 @@ struct PairMaterial {
   PetscReal beta  = 0;  // ln(e)/sqrt(ln^2 e + pi^2) <= 0
   PetscReal mu    = 0;  // sliding friction
   bool      limitForce = false;  // clip F_n at 0: no tension from damping as a contact ends
+  // Derived once: gamma_n = dampN sqrt(m*) (R* delta)^(1/4), gamma_t = gamma_n tOverN.
+  PetscReal dampN = 0, tOverN = 0;
 };
 
 inline PairMaterial MakePairMaterial(PetscReal Ei, PetscReal nui, PetscReal Ej, PetscReal nuj, PetscReal e, PetscReal mu, bool limitForce = false) {
-  return {EffectiveModulus(Ei, nui, Ej, nuj), EffectiveShearModulus(Ei, nui, Ej, nuj), DampingRatio(e), mu, limitForce};
+  PairMaterial c{EffectiveModulus(Ei, nui, Ej, nuj), EffectiveShearModulus(Ei, nui, Ej, nuj), DampingRatio(e), mu, limitForce};
+  // gamma_n = -2 sqrt(5/6) beta sqrt(S_n m*) with S_n = 2 E* sqrt(R* delta); S_t / S_n = 4 G* / E*.
+  c.dampN  = -2 * std::sqrt(5.0 / 6.0) * c.beta * std::sqrt(2 * c.Estar);
+  c.tOverN = std::sqrt(4 * c.Gstar / c.Estar);
+  return c;
+}
+
+// Turns a spring into the plane normal to n keeping its length. When n has not turned measurably
+// the length factor rounds to 1, and the square root is skipped (it sits on the contact loop's
+// critical path).
+inline void ProjectKeepingLength(PetscReal s[3], const PetscReal n[3]) {
+  const PetscReal old2 = s[0] * s[0] + s[1] * s[1] + s[2] * s[2];
+  if (old2 == 0) return;
+  const PetscReal sn = s[0] * n[0] + s[1] * n[1] + s[2] * n[2];
+  for (int d = 0; d < 3; ++d) s[d] -= sn * n[d];
+  if (sn * sn <= 1e-16 * old2) return;
+  const PetscReal new2 = s[0] * s[0] + s[1] * s[1] + s[2] * s[2];
+  if (new2 > 0) {
+    const PetscReal f = std::sqrt(old2 / new2);
+    for (int d = 0; d < 3; ++d) s[d] *= f;
+  }
 }
 
 // One Hertz-Mindlin contact (P3). Inputs: overlap delta > 0, unit normal n pointing from the partner
 // to this particle, R* and m*, the relative velocity of this particle's surface against the
 // partner's at the contact point (vrel), the step dt, and the tangential spring xi (history, m),
 // which is updated. Output: the force on this particle (the partner gets minus it) and its
-// tangential part Ft, from which each side's torque is -R n x Ft. Returns the normal force F_n.
+// tangential part Ft, from which each side's torque is -R n x Ft. Returns the normal force F_n
+// and sets Sn, the normal tangent stiffness 2 E* sqrt(R* delta).
 // Without limitForce the damping is not clipped (D1 needs that to give the input restitution) and
 // F_n turns slightly attractive as a contact ends. Friction needs compression: the Coulomb limit is
 // mu max(F_n, 0), never mu |F_n| (which made friction act under tension: the oblique impact's
@@ -96,38 +99,29 @@ inline PairMaterial MakePairMaterial(PetscReal Ei, PetscReal nui, PetscReal Ej, 
 // backwards early in a contact, where gamma_t v_t alone exceeds the cap, and the friction impulse
 // fell 7 % short of mu times the normal impulse; capping only the spring part and adding damping
 // while sticking (LIGGGHTS) let |F_t| exceed mu |F_n| and the impulse came out 16 % too large.
-inline PetscReal Contact(const PairMaterial &c, PetscReal delta, const PetscReal n[3], PetscReal Rstar, PetscReal mstar, const PetscReal vrel[3],
-                         PetscReal dt, PetscReal xi[3], PetscReal F[3], PetscReal Ft[3]) {
+// sqrtMstar is sqrt(m*) (constant for a pair, so callers cache it).
+inline PetscReal Contact(const PairMaterial &c, PetscReal delta, const PetscReal n[3], PetscReal Rstar, PetscReal sqrtMstar, const PetscReal vrel[3],
+                         PetscReal dt, PetscReal xi[3], PetscReal F[3], PetscReal Ft[3], PetscReal *SnOut = nullptr) {
   const PetscReal sqrtRd = std::sqrt(Rstar * delta);
   const PetscReal Sn = 2 * c.Estar * sqrtRd, St = 8 * c.Gstar * sqrtRd;
-  const PetscReal k5 = -2 * std::sqrt(5.0 / 6.0) * c.beta;  // >= 0
-  const PetscReal gn = k5 * std::sqrt(Sn * mstar), gt = k5 * std::sqrt(St * mstar);
+  const PetscReal gn = c.dampN * sqrtMstar * std::sqrt(sqrtRd), gt = gn * c.tOverN;  // gamma_n, gamma_t (P3)
+  if (SnOut) *SnOut = Sn;
   const PetscReal vn = vrel[0] * n[0] + vrel[1] * n[1] + vrel[2] * n[2];  // > 0 separating
   PetscReal       Fn = 2.0 / 3.0 * Sn * delta - gn * vn;                 // (4/3) E* sqrt(R*) delta^1.5 - gamma_n v_n
   if (c.limitForce && Fn < 0) Fn = 0;
   PetscReal       vt[3];
   for (int d = 0; d < 3; ++d) vt[d] = vrel[d] - vn * n[d];
-  // Turn the spring into the tangent plane, keeping its length.
-  const PetscReal old2 = xi[0] * xi[0] + xi[1] * xi[1] + xi[2] * xi[2];
-  if (old2 > 0) {
-    const PetscReal xn = xi[0] * n[0] + xi[1] * n[1] + xi[2] * n[2];
-    for (int d = 0; d < 3; ++d) xi[d] -= xn * n[d];
-    const PetscReal new2 = xi[0] * xi[0] + xi[1] * xi[1] + xi[2] * xi[2];
-    if (new2 > 0) {
-      const PetscReal s = std::sqrt(old2 / new2);
-      for (int d = 0; d < 3; ++d) xi[d] *= s;
-    }
-  }
+  ProjectKeepingLength(xi, n);
   for (int d = 0; d < 3; ++d) {
     xi[d] += vt[d] * dt;
     Ft[d] = -St * xi[d] - gt * vt[d];
   }
   const PetscReal ft2 = Ft[0] * Ft[0] + Ft[1] * Ft[1] + Ft[2] * Ft[2], cap = c.mu * std::max(Fn, (PetscReal)0);
   if (ft2 > cap * cap) {  // sliding
-    const PetscReal s = cap / std::sqrt(ft2);
+    const PetscReal s = cap / std::sqrt(ft2), invSt = St > 0 ? 1 / St : 0;
     for (int d = 0; d < 3; ++d) {
       Ft[d] *= s;
-      xi[d] = St > 0 ? -Ft[d] / St : 0;
+      xi[d] = -Ft[d] * invSt;
     }
   }
   for (int d = 0; d < 3; ++d) F[d] = Fn * n[d] + Ft[d];
@@ -139,10 +133,9 @@ inline PetscReal Contact(const PairMaterial &c, PetscReal delta, const PetscReal
 namespace vofdem::hertz {
 
 // Energy stored in the normal Hertz spring: the integral of (4/3) E* sqrt(R*) delta^1.5, i.e.
-// (8/15) E* sqrt(R*) delta^2.5 (P3; counted in the energy balance of VERIFICATION.md D4).
-inline PetscReal ElasticEnergy(const PairMaterial &c, PetscReal delta, PetscReal Rstar) {
-  return 8.0 / 15.0 * c.Estar * std::sqrt(Rstar) * delta * delta * std::sqrt(delta);
-}
+// (8/15) E* sqrt(R*) delta^2.5 = (4/15) S_n delta^2 with S_n = 2 E* sqrt(R* delta) (P3; counted in
+// the energy balance of VERIFICATION.md D4).
+inline PetscReal ElasticEnergy(PetscReal Sn, PetscReal delta) { return 4.0 / 15.0 * Sn * delta * delta; }
 
 }  // namespace vofdem::hertz
 
@@ -178,15 +171,7 @@ inline void RollingTorque(const RollingParams &p, PetscReal Fn, PetscReal kn, Pe
     if (wmag > 0)
       for (int d = 0; d < 3; ++d) M[d] = -Mmax * w[d] / wmag;
   } else {
-    // Turn the spring into the tangent plane keeping its length, as the tangential spring.
-    const PetscReal old2 = spring[0] * spring[0] + spring[1] * spring[1] + spring[2] * spring[2];
-    if (old2 > 0) {
-      const PetscReal sn = spring[0] * n[0] + spring[1] * n[1] + spring[2] * n[2];
-      for (int d = 0; d < 3; ++d) spring[d] -= sn * n[d];
-      const PetscReal new2 = spring[0] * spring[0] + spring[1] * spring[1] + spring[2] * spring[2];
-      if (new2 > 0)
-        for (int d = 0; d < 3; ++d) spring[d] *= std::sqrt(old2 / new2);
-    }
+    ProjectKeepingLength(spring, n);  // as the tangential spring
     const PetscReal kr = 2.25 * kn * p.mu * p.mu * Rstar * Rstar;
     for (int d = 0; d < 3; ++d) spring[d] -= kr * w[d] * dt;
     const PetscReal s2 = spring[0] * spring[0] + spring[1] * spring[1] + spring[2] * spring[2];
@@ -195,8 +180,12 @@ inline void RollingTorque(const RollingParams &p, PetscReal Fn, PetscReal kn, Pe
       const PetscReal s = Mmax / std::sqrt(s2);
       for (int d = 0; d < 3; ++d) spring[d] *= s;
     }
-    const PetscReal damp = (model == Rolling::Epsd && !full) ? p.eta * 2 * std::sqrt(Ir * kr) : 0;
-    for (int d = 0; d < 3; ++d) M[d] = spring[d] - damp * w[d];
+    if (model == Rolling::Epsd && !full) {
+      const PetscReal damp = p.eta * 2 * std::sqrt(Ir * kr);
+      for (int d = 0; d < 3; ++d) M[d] = spring[d] - damp * w[d];
+    } else {
+      for (int d = 0; d < 3; ++d) M[d] = spring[d];
+    }
   }
 }
 

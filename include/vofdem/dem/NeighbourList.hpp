@@ -1,8 +1,10 @@
 // Verlet list of particle pairs closer than a cut-off (2 R_max + skin), built with linked cells and
-// reused until a particle has moved half the skin. Index j < nLocal is a local particle (then
-// j > i), j >= nLocal is ghost j - nLocal. Each pair carries its tangential spring (P3), so the
-// contact loop reads history from an array, not a hash; across rebuilds the springs of touching
-// pairs are carried by the particles' global ids (ContactHistory).
+// reused until a particle has moved half the skin. Indices below nLocal are local particles, the
+// others ghost (index - nLocal); at least one of each pair is local. Each pair is stored with the
+// lower global id first, the orientation its springs are seen from, so that a pair two ranks both
+// evaluate gives the same arithmetic there. Each pair carries its springs (P3, P5), so the contact
+// loop reads history from an array, not a hash; across rebuilds the springs of touching pairs are
+// carried by the particles' global ids (ContactHistory).
 #pragma once
 
 #include "vofdem/core/Random.hpp"
@@ -33,13 +35,16 @@ using ContactHistory = std::unordered_map<PairKey, std::array<PetscReal, kSpring
 class NeighbourList {
 public:
   // Builds the pairs among nLocal local and nGhost ghost positions within `cutoff`, binning in the
-  // box [lo - cutoff, hi + cutoff].
-  PetscErrorCode Build(PetscInt nLocal, const PetscReal *xLocal, PetscInt nGhost, const PetscReal *xGhost, PetscReal cutoff,
-                       const PetscReal lo[3], const PetscReal hi[3]);
+  // box [lo - cutoff, hi + cutoff]; radius and mass (local then ghost) give each pair its R*, m*.
+  PetscErrorCode Build(PetscInt nLocal, const PetscReal *xLocal, const PetscReal *rLocal, const PetscReal *mLocal, const PetscInt64 *idLocal,
+                       PetscInt nGhost, const PetscReal *xGhost, const PetscReal *rGhost, const PetscReal *mGhost, const PetscInt64 *idGhost,
+                       PetscReal cutoff, const PetscReal lo[3], const PetscReal hi[3]);
 
   size_t Size() const { return first.size(); }
   std::vector<PetscInt>  first, second;  // the pairs
   std::vector<PetscReal> spring;         // kSpringWidth per pair, as seen from the lower id
+  std::vector<char>      touching;       // the pair touched at the last evaluation (its springs may be non-zero)
+  std::vector<PetscReal> rstar, sqrtMstar;  // R* and sqrt(m*) of the pair: fixed while the list lives
 
 private:
   std::vector<PetscInt> cellStart_, cellOf_, order_;

@@ -24,6 +24,7 @@ inline constexpr const char *reference = "reference";          // m, position at
 inline constexpr const char *omega    = "omega";               // rad/s, angular velocity
 inline constexpr const char *torque   = "torque";              // N m, total torque of the last evaluation
 inline constexpr const char *wallSpring = "wall_spring";       // springs against each box face (6 faces x kWallSpringWidth)
+inline constexpr const char *wallTouch = "wall_touch";         // bit f set: touching face f (its springs may be non-zero)
 }  // namespace field
 
 // Every field of the local particles at once, for loops over particles (structure of arrays;
@@ -32,6 +33,7 @@ struct ParticleArrays {
   PetscInt    n = 0;
   PetscReal  *x = nullptr, *v = nullptr, *f = nullptr, *radius = nullptr, *mass = nullptr, *reference = nullptr;
   PetscReal  *omega = nullptr, *torque = nullptr, *wallSpring = nullptr;
+  PetscInt   *wallTouch = nullptr;
   PetscInt64 *id = nullptr;
 };
 
