@@ -35,6 +35,12 @@ PetscErrorCode Dem::Rebuild() {
     auto            &h   = springs_[{std::min(idi, idj), std::max(idi, idj)}];
     std::copy(s, s + kSpringWidth, h.begin());
   }
+  for (size_t k = 0; k < walls_.Size(); ++k) {
+    if (!walls_.touching[k]) continue;
+    const PetscReal *s = &walls_.spring[kSpringWidth * k];
+    auto            &h = springs_[PairKey::Wall(a.id[walls_.particle[k]], walls_.wall[k])];
+    std::copy(s, s + kSpringWidth, h.begin());
+  }
   PetscCall(swarm_.RestoreArrays(&a));
   // 2. Particles to their owners; 3. ghosts within the cut-off.
   PetscCall(swarm_.Migrate());
@@ -60,6 +66,22 @@ PetscErrorCode Dem::Rebuild() {
       list_.touching[k] = 1;
     }
   }
+  // 6. Wall candidates: particles that can reach a face before the next rebuild (they move at most
+  // half the skin); their springs from the carried ones.
+  walls_.Clear();
+  const PetscReal *glo = grid_->Lower(), *ghi = grid_->Upper();
+  for (PetscInt p = 0; p < a.n; ++p)
+    for (int face = 0; face < 6; ++face) {
+      const int       d    = face / 2;
+      const PetscReal dist = face % 2 ? ghi[d] - a.x[3 * p + d] : a.x[3 * p + d] - glo[d];
+      if (dist >= a.radius[p] + skin_) continue;
+      walls_.Add(p, face);
+      const auto it = springs_.empty() ? springs_.end() : springs_.find(PairKey::Wall(a.id[p], face));
+      if (it != springs_.end()) {
+        std::copy(it->second.begin(), it->second.end(), &walls_.spring[kSpringWidth * (walls_.Size() - 1)]);
+        walls_.touching.back() = 1;
+      }
+    }
   PetscCall(swarm_.RestoreArrays(&a));
   springs_.clear();
   ++rebuilds_;
@@ -67,8 +89,9 @@ PetscErrorCode Dem::Rebuild() {
 }
 
 // Each rank sends a spring to a neighbour when the neighbour now holds one of the pair as a ghost,
-// or when one of the pair has left this rank (it is somewhere among the neighbours). Receivers
-// keep what they lack; springs of pairs that are not in the new list are dropped at step 5.
+// or when one of the pair has left this rank (it is somewhere among the neighbours); a wall spring
+// goes only when its particle has left. Receivers keep what they lack; springs of contacts that are
+// not in the new lists are dropped at steps 5 and 6.
 PetscErrorCode Dem::ExchangeSprings(const std::vector<PetscInt64> &localIds) {
   const auto &ranks = halo_.Ranks();
   const auto &send  = halo_.SendLists();
@@ -84,8 +107,9 @@ PetscErrorCode Dem::ExchangeSprings(const std::vector<PetscInt64> &localIds) {
     std::unordered_set<PetscInt64> sent;
     for (PetscInt p : send[q]) sent.insert(localIds[p]);
     for (const auto &[key, s] : springs_) {
-      const bool left = !local.count(key.lo) || !local.count(key.hi);
-      if (!left && !sent.count(key.lo) && !sent.count(key.hi)) continue;
+      // A wall contact travels only with its particle; a pair also to where its partner is a ghost.
+      const bool left = !local.count(key.lo) || (!key.IsWall() && !local.count(key.hi));
+      if (!left && (key.IsWall() || (!sent.count(key.lo) && !sent.count(key.hi)))) continue;
       PetscReal rec[width];
       std::memcpy(&rec[0], &key.lo, sizeof(PetscInt64));
       std::memcpy(&rec[1], &key.hi, sizeof(PetscInt64));
@@ -139,46 +163,39 @@ PetscErrorCode Dem::ComputeForces(PetscReal dt) {
 template <hertz::Rolling RM>
 PetscErrorCode Dem::ComputeForcesWith(PetscReal dt) {
   ParticleArrays a;
-  constexpr int  W = kWallSpringWidth;
 
   PetscFunctionBeginUser;
   stats_ = LocalStats{};
   PetscCall(swarm_.GetArrays(&a));
+  for (PetscInt p = 0; p < a.n; ++p)
+    for (int d = 0; d < 3; ++d) a.f[3 * p + d] = a.mass[p] * gravity_[d], a.torque[3 * p + d] = 0;
+  // Box faces: spheres of infinite radius and mass (P3), R* = R, m* = m; only the candidates.
   const PetscReal *lo = grid_->Lower(), *hi = grid_->Upper();
-  for (PetscInt p = 0; p < a.n; ++p) {
-    PetscReal *f = &a.f[3 * p], *t = &a.torque[3 * p];
-    for (int d = 0; d < 3; ++d) f[d] = a.mass[p] * gravity_[d], t[d] = 0;
-    // Box faces: spheres of infinite radius and mass (P3), R* = R, m* = m.
+  for (size_t k = 0; k < walls_.Size(); ++k) {
+    const PetscInt  p = walls_.particle[k];
+    const int       face = walls_.wall[k], d = face / 2;
     const PetscReal r = a.radius[p], *x = &a.x[3 * p], *v = &a.v[3 * p], *w = &a.omega[3 * p];
-    for (int face = 0; face < 6; ++face) {
-      const int       d     = face / 2;
-      const PetscReal sign  = face % 2 ? -1 : 1;  // inward normal +e_d (lower face) or -e_d (upper)
-      const PetscReal delta = r - (face % 2 ? hi[d] - x[d] : x[d] - lo[d]);
-      const PetscInt  bit   = (PetscInt)1 << face;
-      if (delta <= 0) {
-        // Springs are cleared when a contact ends, not re-zeroed on every step (memory traffic).
-        if (a.wallTouch[p] & bit) std::fill(&a.wallSpring[6 * W * p + W * face], &a.wallSpring[6 * W * p + W * face] + W, 0);
-        a.wallTouch[p] &= ~bit;
-        continue;
-      }
-      a.wallTouch[p] |= bit;
-      PetscReal *xi = &a.wallSpring[6 * W * p + W * face];
-      PetscReal n[3] = {0, 0, 0}, rn[3], wxr[3], vrel[3], F[3], Ft[3], tq[3], M[3];
-      n[d] = sign;
-      for (int e = 0; e < 3; ++e) rn[e] = -r * n[e];  // centre to contact point
-      Cross(w, rn, wxr);
-      for (int e = 0; e < 3; ++e) vrel[e] = v[e] + wxr[e];
-      PetscReal       Sn;
-      const PetscReal Fn = hertz::Contact(wall_, delta, n, r, std::sqrt(a.mass[p]), vrel, dt, xi, F, Ft, &Sn);
-      Cross(rn, Ft, tq);
-      // Rolling against the face: w_rel = w, I_r = I + m R^2 = 1.4 m R^2 about the contact; the
-      // secant normal stiffness F_n,elastic / delta is (2/3) S_n.
-      hertz::RollingTorque<RM>(rollingParams_, Fn, 2.0 / 3.0 * Sn, r, 1.4 * a.mass[p] * r * r, n, w, dt, xi + 3, M);
-      for (int e = 0; e < 3; ++e) f[e] += F[e], t[e] += tq[e] + M[e], stats_.wallForce[face][e] -= F[e];
-      ++stats_.wallContacts;
-      stats_.elastic += hertz::ElasticEnergy(Sn, delta);
-      stats_.maxOverlap = std::max(stats_.maxOverlap, delta / (2 * r));
+    const PetscReal delta = r - (face % 2 ? hi[d] - x[d] : x[d] - lo[d]);
+    PetscReal      *xi    = &walls_.spring[kSpringWidth * k];
+    if (delta <= 0) {
+      if (walls_.touching[k]) std::fill(xi, xi + kSpringWidth, 0), walls_.touching[k] = 0;
+      continue;
     }
+    walls_.touching[k] = 1;
+    PetscReal n[3] = {0, 0, 0}, rn[3], wxr[3], vrel[3], F[3], Ft[3], tq[3], M[3], Sn;
+    n[d] = face % 2 ? -1 : 1;  // inward normal: +e_d on the lower face, -e_d on the upper
+    for (int e = 0; e < 3; ++e) rn[e] = -r * n[e];  // centre to contact point
+    Cross(w, rn, wxr);
+    for (int e = 0; e < 3; ++e) vrel[e] = v[e] + wxr[e];
+    const PetscReal Fn = hertz::Contact(wall_, delta, n, r, std::sqrt(a.mass[p]), vrel, dt, xi, F, Ft, &Sn);
+    Cross(rn, Ft, tq);
+    // Rolling against the face: w_rel = w, I_r = I + m R^2 = 1.4 m R^2 about the contact; the
+    // secant normal stiffness F_n,elastic / delta is (2/3) S_n.
+    hertz::RollingTorque<RM>(rollingParams_, Fn, 2.0 / 3.0 * Sn, r, 1.4 * a.mass[p] * r * r, n, w, dt, xi + 3, M);
+    for (int e = 0; e < 3; ++e) a.f[3 * p + e] += F[e], a.torque[3 * p + e] += tq[e] + M[e], stats_.wallForce[face][e] -= F[e];
+    ++stats_.wallContacts;
+    stats_.elastic += hertz::ElasticEnergy(Sn, delta);
+    stats_.maxOverlap = std::max(stats_.maxOverlap, delta / (2 * r));
   }
   const PetscInt n = a.n, ng = halo_.Count();
   hot_.resize(n + ng);
@@ -192,17 +209,22 @@ PetscErrorCode Dem::ComputeForcesWith(PetscReal dt) {
     for (int e = 0; e < 3; ++e) h.x[e] = halo_.x[3 * g + e], h.v[e] = halo_.v[3 * g + e], h.w[e] = halo_.omega[3 * g + e];
     h.r = halo_.radius[g], h.m = halo_.mass[g];
   }
+  PetscReal *__restrict__ force = a.f, *__restrict__ torque = a.torque;
   for (size_t k = 0; k < list_.Size(); ++k) {
     const PetscInt ia = list_.first[k], ib = list_.second[k];  // lower id first
     const PetscReal *xa = hot_[ia].x, *xb = hot_[ib].x;
     const PetscReal  dx[3] = {xa[0] - xb[0], xa[1] - xb[1], xa[2] - xb[2]};
     const PetscReal  dist2 = dx[0] * dx[0] + dx[1] * dx[1] + dx[2] * dx[2], rsum = hot_[ia].r + hot_[ib].r;
-    PetscReal       *xi = &list_.spring[kSpringWidth * k];
+    PetscReal       *stored = &list_.spring[kSpringWidth * k];
     if (dist2 >= rsum * rsum) {
-      if (list_.touching[k]) std::fill(xi, xi + kSpringWidth, 0), list_.touching[k] = 0;
+      if (list_.touching[k]) std::fill(stored, stored + kSpringWidth, 0), list_.touching[k] = 0;
       continue;
     }
     list_.touching[k] = 1;
+    // The springs are worked on in a local copy and stored once: through the pointer, every store
+    // would make the compiler reload what it might alias.
+    PetscReal xi[kSpringWidth];
+    std::copy(stored, stored + kSpringWidth, xi);
     // Copies, not references: stores into the force arrays below cannot alias them.
     const HotParticle A = hot_[ia], B = hot_[ib];
     const PetscReal   dist = std::sqrt(dist2), inv = 1 / dist, delta = rsum - dist, Rstar = list_.rstar[k];
@@ -218,17 +240,19 @@ PetscErrorCode Dem::ComputeForcesWith(PetscReal dt) {
     } else {
       M[0] = M[1] = M[2] = 0;
     }
+    std::copy(xi, xi + kSpringWidth, stored);
     // Torques: -R n x F_t on both, +M on A and -M on B; forces +F on A, -F on B; only local
     // particles are written.
     if (ia < n)
-      for (int e = 0; e < 3; ++e) a.f[3 * ia + e] += F[e], a.torque[3 * ia + e] += M[e] - A.r * nxF[e];
+      for (int e = 0; e < 3; ++e) force[3 * ia + e] += F[e], torque[3 * ia + e] += M[e] - A.r * nxF[e];
     if (ib < n)
-      for (int e = 0; e < 3; ++e) a.f[3 * ib + e] -= F[e], a.torque[3 * ib + e] -= M[e] + B.r * nxF[e];
+      for (int e = 0; e < 3; ++e) force[3 * ib + e] -= F[e], torque[3 * ib + e] -= M[e] + B.r * nxF[e];
     // A pair with a ghost is counted by both ranks: count it half on each.
     const bool both = ia < n && ib < n;
     stats_.pairContacts += both ? 2 : 1;
     stats_.elastic += (both ? 1.0 : 0.5) * hertz::ElasticEnergy(Sn, delta);
-    stats_.maxOverlap = std::max(stats_.maxOverlap, delta / (2 * std::min(A.r, B.r)));
+    const PetscReal twoRmin = 2 * std::min(A.r, B.r);
+    if (delta > stats_.maxOverlap * twoRmin) stats_.maxOverlap = delta / twoRmin;  // rarely: no division per contact
   }
   PetscCall(swarm_.RestoreArrays(&a));
   PetscFunctionReturn(0);

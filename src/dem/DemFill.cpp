@@ -72,8 +72,6 @@ PetscErrorCode Dem::Fill(std::uint64_t seed) {
       a.v[3 * p + d] = fillVelocity_[d] + fillSpread_ * (2 * random::Uniform(seed, (std::uint64_t)id, 3 + d) - 1);
       a.f[3 * p + d] = 0;
     }
-    for (int d = 0; d < 6 * kWallSpringWidth; ++d) a.wallSpring[6 * kWallSpringWidth * p + d] = 0;
-    a.wallTouch[p] = 0;
     for (int d = 0; d < 3; ++d) a.omega[3 * p + d] = a.torque[3 * p + d] = 0;
     a.radius[p] = radius_;
     a.mass[p]   = m;
@@ -139,8 +137,6 @@ PetscErrorCode Dem::ReadParticles() {
       a.omega[3 * p + d] = rows[k][6 + d];
       a.f[3 * p + d] = a.torque[3 * p + d] = 0;
     }
-    for (int d = 0; d < 6 * kWallSpringWidth; ++d) a.wallSpring[6 * kWallSpringWidth * p + d] = 0;
-    a.wallTouch[p] = 0;
     a.radius[p] = radius_;
     a.mass[p]   = m;
     a.id[p]     = start + (PetscInt64)k;

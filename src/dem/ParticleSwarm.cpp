@@ -20,8 +20,7 @@ PetscErrorCode ParticleSwarm::Create(const Grid &grid) {
   PetscCall(DMSwarmRegisterPetscDatatypeField(swarm_, field::reference, 3, PETSC_REAL));
   PetscCall(DMSwarmRegisterPetscDatatypeField(swarm_, field::omega, 3, PETSC_REAL));
   PetscCall(DMSwarmRegisterPetscDatatypeField(swarm_, field::torque, 3, PETSC_REAL));
-  PetscCall(DMSwarmRegisterPetscDatatypeField(swarm_, field::wallSpring, 6 * kWallSpringWidth, PETSC_REAL));
-  PetscCall(DMSwarmRegisterPetscDatatypeField(swarm_, field::wallTouch, 1, PETSC_INT));
+
   PetscCall(DMSwarmFinalizeFieldRegister(swarm_));
   PetscCall(DMSwarmSetLocalSizes(swarm_, 0, 64));
   PetscFunctionReturn(0);
@@ -45,15 +44,13 @@ PetscErrorCode ParticleSwarm::GetArrays(ParticleArrays *a) const {
   PetscCall(DMSwarmGetField(swarm_, field::reference, nullptr, nullptr, (void **)&a->reference));
   PetscCall(DMSwarmGetField(swarm_, field::omega, nullptr, nullptr, (void **)&a->omega));
   PetscCall(DMSwarmGetField(swarm_, field::torque, nullptr, nullptr, (void **)&a->torque));
-  PetscCall(DMSwarmGetField(swarm_, field::wallSpring, nullptr, nullptr, (void **)&a->wallSpring));
-  PetscCall(DMSwarmGetField(swarm_, field::wallTouch, nullptr, nullptr, (void **)&a->wallTouch));
+
   PetscFunctionReturn(0);
 }
 
 PetscErrorCode ParticleSwarm::RestoreArrays(ParticleArrays *a) const {
   PetscFunctionBeginUser;
-  PetscCall(DMSwarmRestoreField(swarm_, field::wallTouch, nullptr, nullptr, (void **)&a->wallTouch));
-  PetscCall(DMSwarmRestoreField(swarm_, field::wallSpring, nullptr, nullptr, (void **)&a->wallSpring));
+
   PetscCall(DMSwarmRestoreField(swarm_, field::torque, nullptr, nullptr, (void **)&a->torque));
   PetscCall(DMSwarmRestoreField(swarm_, field::omega, nullptr, nullptr, (void **)&a->omega));
   PetscCall(DMSwarmRestoreField(swarm_, field::reference, nullptr, nullptr, (void **)&a->reference));

@@ -89,6 +89,7 @@ private:
   ParticleSwarm swarm_;
   Halo          halo_;
   NeighbourList list_;
+  WallList      walls_;
   ContactHistory springs_;  // only during Rebuild()
   LocalStats    stats_;
   DemMaterial   material_;

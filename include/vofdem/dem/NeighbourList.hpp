@@ -22,10 +22,13 @@ namespace vofdem {
 inline constexpr int kSpringWidth = 6;
 
 // Springs of touching pairs keyed by the pair of global ids (lower id first), stored as seen from
-// the lower id. Lives only while lists are rebuilt and particles migrate.
+// the lower id; a wall contact is keyed by (particle id, -1 - wall). Lives only while lists are
+// rebuilt and particles migrate.
 struct PairKey {
   PetscInt64 lo, hi;
   bool operator==(const PairKey &o) const { return lo == o.lo && hi == o.hi; }
+  bool IsWall() const { return hi < 0; }
+  static PairKey Wall(PetscInt64 id, int wall) { return {id, -1 - (PetscInt64)wall}; }
 };
 struct PairKeyHash {
   size_t operator()(const PairKey &k) const { return (size_t)random::Mix(random::Mix((std::uint64_t)k.lo) ^ (std::uint64_t)k.hi); }
@@ -50,4 +53,20 @@ private:
   std::vector<PetscInt> cellStart_, cellOf_, order_;
 };
 
+// Candidate wall contacts, built with the neighbour list: every local particle within its radius
+// plus the skin of a wall, so the contact loop visits those only. Each entry carries its springs.
+struct WallList {
+  std::vector<PetscInt>  particle;
+  std::vector<int>       wall;
+  std::vector<char>      touching;
+  std::vector<PetscReal> spring;  // kSpringWidth per entry
+  size_t                 Size() const { return particle.size(); }
+  void                   Clear() { particle.clear(), wall.clear(), touching.clear(), spring.clear(); }
+  void                   Add(PetscInt p, int w) {
+    particle.push_back(p), wall.push_back(w), touching.push_back(0);
+    spring.insert(spring.end(), kSpringWidth, 0);
+  }
+};
+
 }  // namespace vofdem
+

@@ -10,9 +10,6 @@
 namespace vofdem {
 
 // Names of the swarm fields (each one contiguous array; vectors are 3 values per particle).
-// Per box face: tangential spring (m) and rolling spring (N m), x,y,z each.
-inline constexpr int kWallSpringWidth = 6;
-
 namespace field {
 inline constexpr const char *position = DMSwarmPICField_coor;  // m
 inline constexpr const char *velocity = "velocity";            // m/s
@@ -23,8 +20,6 @@ inline constexpr const char *id       = "id";                  // global id, Pet
 inline constexpr const char *reference = "reference";          // m, position at the last migration
 inline constexpr const char *omega    = "omega";               // rad/s, angular velocity
 inline constexpr const char *torque   = "torque";              // N m, total torque of the last evaluation
-inline constexpr const char *wallSpring = "wall_spring";       // springs against each box face (6 faces x kWallSpringWidth)
-inline constexpr const char *wallTouch = "wall_touch";         // bit f set: touching face f (its springs may be non-zero)
 }  // namespace field
 
 // Every field of the local particles at once, for loops over particles (structure of arrays;
@@ -32,8 +27,7 @@ inline constexpr const char *wallTouch = "wall_touch";         // bit f set: tou
 struct ParticleArrays {
   PetscInt    n = 0;
   PetscReal  *x = nullptr, *v = nullptr, *f = nullptr, *radius = nullptr, *mass = nullptr, *reference = nullptr;
-  PetscReal  *omega = nullptr, *torque = nullptr, *wallSpring = nullptr;
-  PetscInt   *wallTouch = nullptr;
+  PetscReal  *omega = nullptr, *torque = nullptr;
   PetscInt64 *id = nullptr;
 };
 
