@@ -52,3 +52,8 @@ vofdem_bad_input(fill_cannot_fit    "option -dem_fill_count: cannot fit 100000" 
 vofdem_bad_input(fill_outside_box   "the region .* must be non-empty and inside the box" ${_dem} -dem_fill_count 1 -dem_fill_upper 0.01,0.01,0.5)
 vofdem_bad_input(fill_spacing       "option -dem_fill_spacing: .* less than a particle diameter" ${_dem} -dem_fill_spacing 1e-4)
 vofdem_bad_input(output_dir         "option -output_dir: cannot create"            ${_dem} -output_dir /proc/vofdem)
+vofdem_bad_input(particles_missing  "option -dem_particles_file: cannot open"      ${_dem} -dem_particles_file ${_bad}/none.csv)
+vofdem_bad_input(particles_malformed "particles-malformed\\.csv:3: expected 6 or 9 comma-separated numbers" ${_dem} -dem_radius 1e-3 -dem_particles_file ${_bad}/particles-malformed.csv)
+vofdem_bad_input(particle_outside   "particles-outside\\.csv:2: the particle at .* is not inside the box" ${_dem} -dem_radius 1e-3 -dem_particles_file ${_bad}/particles-outside.csv)
+vofdem_bad_input(rolling_unknown    "option -dem_rolling: unknown name 'epsd3'"     ${_dem} -dem_rolling epsd3)
+vofdem_bad_input(rolling_two        "option -dem_rolling: give one model"          ${_dem} -dem_rolling cdt,epsd)
