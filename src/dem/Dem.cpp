@@ -86,8 +86,19 @@ PetscErrorCode Dem::SetUp(const Grid &grid, const PetscReal gravity[3], std::uin
   PetscFunctionReturn(0);
 }
 
-// Velocity Verlet for translation and rotation (spheres: I = 2/5 m R^2). Forces are evaluated with
-// the half-step velocities, as in LIGGGHTS.
+// Half a velocity-Verlet kick: v += dt/2 F/m, w += dt/2 T/I with I = 2/5 m R^2 (spheres).
+static void HalfKick(const ParticleArrays &a, PetscReal dt) {
+  for (PetscInt p = 0; p < a.n; ++p) {
+    const PetscReal h = 0.5 * dt / a.mass[p], hI = h / (0.4 * a.radius[p] * a.radius[p]);
+    for (int d = 0; d < 3; ++d) {
+      a.v[3 * p + d] += h * a.f[3 * p + d];
+      a.omega[3 * p + d] += hI * a.torque[3 * p + d];
+    }
+  }
+}
+
+// Velocity Verlet for translation and rotation. Forces are evaluated with the half-step
+// velocities, as in LIGGGHTS.
 PetscErrorCode Dem::Step(PetscReal dt) {
   ParticleArrays a;
   PetscBool      rebuild;
@@ -95,14 +106,8 @@ PetscErrorCode Dem::Step(PetscReal dt) {
   PetscFunctionBeginUser;
   PetscCall(PetscLogEventBegin(evIntegrate_, 0, 0, 0, 0));
   PetscCall(swarm_.GetArrays(&a));
-  for (PetscInt p = 0; p < a.n; ++p) {
-    const PetscReal h = 0.5 * dt / a.mass[p], hI = h / (0.4 * a.radius[p] * a.radius[p]);
-    for (int d = 0; d < 3; ++d) {
-      a.v[3 * p + d] += h * a.f[3 * p + d];
-      a.omega[3 * p + d] += hI * a.torque[3 * p + d];
-      a.x[3 * p + d] += dt * a.v[3 * p + d];
-    }
-  }
+  HalfKick(a, dt);
+  for (PetscInt k = 0; k < 3 * a.n; ++k) a.x[k] += dt * a.v[k];
   PetscCall(swarm_.RestoreArrays(&a));
   PetscCall(swarm_.NeedsRebuild(0.5 * skin_, &rebuild));
   PetscCall(PetscLogEventEnd(evIntegrate_, 0, 0, 0, 0));
@@ -122,13 +127,7 @@ PetscErrorCode Dem::Step(PetscReal dt) {
   PetscCall(PetscLogEventEnd(evForces_, 0, 0, 0, 0));
   PetscCall(PetscLogEventBegin(evIntegrate_, 0, 0, 0, 0));
   PetscCall(swarm_.GetArrays(&a));
-  for (PetscInt p = 0; p < a.n; ++p) {
-    const PetscReal h = 0.5 * dt / a.mass[p], hI = h / (0.4 * a.radius[p] * a.radius[p]);
-    for (int d = 0; d < 3; ++d) {
-      a.v[3 * p + d] += h * a.f[3 * p + d];
-      a.omega[3 * p + d] += hI * a.torque[3 * p + d];
-    }
-  }
+  HalfKick(a, dt);
   PetscCall(swarm_.RestoreArrays(&a));
   PetscCall(PetscLogEventEnd(evIntegrate_, 0, 0, 0, 0));
   PetscFunctionReturn(0);
@@ -193,8 +192,10 @@ PetscErrorCode Dem::View(PetscViewer viewer) const {
   PetscCall(PetscViewerASCIIPrintf(viewer, "dem: %" PetscInt_FMT " spheres of radius %g m, density %g kg/m^3, E %g Pa, nu %g, e %g, mu %g; Rayleigh time %g s; skin %g m\n",
                                    inserted_, (double)radius_, (double)material_.density, (double)material_.youngs, (double)material_.poisson,
                                    (double)material_.restitution, (double)material_.friction, (double)rayleighTime_, (double)skin_));
-  PetscCall(PetscViewerASCIIPrintf(viewer, "dem: contacts: Hertz-Mindlin with damping, tangential springs and Coulomb friction between spheres and with the box faces (P3); "
-                                           "rolling resistance, adhesion, STL walls and periodic boundaries are not implemented yet\n"));
+  static const char *const rolling[] = {"none", "constant torque", "EPSD", "EPSD2 (LIGGGHTS)"};
+  PetscCall(PetscViewerASCIIPrintf(viewer, "dem: contacts: Hertz-Mindlin with damping, tangential springs and Coulomb friction between spheres and with the box faces (P3)%s; rolling resistance: %s, mu_r %g (P5)\n",
+                                   limitForce_ ? ", normal force clipped at zero" : "", rolling[(int)rolling_], (double)rollingParams_.mu));
+  PetscCall(PetscViewerASCIIPrintf(viewer, "dem: this build has no adhesion, STL or moving walls, periodic boundaries, several particle types or sizes (DEM engine issue)\n"));
   PetscFunctionReturn(0);
 }
 
