@@ -57,3 +57,4 @@ vofdem_bad_input(particles_malformed "particles-malformed\\.csv:3: expected 6 or
 vofdem_bad_input(particle_outside   "particles-outside\\.csv:2: the particle at .* is not inside the box" ${_dem} -dem_radius 1e-3 -dem_particles_file ${_bad}/particles-outside.csv)
 vofdem_bad_input(rolling_unknown    "option -dem_rolling: unknown name 'epsd3'"     ${_dem} -dem_rolling epsd3)
 vofdem_bad_input(rolling_two        "option -dem_rolling: give one model"          ${_dem} -dem_rolling cdt,epsd)
+vofdem_bad_input(grid_ranks         "option -grid_ranks: 3 x 1 x 1 does not fit the 2 ranks" ${_dem} -grid_ranks 3,1,1)

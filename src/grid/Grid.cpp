@@ -16,14 +16,17 @@ PetscErrorCode Grid::SetFromOptions(MPI_Comm comm) {
     PetscCall(opt.IntVector("-cells", "Number of cells in x,y,z", cells_, 3, 1, 1 << 20));
     PetscCall(opt.RealVector("-lower", "Lower corner of the box x,y,z", "m", lower_, 3));
     PetscCall(opt.RealVector("-upper", "Upper corner of the box x,y,z", "m", upper_, 3));
-    PetscCall(opt.IntVector("-ranks", "Ranks per direction x,y,z (0,0,0: PETSc decides), e.g. 2,1,1 to cut a flat bed vertically", ranks_, 3, 0, 1 << 20));
+    PetscCall(opt.IntVector("-ranks", "Ranks per direction x,y,z; 0: PETSc decides that direction (0,1,1: vertical slabs, as LIGGGHTS' processors * 1 1)", ranks_, 3, 0, 1 << 20));
   }
   PetscOptionsEnd();
   PetscMPIInt size;
   PetscCallMPI(MPI_Comm_size(comm, &size));
-  const PetscInt product = ranks_[0] * ranks_[1] * ranks_[2];
-  if ((ranks_[0] || ranks_[1] || ranks_[2]) && product != size)
-    VofdemInputError(comm, "option -grid_ranks: %" PetscInt_FMT " x %" PetscInt_FMT " x %" PetscInt_FMT " is not the %d ranks of the run", ranks_[0], ranks_[1], ranks_[2], (int)size);
+  PetscInt product = 1;
+  bool     decides = false;
+  for (int d = 0; d < 3; ++d) ranks_[d] ? (void)(product *= ranks_[d]) : (void)(decides = true);
+  if (decides ? size % product != 0 : product != size)
+    VofdemInputError(comm, "option -grid_ranks: %" PetscInt_FMT " x %" PetscInt_FMT " x %" PetscInt_FMT " does not fit the %d ranks of the run", ranks_[0], ranks_[1],
+                     ranks_[2], (int)size);
   for (int d = 0; d < 3; ++d)
     if (ranks_[d] > cells_[d])
       VofdemInputError(comm, "option -grid_ranks: %" PetscInt_FMT " ranks in %c but only %" PetscInt_FMT " cells", ranks_[d], "xyz"[d], cells_[d]);
