@@ -61,8 +61,7 @@ static PetscErrorCode Run() {
       for (int f = 0; f < 6; ++f) load -= s.wallForce[f][2] / averageSteps;
     }
   }
-  const vofdem::DemMaterial &mat = dem->Material();
-  const PetscReal r = dem->Radius(), weight = s.particles * mat.density * 4.0 / 3.0 * PETSC_PI * r * r * r * 9.81;
+  const PetscReal weight = s.mass * 9.81;
   const bool      rest = s.kinetic + s.rotational < 1e-7, balanced = PetscAbsReal(load - weight) < 5e-3 * weight,
              packed = s.coordination > 3 && s.coordination < 6;
   PetscCall(PetscPrintf(PETSC_COMM_WORLD, "after %d more steps: %d particles; nearly at rest (kinetic energy below 1e-7 J): %s; mean wall load over the last %d steps equals the weight within 0.5 %%: %s; mean coordination number in (3, 6): %s\n",
@@ -97,4 +96,25 @@ int main(int argc, char **argv) {
     nsize: 4
     args: -grid_ranks 2,2,1
     output_file: output/ex01_box_drop_1.out
+  # A 2:1 mix by equal mass (8 small spheres to 1 large by number) in a narrower, taller box, so that
+  # it still makes a bed several layers deep; R_min halves the Rayleigh step, so settling takes twice
+  # the steps.
+  test:
+    suffix: mix_1
+    nsize: 1
+    args: -dem_fill_radii 1e-3,5e-4 -dem_fill_mass_fractions 0.5,0.5 -settle_steps 60000 -average_steps 10000
+          -grid_cells 4,4,8 -grid_upper 0.01,0.01,0.04 -dem_fill_upper 0.01,0.01,0.04
+    output_file: output/ex01_box_drop_mix.out
+  test:
+    suffix: mix_2
+    nsize: 2
+    args: -dem_fill_radii 1e-3,5e-4 -dem_fill_mass_fractions 0.5,0.5 -settle_steps 60000 -average_steps 10000
+          -grid_cells 4,4,8 -grid_upper 0.01,0.01,0.04 -dem_fill_upper 0.01,0.01,0.04 -grid_ranks 2,1,1
+    output_file: output/ex01_box_drop_mix.out
+  test:
+    suffix: mix_4
+    nsize: 4
+    args: -dem_fill_radii 1e-3,5e-4 -dem_fill_mass_fractions 0.5,0.5 -settle_steps 60000 -average_steps 10000
+          -grid_cells 4,4,8 -grid_upper 0.01,0.01,0.04 -dem_fill_upper 0.01,0.01,0.04 -grid_ranks 2,2,1
+    output_file: output/ex01_box_drop_mix.out
 TEST*/

@@ -197,6 +197,36 @@ PetscErrorCode OptionReader::IntVector(const char *name, const char *text, Petsc
   PetscFunctionReturn(0);
 }
 
+PetscErrorCode OptionReader::RealList(const char *name, const char *text, const char *unit, std::vector<PetscReal> *value, PetscInt maxCount,
+                                      RealRange range, PetscBool *set) {
+  std::string joined;
+  PetscBool   given = PETSC_FALSE;
+
+  PetscFunctionBeginUser;
+  {
+    std::ostringstream s;
+    for (size_t i = 0; i < value->size(); ++i) s << (i ? "," : "") << (*value)[i];
+    joined = s.str();
+  }
+  PetscCall(String(name, HelpText(text, unit).c_str(), &joined, &given));
+  if (given) {
+    const auto parts = SplitList(joined);
+    if (parts.empty() || (PetscInt)parts.size() > maxCount)
+      VofdemInputError(PETSC_COMM_WORLD, "option %s: needs 1 to %" PetscInt_FMT " comma-separated numbers, got '%s'", FullName(name).c_str(), maxCount,
+                       joined.c_str());
+    value->clear();
+    for (const auto &p : parts) {
+      PetscReal v;
+      if (!ParseReal(p, &v)) VofdemInputError(PETSC_COMM_WORLD, "option %s: '%s' is not a number", FullName(name).c_str(), p.c_str());
+      if (!range.Contains(v))
+        VofdemInputError(PETSC_COMM_WORLD, "option %s: %s is out of range, must be in %s", FullName(name).c_str(), p.c_str(), range.Describe().c_str());
+      value->push_back(v);
+    }
+  }
+  if (set) *set = given;
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode OptionReader::NameList(const char *name, const char *text, const std::vector<std::string> &allowed,
                                       std::vector<std::string> *value, PetscBool *set) {
   std::string joined;

@@ -50,15 +50,24 @@ PetscErrorCode Dem::SetFromOptions(MPI_Comm comm) {
     PetscCall(opt.Real("-fill_jitter", "Random displacement of lattice points, fraction of the free gap", "-", &fillJitter_, RealRange::Closed(0, 1)));
     PetscCall(opt.Int("-fill_count", "Number of particles to place on the fill lattice (0: none, -1: as many as the region holds)", &fillCount_, -1));
     PetscCall(opt.RealVector("-fill_velocity", "Initial velocity of inserted particles", "m/s", fillVelocity_, 3));
+    fillRadii_ = {radius_};
+    PetscCall(opt.RealList("-fill_radii", "Radii of the fill's discrete size distribution (default: -dem_radius)", "m", &fillRadii_, 64, RealRange::Positive()));
+    fillMassFractions_.assign(fillRadii_.size(), 1.0 / fillRadii_.size());
+    PetscBool fractionsSet = PETSC_FALSE;
+    PetscCall(opt.RealList("-fill_mass_fractions", "Mass fraction of each fill radius, normalised to sum 1 (default: equal)", "-", &fillMassFractions_, 64,
+                           RealRange::Positive(), &fractionsSet));
+    if (fillMassFractions_.size() != fillRadii_.size())
+      VofdemInputError(comm, "option -dem_fill_mass_fractions: %d fractions for %d radii in -dem_fill_radii", (int)fillMassFractions_.size(), (int)fillRadii_.size());
     PetscCall(opt.Real("-fill_velocity_spread", "Random part of the initial velocity: each component uniform in [-spread, spread]", "m/s", &fillSpread_, RealRange::NonNegative()));
-    PetscCall(opt.String("-save_particles", "Write all particles at the end of the run to this CSV (the format -dem_particles_file reads)", &savePath_));
-    PetscCall(opt.String("-particles_file", "CSV of particles to insert after the fill: a header line, then x,y,z,vx,vy,vz[,wx,wy,wz] in m, m/s, rad/s", &particlesFile_));
+    PetscCall(opt.String("-save_particles", "Write all particles at the end of the run to this CSV (the format -dem_particles_file reads, with radius)", &savePath_));
+    PetscCall(opt.String("-particles_file", "CSV of particles to insert after the fill; the header names the columns: x,y,z required, vx,vy,vz,wx,wy,wz,radius optional (m, m/s, rad/s)", &particlesFile_));
   }
   PetscOptionsEnd();
-  if (fillSpacing_ == 0) fillSpacing_ = 2.2 * radius_;
-  if (fillSpacing_ < 2 * radius_)
-    VofdemInputError(comm, "option -dem_fill_spacing: %g m is less than a particle diameter (%g m): particles would overlap", (double)fillSpacing_,
-                     (double)(2 * radius_));
+  const PetscReal rFillMax = *std::max_element(fillRadii_.begin(), fillRadii_.end());
+  if (fillSpacing_ == 0) fillSpacing_ = 2.2 * rFillMax;
+  if (fillSpacing_ < 2 * rFillMax)
+    VofdemInputError(comm, "option -dem_fill_spacing: %g m is less than the largest particle diameter (%g m): particles would overlap", (double)fillSpacing_,
+                     (double)(2 * rFillMax));
   PetscFunctionReturn(0);
 }
 
@@ -69,7 +78,6 @@ PetscErrorCode Dem::SetUp(const Grid &grid, const PetscReal gravity[3], std::uin
   const DemMaterial &m = material_;
   pair_         = hertz::MakePairMaterial(m.youngs, m.poisson, m.youngs, m.poisson, m.restitution, m.friction, limitForce_);
   wall_         = hertz::MakePairMaterial(m.youngs, m.poisson, wallYoungs_, wallPoisson_, m.restitution, wallFriction_, limitForce_);
-  rayleighTime_ = hertz::RayleighTime(radius_, m.density, m.youngs, m.poisson);
   PetscClassId classId;
   PetscCall(PetscClassIdRegister("DEM", &classId));
   PetscCall(PetscLogEventRegister("DEMRebuild", classId, &evRebuild_));
@@ -81,6 +89,17 @@ PetscErrorCode Dem::SetUp(const Grid &grid, const PetscReal gravity[3], std::uin
   PetscCall(Fill(seed));
   PetscCall(ReadParticles());
   PetscCall(swarm_.GlobalCount(&inserted_));
+  {  // The sizes present: R_min sets the Rayleigh time (P9), R_max the neighbour cut-off.
+    ParticleArrays a;
+    PetscReal      range[2] = {-PETSC_MAX_REAL, -PETSC_MAX_REAL}, global[2];  // -min, max
+    PetscCall(swarm_.GetArrays(&a));
+    for (PetscInt p = 0; p < a.n; ++p) range[0] = std::max(range[0], -a.radius[p]), range[1] = std::max(range[1], a.radius[p]);
+    PetscCall(swarm_.RestoreArrays(&a));
+    PetscCallMPI(MPI_Allreduce(range, global, 2, MPIU_REAL, MPIU_MAX, comm_));
+    rMin_ = inserted_ ? -global[0] : radius_;
+    rMax_ = inserted_ ? global[1] : radius_;
+  }
+  rayleighTime_ = hertz::RayleighTime(rMin_, m.density, m.youngs, m.poisson);
   PetscCall(Rebuild());
   PetscCall(ComputeForces(0));
   PetscFunctionReturn(0);
@@ -135,7 +154,7 @@ PetscErrorCode Dem::Step(PetscReal dt) {
 
 PetscErrorCode Dem::Summarize(DemSummary *s) const {
   ParticleArrays a;
-  PetscReal      sums[3 + 18] = {0}, global[3 + 18];
+  PetscReal      sums[3 + 18 + 1] = {0}, global[3 + 18 + 1];
   PetscInt       counts[2] = {stats_.pairContacts, stats_.wallContacts}, gcounts[2];
 
   PetscFunctionBeginUser;
@@ -144,18 +163,20 @@ PetscErrorCode Dem::Summarize(DemSummary *s) const {
     const PetscReal *v = &a.v[3 * p], *w = &a.omega[3 * p];
     sums[0] += 0.5 * a.mass[p] * (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
     sums[1] += 0.2 * a.mass[p] * a.radius[p] * a.radius[p] * (w[0] * w[0] + w[1] * w[1] + w[2] * w[2]);
+    sums[3 + 18] += a.mass[p];
   }
   PetscCall(swarm_.RestoreArrays(&a));
   sums[2] = stats_.elastic;
   for (int f = 0; f < 6; ++f)
     for (int d = 0; d < 3; ++d) sums[3 + 3 * f + d] = stats_.wallForce[f][d];
-  PetscCallMPI(MPI_Allreduce(sums, global, 21, MPIU_REAL, MPIU_SUM, comm_));
+  PetscCallMPI(MPI_Allreduce(sums, global, 22, MPIU_REAL, MPIU_SUM, comm_));
   PetscCallMPI(MPI_Allreduce(counts, gcounts, 2, MPIU_INT, MPI_SUM, comm_));
   PetscCallMPI(MPI_Allreduce(&stats_.maxOverlap, &s->maxOverlap, 1, MPIU_REAL, MPIU_MAX, comm_));
   PetscCall(swarm_.GlobalCount(&s->particles));
   s->kinetic      = global[0];
   s->rotational   = global[1];
   s->elastic      = global[2];
+  s->mass         = global[3 + 18];
   s->pairContacts = gcounts[0] / 2;  // each pair was counted twice (see ComputeForces)
   s->wallContacts = gcounts[1];
   s->coordination = s->particles ? (PetscReal)gcounts[0] / s->particles : 0;
@@ -189,8 +210,8 @@ PetscErrorCode Dem::FindParticle(std::int64_t id, PetscReal x[3], PetscReal v[3]
 
 PetscErrorCode Dem::View(PetscViewer viewer) const {
   PetscFunctionBeginUser;
-  PetscCall(PetscViewerASCIIPrintf(viewer, "dem: %" PetscInt_FMT " spheres of radius %g m, density %g kg/m^3, E %g Pa, nu %g, e %g, mu %g; Rayleigh time %g s; skin %g m\n",
-                                   inserted_, (double)radius_, (double)material_.density, (double)material_.youngs, (double)material_.poisson,
+  PetscCall(PetscViewerASCIIPrintf(viewer, "dem: %" PetscInt_FMT " spheres of radius %g to %g m, density %g kg/m^3, E %g Pa, nu %g, e %g, mu %g; Rayleigh time %g s; skin %g m\n",
+                                   inserted_, (double)rMin_, (double)rMax_, (double)material_.density, (double)material_.youngs, (double)material_.poisson,
                                    (double)material_.restitution, (double)material_.friction, (double)rayleighTime_, (double)skin_));
   static const char *const rolling[] = {"none", "constant torque", "EPSD", "EPSD2 (LIGGGHTS)"};
   PetscCall(PetscViewerASCIIPrintf(viewer, "dem: contacts: Hertz-Mindlin with damping, tangential springs and Coulomb friction between spheres and with the box faces (P3)%s; rolling resistance: %s, mu_r %g (P5)\n",

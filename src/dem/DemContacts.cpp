@@ -26,13 +26,12 @@ PetscErrorCode Dem::Rebuild() {
   // 1. Springs of touching pairs, by the pair's global ids (local indices change below).
   springs_.clear();
   PetscCall(swarm_.GetArrays(&a));
-  const PetscInt n = a.n;
+  // Either index of a pair may be a ghost (pairs are stored lower id first).
+  auto idOf = [&](PetscInt j) { return j < a.n ? a.id[j] : halo_.id[j - a.n]; };
   for (size_t k = 0; k < list_.Size(); ++k) {
     const PetscReal *s = &list_.spring[kSpringWidth * k];
     if (!list_.touching[k] || std::all_of(s, s + kSpringWidth, [](PetscReal v) { return v == 0; })) continue;
-    const PetscInt   i = list_.first[k], j = list_.second[k];
-    const PetscInt64 idi = a.id[i], idj = j < n ? a.id[j] : halo_.id[j - n];
-    auto            &h   = springs_[{std::min(idi, idj), std::max(idi, idj)}];
+    auto &h = springs_[{idOf(list_.first[k]), idOf(list_.second[k])}];  // lower id first
     std::copy(s, s + kSpringWidth, h.begin());
   }
   for (size_t k = 0; k < walls_.Size(); ++k) {
@@ -44,7 +43,7 @@ PetscErrorCode Dem::Rebuild() {
   PetscCall(swarm_.RestoreArrays(&a));
   // 2. Particles to their owners; 3. ghosts within the cut-off.
   PetscCall(swarm_.Migrate());
-  const PetscReal cutoff = 2 * radius_ + skin_;
+  const PetscReal cutoff = 2 * rMax_ + skin_;
   PetscCall(swarm_.GetArrays(&a));
   PetscCall(halo_.Build(a, a.omega, cutoff));
   localIds.assign(a.id, a.id + a.n);
@@ -58,9 +57,7 @@ PetscErrorCode Dem::Rebuild() {
   PetscCall(list_.Build(a.n, a.x, a.radius, a.mass, a.id, halo_.Count(), halo_.x.data(), halo_.radius.data(), halo_.mass.data(), halo_.id.data(),
                         cutoff, lo, hi));
   for (size_t k = 0; k < list_.Size() && !springs_.empty(); ++k) {
-    const PetscInt   i = list_.first[k], j = list_.second[k];
-    const PetscInt64 idi = a.id[i], idj = j < a.n ? a.id[j] : halo_.id[j - a.n];
-    const auto       it  = springs_.find({std::min(idi, idj), std::max(idi, idj)});
+    const auto it = springs_.find({idOf(list_.first[k]), idOf(list_.second[k])});  // lower id first
     if (it != springs_.end()) {
       std::copy(it->second.begin(), it->second.end(), &list_.spring[kSpringWidth * k]);
       list_.touching[k] = 1;

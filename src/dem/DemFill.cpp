@@ -14,10 +14,11 @@
 
 namespace vofdem {
 
-// Lattice fill: centres at lower + R + j + i*s, j the jitter amplitude, so that jittered particles
-// neither overlap each other nor leave the region. Every rank walks the same lattice and keeps
-// the points it owns; ids and jitter depend only on the lattice index and the seed, so the same
-// particles result on any rank count.
+// Lattice fill: centres at lower + R + j + i*s, R the largest fill radius and j the jitter
+// amplitude, so that jittered particles neither overlap each other nor leave the region. Every rank
+// walks the same lattice and keeps the points it owns; ids, jitter and each particle's radius
+// (drawn from the discrete distribution: number fractions n_i ~ mass fraction_i / r_i^3) depend
+// only on the lattice index and the seed, so the same particles result on any rank count.
 PetscErrorCode Dem::Fill(std::uint64_t seed) {
   PetscReal lo[3], hi[3];
   PetscInt  n[3];
@@ -31,10 +32,20 @@ PetscErrorCode Dem::Fill(std::uint64_t seed) {
       VofdemInputError(comm_, "options -dem_fill_lower/-dem_fill_upper: the region [%g, %g] in %c must be non-empty and inside the box [%g, %g]",
                        (double)lo[d], (double)hi[d], "xyz"[d], (double)grid_->Lower()[d], (double)grid_->Upper()[d]);
   }
-  const PetscReal jitter = fillJitter_ * (fillSpacing_ - 2 * radius_) / 2;
+  const PetscReal rFill  = *std::max_element(fillRadii_.begin(), fillRadii_.end());
+  const PetscReal jitter = fillJitter_ * (fillSpacing_ - 2 * rFill) / 2;
+  std::vector<PetscReal> cdf(fillRadii_.size());  // cumulative number fractions
+  for (size_t i = 0; i < cdf.size(); ++i) cdf[i] = (i ? cdf[i - 1] : 0) + fillMassFractions_[i] / std::pow(fillRadii_[i], 3);
+  for (auto &c : cdf) c /= cdf.back();
+  auto radiusOf = [&](PetscInt64 id) {
+    const double u = random::Uniform(seed, (std::uint64_t)id, 6);
+    size_t       i = 0;
+    while (i + 1 < cdf.size() && u >= cdf[i]) ++i;
+    return fillRadii_[i];
+  };
   PetscInt64      total  = 1;
   for (int d = 0; d < 3; ++d) {
-    const PetscReal room = hi[d] - lo[d] - 2 * (radius_ + jitter);
+    const PetscReal room = hi[d] - lo[d] - 2 * (rFill + jitter);
     n[d]                 = room < 0 ? 0 : (PetscInt)std::floor(room / fillSpacing_ * (1 + 1e-12)) + 1;
     total *= n[d];
   }
@@ -45,11 +56,11 @@ PetscErrorCode Dem::Fill(std::uint64_t seed) {
     VofdemInputError(comm_, "option -dem_fill_count: cannot fit %" PetscInt_FMT " particles, the fill region holds %" PetscInt64_FMT " at spacing %g m",
                      fillCount_, total, (double)fillSpacing_);
   const PetscInt64 want = fillCount_ < 0 ? total : fillCount_;
-  if (want == 0) VofdemInputError(comm_, "options -dem_fill_*: the fill region is too small for a single particle of radius %g m", (double)radius_);
+  if (want == 0) VofdemInputError(comm_, "options -dem_fill_*: the fill region is too small for a single particle of radius %g m", (double)rFill);
 
   auto centre = [&](PetscInt64 id, PetscReal x[3]) {
     const PetscInt64 idx[3] = {id % n[0], (id / n[0]) % n[1], id / ((PetscInt64)n[0] * n[1])};
-    for (int d = 0; d < 3; ++d) x[d] = lo[d] + radius_ + jitter + idx[d] * fillSpacing_ + jitter * (2 * random::Uniform(seed, (std::uint64_t)id, d) - 1);
+    for (int d = 0; d < 3; ++d) x[d] = lo[d] + rFill + jitter + idx[d] * fillSpacing_ + jitter * (2 * random::Uniform(seed, (std::uint64_t)id, d) - 1);
   };
   PetscInt local = 0;
   for (PetscInt64 id = 0; id < want; ++id) {
@@ -61,8 +72,7 @@ PetscErrorCode Dem::Fill(std::uint64_t seed) {
   ParticleArrays a;
   PetscCall(swarm_.AddLocal(local, &first));
   PetscCall(swarm_.GetArrays(&a));
-  const PetscReal m = material_.density * 4.0 / 3.0 * PETSC_PI * radius_ * radius_ * radius_;
-  PetscInt        p = first;
+  PetscInt p = first;
   for (PetscInt64 id = 0; id < want; ++id) {
     PetscReal x[3];
     centre(id, x);
@@ -73,9 +83,10 @@ PetscErrorCode Dem::Fill(std::uint64_t seed) {
       a.f[3 * p + d] = 0;
     }
     for (int d = 0; d < 3; ++d) a.omega[3 * p + d] = a.torque[3 * p + d] = 0;
-    a.radius[p] = radius_;
-    a.mass[p]   = m;
-    a.id[p]     = id;
+    const PetscReal r = radiusOf(id);
+    a.radius[p]       = r;
+    a.mass[p]         = material_.density * 4.0 / 3.0 * PETSC_PI * r * r * r;
+    a.id[p]           = id;
     ++p;
   }
   PetscCall(swarm_.RestoreArrays(&a));
@@ -85,41 +96,61 @@ PetscErrorCode Dem::Fill(std::uint64_t seed) {
   PetscFunctionReturn(0);
 }
 
-// Particles from a CSV file, after the lattice fill (ids continue from it). Every rank reads the
-// file and keeps the particles it owns, so the result does not depend on the rank count. A bad
-// file is an input error naming file and line; so is a particle outside the box or cut deeply by a face.
+// Particles from a CSV file, after the lattice fill (ids continue from it). The header names the
+// columns: x,y,z (m) are required; vx,vy,vz (m/s), wx,wy,wz (rad/s) and radius (m, default
+// -dem_radius) are optional, in any order. Every rank reads the file and keeps the particles it
+// owns, so the result does not depend on the rank count. A bad file is an input error naming file
+// and line; so is a particle outside the box or cut deeply by a face.
 PetscErrorCode Dem::ReadParticles() {
+  static const char *const names[] = {"x", "y", "z", "vx", "vy", "vz", "wx", "wy", "wz", "radius"};
+  constexpr int            kCols   = 10;
+
   PetscFunctionBeginUser;
   if (particlesFile_.empty()) PetscFunctionReturn(0);
   std::ifstream in(particlesFile_);
   if (!in) VofdemInputError(comm_, "option -dem_particles_file: cannot open '%s'", particlesFile_.c_str());
-  std::vector<std::array<PetscReal, 9>> rows;
-  std::string                           line;
-  int                                   lineNo = 0;
-  std::getline(in, line);  // header
-  ++lineNo;
-  while (std::getline(in, line)) {
-    ++lineNo;
-    if (line.find_first_not_of(" \t\r") == std::string::npos) continue;
-    std::array<PetscReal, 9> r{};
+  auto cells = [](const std::string &line) {
+    std::vector<std::string> out;
     std::stringstream        ss(line);
-    std::string              cell;
-    int                      k = 0;
-    bool                     ok = true;
-    while (std::getline(ss, cell, ',')) {
+    std::string              c;
+    while (std::getline(ss, c, ',')) out.push_back(c);
+    return out;
+  };
+  std::string      line;
+  std::vector<int> column;  // column k holds quantity column[k] (index into names)
+  std::getline(in, line);
+  for (auto c : cells(line)) {
+    c.erase(0, c.find_first_not_of(" \t\r"));
+    c.erase(c.find_last_not_of(" \t\r") + 1);
+    int q = -1;
+    for (int i = 0; i < kCols; ++i)
+      if (c == names[i]) q = i;
+    if (q < 0) VofdemInputError(comm_, "%s:1: unknown column '%s' (known: x,y,z,vx,vy,vz,wx,wy,wz,radius)", particlesFile_.c_str(), c.c_str());
+    column.push_back(q);
+  }
+  for (int q = 0; q < 3; ++q)
+    if (std::find(column.begin(), column.end(), q) == column.end())
+      VofdemInputError(comm_, "%s:1: the header must name the columns x, y and z", particlesFile_.c_str());
+  std::vector<std::array<PetscReal, kCols>> rows;
+  for (int lineNo = 2; std::getline(in, line); ++lineNo) {
+    if (line.find_first_not_of(" \t\r") == std::string::npos) continue;
+    std::array<PetscReal, kCols> r{};
+    r[9]            = radius_;
+    const auto vals = cells(line);
+    bool       ok   = vals.size() == column.size();
+    for (size_t k = 0; ok && k < vals.size(); ++k) {
       char *end = nullptr;
-      if (k < 9) r[k] = std::strtod(cell.c_str(), &end);
-      ok = ok && k < 9 && end != cell.c_str() && std::string(end).find_first_not_of(" \t\r") == std::string::npos;
-      ++k;
+      r[column[k]] = std::strtod(vals[k].c_str(), &end);
+      ok = end != vals[k].c_str() && std::string(end).find_first_not_of(" \t\r") == std::string::npos;
     }
-    if (!ok || (k != 6 && k != 9))
-      VofdemInputError(comm_, "%s:%d: expected 6 or 9 comma-separated numbers (x,y,z,vx,vy,vz[,wx,wy,wz])", particlesFile_.c_str(), lineNo);
+    if (!ok) VofdemInputError(comm_, "%s:%d: expected %d comma-separated numbers, as the header names", particlesFile_.c_str(), lineNo, (int)column.size());
+    if (!(r[9] > 0)) VofdemInputError(comm_, "%s:%d: the radius must be positive", particlesFile_.c_str(), lineNo);
     // A settled particle rests with a small overlap on a wall: accept up to 5 % of the radius.
-    const PetscReal inside = 0.95 * radius_;
+    const PetscReal inside = 0.95 * r[9];
     for (int d = 0; d < 3; ++d)
       if (r[d] - inside < grid_->Lower()[d] || r[d] + inside > grid_->Upper()[d])
         VofdemInputError(comm_, "%s:%d: the particle at (%g, %g, %g) m with radius %g m is not inside the box (or overlaps a wall by more than 5 %% of its radius)",
-                         particlesFile_.c_str(), lineNo, (double)r[0], (double)r[1], (double)r[2], (double)radius_);
+                         particlesFile_.c_str(), lineNo, (double)r[0], (double)r[1], (double)r[2], (double)r[9]);
     rows.push_back(r);
   }
   PetscInt first, local = 0, start;
@@ -128,17 +159,17 @@ PetscErrorCode Dem::ReadParticles() {
   PetscCall(swarm_.AddLocal(local, &first));
   ParticleArrays a;
   PetscCall(swarm_.GetArrays(&a));
-  const PetscReal m = material_.density * 4.0 / 3.0 * PETSC_PI * radius_ * radius_ * radius_;
   for (size_t k = 0, p = first; k < rows.size(); ++k) {
-    if (!grid_->OwnsPoint(rows[k].data())) continue;
+    const auto &r = rows[k];
+    if (!grid_->OwnsPoint(r.data())) continue;
     for (int d = 0; d < 3; ++d) {
-      a.x[3 * p + d]     = rows[k][d];
-      a.v[3 * p + d]     = rows[k][3 + d];
-      a.omega[3 * p + d] = rows[k][6 + d];
+      a.x[3 * p + d]     = r[d];
+      a.v[3 * p + d]     = r[3 + d];
+      a.omega[3 * p + d] = r[6 + d];
       a.f[3 * p + d] = a.torque[3 * p + d] = 0;
     }
-    a.radius[p] = radius_;
-    a.mass[p]   = m;
+    a.radius[p] = r[9];
+    a.mass[p]   = material_.density * 4.0 / 3.0 * PETSC_PI * r[9] * r[9] * r[9];
     a.id[p]     = start + (PetscInt64)k;
     ++p;
   }
@@ -153,7 +184,7 @@ PetscErrorCode Dem::SaveParticles(const std::string &path) const {
   std::vector<PetscReal>    mine;
   std::vector<PetscReal>    all;
   std::vector<PetscMPIInt>  counts, displs;
-  constexpr int             W = 10;  // id (as a real: exact below 2^53) + 9 values
+  constexpr int             W = 11;  // id (as a real: exact below 2^53) + 9 values + radius
 
   PetscFunctionBeginUser;
   PetscCallMPI(MPI_Comm_rank(comm_, &rank));
@@ -163,6 +194,7 @@ PetscErrorCode Dem::SaveParticles(const std::string &path) const {
   for (PetscInt p = 0; p < a.n; ++p) {
     mine[W * p] = (PetscReal)a.id[p];
     for (int d = 0; d < 3; ++d) mine[W * p + 1 + d] = a.x[3 * p + d], mine[W * p + 4 + d] = a.v[3 * p + d], mine[W * p + 7 + d] = a.omega[3 * p + d];
+    mine[W * p + 10] = a.radius[p];
   }
   PetscCall(swarm_.RestoreArrays(&a));
   PetscMPIInt n = (PetscMPIInt)mine.size();
@@ -182,9 +214,9 @@ PetscErrorCode Dem::SaveParticles(const std::string &path) const {
     FILE             *f   = std::fopen(tmp.c_str(), "w");
     ok                    = f != nullptr;
     if (f) {
-      std::fprintf(f, "x,y,z,vx,vy,vz,wx,wy,wz\n");
+      std::fprintf(f, "x,y,z,vx,vy,vz,wx,wy,wz,radius\n");
       for (const auto &r : rows)
-        std::fprintf(f, "%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g\n", r[1], r[2], r[3], r[4], r[5], r[6], r[7], r[8], r[9]);
+        std::fprintf(f, "%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g\n", r[1], r[2], r[3], r[4], r[5], r[6], r[7], r[8], r[9], r[10]);
       ok = std::fclose(f) == 0 && std::rename(tmp.c_str(), path.c_str()) == 0;
     }
   }

@@ -40,6 +40,9 @@ public:
                             RealRange range = RealRange::Any(), PetscBool *set = nullptr);
   PetscErrorCode IntVector(const char *name, const char *text, PetscInt *value, PetscInt n, PetscInt lo = PETSC_MIN_INT,
                            PetscInt hi = PETSC_MAX_INT, PetscBool *set = nullptr);
+  // A comma-separated list of 1..maxCount reals (a YAML list works too).
+  PetscErrorCode RealList(const char *name, const char *text, const char *unit, std::vector<PetscReal> *value, PetscInt maxCount,
+                          RealRange range = RealRange::Any(), PetscBool *set = nullptr);
   // A comma-separated list of names, each of which must be one of `allowed`.
   PetscErrorCode NameList(const char *name, const char *text, const std::vector<std::string> &allowed,
                           std::vector<std::string> *value, PetscBool *set = nullptr);

@@ -32,6 +32,7 @@ struct DemSummary {
   PetscReal kinetic      = 0;  // translational kinetic energy, J
   PetscReal rotational   = 0;  // rotational kinetic energy, J
   PetscReal elastic      = 0;  // energy stored in the normal Hertz springs of all contacts, J
+  PetscReal mass         = 0;  // total particle mass, kg
   PetscInt  pairContacts = 0;
   PetscInt  wallContacts = 0;
   PetscReal coordination = 0;  // mean number of particle contacts per particle
@@ -60,7 +61,9 @@ public:
   // found is false on all ranks when no rank has it.
   PetscErrorCode FindParticle(std::int64_t id, PetscReal x[3], PetscReal v[3], PetscBool *found, PetscReal omega[3] = nullptr) const;
   const DemMaterial &Material() const { return material_; }
-  PetscReal          Radius() const { return radius_; }
+  PetscReal          Radius() const { return radius_; }  // -dem_radius: the single size, and the default one
+  PetscReal          MinRadius() const { return rMin_; }
+  PetscReal          MaxRadius() const { return rMax_; }
   DM                 Swarm() const { return swarm_.Dm(); }
 
 private:
@@ -99,6 +102,7 @@ private:
   hertz::RollingParams rollingParams_{};
   hertz::PairMaterial pair_{}, wall_{};
   PetscReal     radius_     = 5e-4;  // m
+  PetscReal     rMin_ = 0, rMax_ = 0;  // smallest and largest radius present (set after insertion)
   PetscReal     dtFactor_   = 0.3;   // of the Rayleigh time (seed 001)
   PetscReal     skin_       = 0;     // m, Verlet skin
   PetscReal     gravity_[3] = {0, 0, 0};
@@ -115,6 +119,7 @@ private:
   PetscInt  fillCount_    = 0;  // 0 = no fill, -1 = as many as fit
   PetscReal fillVelocity_[3] = {0, 0, 0};
   PetscReal fillSpread_   = 0;  // m/s, random velocity components uniform in [-spread, spread]
+  std::vector<PetscReal> fillRadii_, fillMassFractions_;  // discrete size distribution of the fill
   std::string particlesFile_;  // CSV: x,y,z,vx,vy,vz[,wx,wy,wz] per line, one header line
   std::string savePath_;       // -dem_save_particles: the same CSV at the end of the run
   PetscInt  inserted_     = 0;
