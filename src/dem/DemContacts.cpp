@@ -55,7 +55,7 @@ PetscErrorCode Dem::Rebuild() {
   grid_->LocalBox(lo, hi);
   PetscCall(swarm_.GetArrays(&a));
   PetscCall(list_.Build(a.n, a.x, a.radius, a.mass, a.id, halo_.Count(), halo_.x.data(), halo_.radius.data(), halo_.mass.data(), halo_.id.data(),
-                        cutoff, lo, hi));
+                        cutoff, skin_, lo, hi));
   for (size_t k = 0; k < list_.Size() && !springs_.empty(); ++k) {
     const auto it = springs_.find({idOf(list_.first[k]), idOf(list_.second[k])});  // lower id first
     if (it != springs_.end()) {

@@ -7,8 +7,8 @@ namespace vofdem {
 
 PetscErrorCode NeighbourList::Build(PetscInt nLocal, const PetscReal *xLocal, const PetscReal *rLocal, const PetscReal *mLocal,
                                     const PetscInt64 *idLocal, PetscInt nGhost, const PetscReal *xGhost, const PetscReal *rGhost,
-                                    const PetscReal *mGhost, const PetscInt64 *idGhost, PetscReal cutoff, const PetscReal lo[3],
-                                    const PetscReal hi[3]) {
+                                    const PetscReal *mGhost, const PetscInt64 *idGhost, PetscReal cutoff, PetscReal skin,
+                                    const PetscReal lo[3], const PetscReal hi[3]) {
   PetscFunctionBeginUser;
   const PetscInt n = nLocal + nGhost;
   PetscInt       nc[3];
@@ -41,9 +41,9 @@ PetscErrorCode NeighbourList::Build(PetscInt nLocal, const PetscReal *xLocal, co
   }
   first.clear();
   second.clear();
-  const PetscReal c2 = cutoff * cutoff;
+  auto rad = [&](PetscInt p) { return p < nLocal ? rLocal[p] : rGhost[p - nLocal]; };
   for (PetscInt i = 0; i < nLocal; ++i) {
-    const PetscReal *xi = pos(i);
+    const PetscReal *xi = pos(i), ri = rLocal[i] + skin;
     PetscInt         c[3];
     cellOf(xi, c);
     for (PetscInt dz = -1; dz <= 1; ++dz)
@@ -56,8 +56,8 @@ PetscErrorCode NeighbourList::Build(PetscInt nLocal, const PetscReal *xLocal, co
             const PetscInt j = order_[k];
             if (j < nLocal && j <= i) continue;  // each local pair once; ghost pairs from the local side
             const PetscReal *xj = pos(j);
-            const PetscReal  ex = xi[0] - xj[0], ey = xi[1] - xj[1], ez = xi[2] - xj[2];
-            if (ex * ex + ey * ey + ez * ez < c2) {
+            const PetscReal  ex = xi[0] - xj[0], ey = xi[1] - xj[1], ez = xi[2] - xj[2], c = ri + rad(j);
+            if (ex * ex + ey * ey + ez * ez < c * c) {
               first.push_back(i);
               second.push_back(j);
             }

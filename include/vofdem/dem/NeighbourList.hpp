@@ -1,5 +1,6 @@
-// Verlet list of particle pairs closer than a cut-off (2 R_max + skin), built with linked cells and
-// reused until a particle has moved half the skin. Indices below nLocal are local particles, the
+// Verlet list of the particle pairs closer than r_i + r_j + skin, built with linked cells of at
+// least 2 R_max + skin and reused until a particle has moved half the skin. The per-pair cut-off
+// keeps small-small pairs of a polydisperse powder from being listed at the large spheres' range. Indices below nLocal are local particles, the
 // others ghost (index - nLocal); at least one of each pair is local. Each pair is stored with the
 // lower global id first, the orientation its springs are seen from, so that a pair two ranks both
 // evaluate gives the same arithmetic there. Each pair carries its springs (P3, P5), so the contact
@@ -37,11 +38,12 @@ using ContactHistory = std::unordered_map<PairKey, std::array<PetscReal, kSpring
 
 class NeighbourList {
 public:
-  // Builds the pairs among nLocal local and nGhost ghost positions within `cutoff`, binning in the
-  // box [lo - cutoff, hi + cutoff]; radius and mass (local then ghost) give each pair its R*, m*.
+  // Builds the pairs among nLocal local and nGhost ghost particles with r_i + r_j + skin, binning
+  // in the box [lo - cutoff, hi + cutoff] with cutoff = 2 R_max + skin; radius and mass (local then
+  // ghost) also give each pair its R*, m*.
   PetscErrorCode Build(PetscInt nLocal, const PetscReal *xLocal, const PetscReal *rLocal, const PetscReal *mLocal, const PetscInt64 *idLocal,
                        PetscInt nGhost, const PetscReal *xGhost, const PetscReal *rGhost, const PetscReal *mGhost, const PetscInt64 *idGhost,
-                       PetscReal cutoff, const PetscReal lo[3], const PetscReal hi[3]);
+                       PetscReal cutoff, PetscReal skin, const PetscReal lo[3], const PetscReal hi[3]);
 
   size_t Size() const { return first.size(); }
   std::vector<PetscInt>  first, second;  // the pairs
