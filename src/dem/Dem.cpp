@@ -34,6 +34,19 @@ PetscErrorCode Dem::SetFromOptions(MPI_Comm comm) {
       PetscCall(opt.Real("-rolling_friction", "Rolling friction coefficient mu_r (P5)", "-", &rollingParams_.mu, RealRange::NonNegative()));
       PetscCall(opt.Real("-rolling_damping", "EPSD rolling damping as a fraction of critical", "-", &rollingParams_.eta, RealRange::NonNegative()));
     }
+    {
+      static const std::vector<std::string> models = {"none", "jkr"};
+      std::vector<std::string>              chosen = {"none"};
+      PetscCall(opt.NameList("-cohesion", "Adhesion between touching surfaces: none, jkr (JKR with hysteresis, P6)", models, &chosen));
+      if (chosen.size() != 1) VofdemInputError(comm, "option -dem_cohesion: give one model (none or jkr)");
+      jkr_ = (PetscBool)(chosen[0] == "jkr");
+      PetscCall(opt.Real("-surface_energy", "Surface energy gamma of one particle surface; work of adhesion w = 2 gamma (P6)", "J/m^2", &surfaceEnergy_,
+                         RealRange::NonNegative()));
+      wallSurfaceEnergy_ = surfaceEnergy_;
+      PetscCall(opt.Real("-wall_surface_energy", "Surface energy of the walls (default: the particles'); w = gamma_p + gamma_w", "J/m^2", &wallSurfaceEnergy_,
+                         RealRange::NonNegative()));
+      if (jkr_ && surfaceEnergy_ == 0) VofdemInputError(comm, "option -dem_cohesion jkr needs -dem_surface_energy > 0");
+    }
     PetscCall(opt.Bool("-limit_force", "Clip the normal contact force at zero: no tension from damping as a contact ends (LIGGGHTS' limitForce); the restitution then differs from -dem_restitution", &limitForce_));
     wallYoungs_   = material_.youngs;
     wallPoisson_  = material_.poisson;
@@ -76,8 +89,9 @@ PetscErrorCode Dem::SetUp(const Grid &grid, const PetscReal gravity[3], std::uin
   grid_ = &grid;
   std::copy(gravity, gravity + 3, gravity_);
   const DemMaterial &m = material_;
-  pair_         = hertz::MakePairMaterial(m.youngs, m.poisson, m.youngs, m.poisson, m.restitution, m.friction, limitForce_);
-  wall_         = hertz::MakePairMaterial(m.youngs, m.poisson, wallYoungs_, wallPoisson_, m.restitution, wallFriction_, limitForce_);
+  pair_ = hertz::MakePairMaterial(m.youngs, m.poisson, m.youngs, m.poisson, m.restitution, m.friction, limitForce_, jkr_ ? 2 * surfaceEnergy_ : 0);
+  wall_ = hertz::MakePairMaterial(m.youngs, m.poisson, wallYoungs_, wallPoisson_, m.restitution, wallFriction_, limitForce_,
+                                  jkr_ ? surfaceEnergy_ + wallSurfaceEnergy_ : 0);
   PetscClassId classId;
   PetscCall(PetscClassIdRegister("DEM", &classId));
   PetscCall(PetscLogEventRegister("DEMRebuild", classId, &evRebuild_));
@@ -100,6 +114,8 @@ PetscErrorCode Dem::SetUp(const Grid &grid, const PetscReal gravity[3], std::uin
     rMax_ = inserted_ ? global[1] : radius_;
   }
   rayleighTime_ = hertz::RayleighTime(rMin_, m.density, m.youngs, m.poisson);
+  // A JKR bond holds until the overlap falls to its break value, largest for the largest R* (a wall).
+  if (jkr_) adhesionRange_ = -std::min(hertz::JkrBreakOverlap(pair_, rMax_ / 2), hertz::JkrBreakOverlap(wall_, rMax_));
   PetscCall(Rebuild());
   PetscCall(ComputeForces(0));
   PetscFunctionReturn(0);
@@ -185,25 +201,27 @@ PetscErrorCode Dem::Summarize(DemSummary *s) const {
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode Dem::FindParticle(std::int64_t id, PetscReal x[3], PetscReal v[3], PetscBool *found, PetscReal omega[3]) const {
+PetscErrorCode Dem::FindParticle(std::int64_t id, PetscReal x[3], PetscReal v[3], PetscBool *found, PetscReal omega[3], PetscReal force[3]) const {
   ParticleArrays a;
-  PetscReal      local[10] = {0}, global[10];
+  PetscReal      local[13] = {0}, global[13];
 
   PetscFunctionBeginUser;
   PetscCall(swarm_.GetArrays(&a));
   for (PetscInt p = 0; p < a.n; ++p) {
     if (a.id[p] != id) continue;
     local[0] = 1;
-    for (int d = 0; d < 3; ++d) local[1 + d] = a.x[3 * p + d], local[4 + d] = a.v[3 * p + d], local[7 + d] = a.omega[3 * p + d];
+    for (int d = 0; d < 3; ++d)
+      local[1 + d] = a.x[3 * p + d], local[4 + d] = a.v[3 * p + d], local[7 + d] = a.omega[3 * p + d], local[10 + d] = a.f[3 * p + d];
   }
   PetscCall(swarm_.RestoreArrays(&a));
   // Exactly one rank holds the particle, so the sum is the value itself, bit for bit.
-  PetscCallMPI(MPI_Allreduce(local, global, 10, MPIU_REAL, MPIU_SUM, comm_));
+  PetscCallMPI(MPI_Allreduce(local, global, 13, MPIU_REAL, MPIU_SUM, comm_));
   *found = (PetscBool)(global[0] == 1);
   for (int d = 0; d < 3; ++d) {
     x[d] = global[1 + d];
     v[d] = global[4 + d];
     if (omega) omega[d] = global[7 + d];
+    if (force) force[d] = global[10 + d];
   }
   PetscFunctionReturn(0);
 }
@@ -216,7 +234,10 @@ PetscErrorCode Dem::View(PetscViewer viewer) const {
   static const char *const rolling[] = {"none", "constant torque", "EPSD", "EPSD2 (LIGGGHTS)"};
   PetscCall(PetscViewerASCIIPrintf(viewer, "dem: contacts: Hertz-Mindlin with damping, tangential springs and Coulomb friction between spheres and with the box faces (P3)%s; rolling resistance: %s, mu_r %g (P5)\n",
                                    limitForce_ ? ", normal force clipped at zero" : "", rolling[(int)rolling_], (double)rollingParams_.mu));
-  PetscCall(PetscViewerASCIIPrintf(viewer, "dem: this build has no adhesion, STL or moving walls, periodic boundaries, several particle types or sizes (DEM engine issue)\n"));
+  if (jkr_)
+    PetscCall(PetscViewerASCIIPrintf(viewer, "dem: adhesion: JKR (P6), surface energy %g J/m^2 (work of adhesion %g J/m^2), walls %g J/m^2; bonds break up to %g m apart\n",
+                                     (double)surfaceEnergy_, (double)pair_.w, (double)wall_.w, (double)adhesionRange_));
+  PetscCall(PetscViewerASCIIPrintf(viewer, "dem: this build has no SJKR or van der Waals adhesion, STL or moving walls, periodic boundaries, several particle types (DEM engine issue)\n"));
   PetscFunctionReturn(0);
 }
 

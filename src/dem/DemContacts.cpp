@@ -43,7 +43,8 @@ PetscErrorCode Dem::Rebuild() {
   PetscCall(swarm_.RestoreArrays(&a));
   // 2. Particles to their owners; 3. ghosts within the cut-off.
   PetscCall(swarm_.Migrate());
-  const PetscReal cutoff = 2 * rMax_ + skin_;
+  // A JKR bond may hold adhesionRange_ beyond touching: the cut-offs include it.
+  const PetscReal cutoff = 2 * rMax_ + skin_ + adhesionRange_;
   PetscCall(swarm_.GetArrays(&a));
   PetscCall(halo_.Build(a, a.omega, cutoff));
   localIds.assign(a.id, a.id + a.n);
@@ -55,7 +56,7 @@ PetscErrorCode Dem::Rebuild() {
   grid_->LocalBox(lo, hi);
   PetscCall(swarm_.GetArrays(&a));
   PetscCall(list_.Build(a.n, a.x, a.radius, a.mass, a.id, halo_.Count(), halo_.x.data(), halo_.radius.data(), halo_.mass.data(), halo_.id.data(),
-                        cutoff, skin_, lo, hi));
+                        cutoff, skin_ + adhesionRange_, lo, hi));
   for (size_t k = 0; k < list_.Size() && !springs_.empty(); ++k) {
     const auto it = springs_.find({idOf(list_.first[k]), idOf(list_.second[k])});  // lower id first
     if (it != springs_.end()) {
@@ -71,7 +72,7 @@ PetscErrorCode Dem::Rebuild() {
     for (int face = 0; face < 6; ++face) {
       const int       d    = face / 2;
       const PetscReal dist = face % 2 ? ghi[d] - a.x[3 * p + d] : a.x[3 * p + d] - glo[d];
-      if (dist >= a.radius[p] + skin_) continue;
+      if (dist >= a.radius[p] + skin_ + adhesionRange_) continue;
       walls_.Add(p, face);
       const auto it = springs_.empty() ? springs_.end() : springs_.find(PairKey::Wall(a.id[p], face));
       if (it != springs_.end()) {
@@ -144,12 +145,13 @@ PetscErrorCode Dem::ExchangeSprings(const std::vector<PetscInt64> &localIds) {
 
 PetscErrorCode Dem::ComputeForces(PetscReal dt) {
   PetscFunctionBeginUser;
-  // The rolling model is chosen once per scene and bound here, outside the contact loops.
+  // The rolling and cohesion models are chosen once per scene and bound here, outside the loops.
+  using R = hertz::Rolling;
   switch (rolling_) {
-  case hertz::Rolling::None: PetscCall(ComputeForcesWith<hertz::Rolling::None>(dt)); break;
-  case hertz::Rolling::ConstantTorque: PetscCall(ComputeForcesWith<hertz::Rolling::ConstantTorque>(dt)); break;
-  case hertz::Rolling::Epsd: PetscCall(ComputeForcesWith<hertz::Rolling::Epsd>(dt)); break;
-  case hertz::Rolling::Epsd2: PetscCall(ComputeForcesWith<hertz::Rolling::Epsd2>(dt)); break;
+  case R::None: PetscCall(jkr_ ? ComputeForcesWith<R::None, true>(dt) : ComputeForcesWith<R::None, false>(dt)); break;
+  case R::ConstantTorque: PetscCall(jkr_ ? ComputeForcesWith<R::ConstantTorque, true>(dt) : ComputeForcesWith<R::ConstantTorque, false>(dt)); break;
+  case R::Epsd: PetscCall(jkr_ ? ComputeForcesWith<R::Epsd, true>(dt) : ComputeForcesWith<R::Epsd, false>(dt)); break;
+  case R::Epsd2: PetscCall(jkr_ ? ComputeForcesWith<R::Epsd2, true>(dt) : ComputeForcesWith<R::Epsd2, false>(dt)); break;
   }
   PetscFunctionReturn(0);
 }
@@ -157,7 +159,7 @@ PetscErrorCode Dem::ComputeForces(PetscReal dt) {
 // Forces and torques on the local particles: gravity, the box faces, and the pairs of the list
 // (P3, P5). A pair is always evaluated from its lower id ("a") to its higher id ("b"), so a pair
 // that two ranks both evaluate (one particle a ghost) gives bit-identical results and springs there.
-template <hertz::Rolling RM>
+template <hertz::Rolling RM, bool JKR>
 PetscErrorCode Dem::ComputeForcesWith(PetscReal dt) {
   ParticleArrays a;
 
@@ -174,24 +176,33 @@ PetscErrorCode Dem::ComputeForcesWith(PetscReal dt) {
     const PetscReal r = a.radius[p], *x = &a.x[3 * p], *v = &a.v[3 * p], *w = &a.omega[3 * p];
     const PetscReal delta = r - (face % 2 ? hi[d] - x[d] : x[d] - lo[d]);
     PetscReal      *xi    = &walls_.spring[kSpringWidth * k];
-    if (delta <= 0) {
+    // In contact from touching on; a JKR bond holds until its break overlap (P6).
+    const bool inContact = delta > 0 || (JKR && xi[kJkrBonded] != 0 && delta > hertz::JkrBreakOverlap(wall_, r));
+    if (!inContact) {
       if (walls_.touching[k]) std::fill(xi, xi + kSpringWidth, 0), walls_.touching[k] = 0;
       continue;
     }
     walls_.touching[k] = 1;
-    PetscReal n[3] = {0, 0, 0}, rn[3], wxr[3], vrel[3], F[3], Ft[3], tq[3], M[3], Sn;
+    PetscReal n[3] = {0, 0, 0}, rn[3], wxr[3], vrel[3], F[3], Ft[3], tq[3], M[3];
     n[d] = face % 2 ? -1 : 1;  // inward normal: +e_d on the lower face, -e_d on the upper
     for (int e = 0; e < 3; ++e) rn[e] = -r * n[e];  // centre to contact point
     Cross(w, rn, wxr);
     for (int e = 0; e < 3; ++e) vrel[e] = v[e] + wxr[e];
-    const PetscReal Fn = hertz::Contact(wall_, delta, n, r, std::sqrt(a.mass[p]), vrel, dt, xi, F, Ft, &Sn);
+    hertz::NormalLaw law;
+    if constexpr (JKR) {
+      law             = hertz::JkrNormal(wall_, delta, r, &xi[kJkrRadius]);
+      xi[kJkrBonded] = 1;
+    } else {
+      law = hertz::HertzNormal(wall_, delta, r);
+    }
+    const PetscReal Sn = law.Sn, Fn = hertz::Contact(wall_, law, n, std::sqrt(a.mass[p]), vrel, dt, xi, F, Ft);
     Cross(rn, Ft, tq);
     // Rolling against the face: w_rel = w, I_r = I + m R^2 = 1.4 m R^2 about the contact; the
     // secant normal stiffness F_n,elastic / delta is (2/3) S_n.
     hertz::RollingTorque<RM>(rollingParams_, Fn, 2.0 / 3.0 * Sn, r, 1.4 * a.mass[p] * r * r, n, w, dt, xi + 3, M);
     for (int e = 0; e < 3; ++e) a.f[3 * p + e] += F[e], a.torque[3 * p + e] += tq[e] + M[e], stats_.wallForce[face][e] -= F[e];
     ++stats_.wallContacts;
-    stats_.elastic += hertz::ElasticEnergy(Sn, delta);
+    if (!JKR) stats_.elastic += hertz::ElasticEnergy(Sn, delta);
     stats_.maxOverlap = std::max(stats_.maxOverlap, delta / (2 * r));
   }
   const PetscInt n = a.n, ng = halo_.Count();
@@ -213,7 +224,11 @@ PetscErrorCode Dem::ComputeForcesWith(PetscReal dt) {
     const PetscReal  dx[3] = {xa[0] - xb[0], xa[1] - xb[1], xa[2] - xb[2]};
     const PetscReal  dist2 = dx[0] * dx[0] + dx[1] * dx[1] + dx[2] * dx[2], rsum = hot_[ia].r + hot_[ib].r;
     PetscReal       *stored = &list_.spring[kSpringWidth * k];
-    if (dist2 >= rsum * rsum) {
+    // In contact from touching on; a JKR bond holds until its break overlap (P6).
+    const bool inContact =
+      dist2 < rsum * rsum ||
+      (JKR && stored[kJkrBonded] != 0 && rsum - std::sqrt(dist2) > hertz::JkrBreakOverlap(pair_, list_.rstar[k]));
+    if (!inContact) {
       if (list_.touching[k]) std::fill(stored, stored + kSpringWidth, 0), list_.touching[k] = 0;
       continue;
     }
@@ -225,11 +240,18 @@ PetscErrorCode Dem::ComputeForcesWith(PetscReal dt) {
     // Copies, not references: stores into the force arrays below cannot alias them.
     const HotParticle A = hot_[ia], B = hot_[ib];
     const PetscReal   dist = std::sqrt(dist2), inv = 1 / dist, delta = rsum - dist, Rstar = list_.rstar[k];
-    PetscReal         nrm[3], rw[3], wxn[3], vrel[3], F[3], Ft[3], nxF[3], wrel[3], M[3], Sn;
+    PetscReal         nrm[3], rw[3], wxn[3], vrel[3], F[3], Ft[3], nxF[3], wrel[3], M[3];
     for (int e = 0; e < 3; ++e) nrm[e] = dx[e] * inv, rw[e] = A.r * A.w[e] + B.r * B.w[e], wrel[e] = A.w[e] - B.w[e];
     Cross(rw, nrm, wxn);
     for (int e = 0; e < 3; ++e) vrel[e] = A.v[e] - B.v[e] - wxn[e];  // surface of A against surface of B
-    const PetscReal Fn = hertz::Contact(pair_, delta, nrm, Rstar, list_.sqrtMstar[k], vrel, dt, xi, F, Ft, &Sn);
+    hertz::NormalLaw law;
+    if constexpr (JKR) {
+      law             = hertz::JkrNormal(pair_, delta, Rstar, &xi[kJkrRadius]);
+      xi[kJkrBonded] = 1;
+    } else {
+      law = hertz::HertzNormal(pair_, delta, Rstar);
+    }
+    const PetscReal Sn = law.Sn, Fn = hertz::Contact(pair_, law, nrm, list_.sqrtMstar[k], vrel, dt, xi, F, Ft);
     Cross(nrm, Ft, nxF);
     if constexpr (RM != hertz::Rolling::None) {
       const PetscReal Ia = 1.4 * A.m * A.r * A.r, Ib = 1.4 * B.m * B.r * B.r;  // about the contact point
@@ -247,7 +269,7 @@ PetscErrorCode Dem::ComputeForcesWith(PetscReal dt) {
     // A pair with a ghost is counted by both ranks: count it half on each.
     const bool both = ia < n && ib < n;
     stats_.pairContacts += both ? 2 : 1;
-    stats_.elastic += (both ? 1.0 : 0.5) * hertz::ElasticEnergy(Sn, delta);
+    if (!JKR) stats_.elastic += (both ? 1.0 : 0.5) * hertz::ElasticEnergy(Sn, delta);
     const PetscReal twoRmin = 2 * std::min(A.r, B.r);
     if (delta > stats_.maxOverlap * twoRmin) stats_.maxOverlap = delta / twoRmin;  // rarely: no division per contact
   }

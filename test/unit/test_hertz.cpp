@@ -31,7 +31,7 @@ Outcome Impact(double e, double v0) {
     a = 0;
     if (x > 0) {
       double vrel[3] = {0, 0, -v}, xi[3] = {0, 0, 0}, F[3], Ft[3];
-      h::Contact(c, x, n, R, std::sqrt(m), vrel, dt, xi, F, Ft);
+      h::Contact(c, h::HertzNormal(c, x, R), n, std::sqrt(m), vrel, dt, xi, F, Ft);
       a = F[2] / m;
     }
     v -= 0.5 * dt * a;

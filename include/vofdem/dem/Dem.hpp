@@ -31,7 +31,7 @@ struct DemSummary {
   PetscInt  particles    = 0;
   PetscReal kinetic      = 0;  // translational kinetic energy, J
   PetscReal rotational   = 0;  // rotational kinetic energy, J
-  PetscReal elastic      = 0;  // energy stored in the normal Hertz springs of all contacts, J
+  PetscReal elastic      = 0;  // energy stored in the normal Hertz springs of all contacts (JKR contacts not counted), J
   PetscReal mass         = 0;  // total particle mass, kg
   PetscInt  pairContacts = 0;
   PetscInt  wallContacts = 0;
@@ -59,7 +59,8 @@ public:
 
   // Collective: position, velocity and angular velocity of the particle with global id `id`;
   // found is false on all ranks when no rank has it.
-  PetscErrorCode FindParticle(std::int64_t id, PetscReal x[3], PetscReal v[3], PetscBool *found, PetscReal omega[3] = nullptr) const;
+  PetscErrorCode FindParticle(std::int64_t id, PetscReal x[3], PetscReal v[3], PetscBool *found, PetscReal omega[3] = nullptr,
+                              PetscReal force[3] = nullptr) const;
   const DemMaterial &Material() const { return material_; }
   PetscReal          Radius() const { return radius_; }  // -dem_radius: the single size, and the default one
   PetscReal          MinRadius() const { return rMin_; }
@@ -71,7 +72,7 @@ private:
   PetscErrorCode ReadParticles();                       // DemFill.cpp: -dem_particles_file
   PetscErrorCode Rebuild();                             // DemContacts.cpp: migrate, halo, list, springs
   PetscErrorCode ComputeForces(PetscReal dt);           // DemContacts.cpp
-  template <hertz::Rolling model>
+  template <hertz::Rolling model, bool jkr>
   PetscErrorCode ComputeForcesWith(PetscReal dt);
   PetscErrorCode ExchangeSprings(const std::vector<PetscInt64> &localIds);
 
@@ -99,6 +100,9 @@ private:
   PetscReal     wallYoungs_ = -1, wallPoisson_ = -1, wallFriction_ = -1;  // default: the particles'
   PetscBool     limitForce_ = PETSC_FALSE;
   hertz::Rolling       rolling_ = hertz::Rolling::None;
+  PetscBool            jkr_ = PETSC_FALSE;                    // -dem_cohesion jkr (P6)
+  PetscReal            surfaceEnergy_ = 0, wallSurfaceEnergy_ = -1;  // J/m^2, one surface
+  PetscReal            adhesionRange_ = 0;                    // m, largest |break overlap|: widens the cut-offs
   hertz::RollingParams rollingParams_{};
   hertz::PairMaterial pair_{}, wall_{};
   PetscReal     radius_     = 5e-4;  // m

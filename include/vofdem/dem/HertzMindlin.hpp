@@ -52,17 +52,58 @@ struct PairMaterial {
   PetscReal Estar = 0, Gstar = 0;
   PetscReal beta  = 0;  // ln(e)/sqrt(ln^2 e + pi^2) <= 0
   PetscReal mu    = 0;  // sliding friction
-  bool      limitForce = false;  // clip F_n at 0: no tension from damping as a contact ends
-  // Derived once: gamma_n = dampN sqrt(m*) (R* delta)^(1/4), gamma_t = gamma_n tOverN.
-  PetscReal dampN = 0, tOverN = 0;
+  bool      limitForce = false;  // no tension from damping: F_n never below min(0, the elastic force)
+  PetscReal w = 0;               // work of adhesion (JKR, P6), J/m^2
+  // Derived once: gamma_n = k5 sqrt(S_n m*), S_t = tStiff S_n, gamma_t = tOverN gamma_n (P3).
+  PetscReal k5 = 0, tStiff = 0, tOverN = 0;
 };
 
-inline PairMaterial MakePairMaterial(PetscReal Ei, PetscReal nui, PetscReal Ej, PetscReal nuj, PetscReal e, PetscReal mu, bool limitForce = false) {
-  PairMaterial c{EffectiveModulus(Ei, nui, Ej, nuj), EffectiveShearModulus(Ei, nui, Ej, nuj), DampingRatio(e), mu, limitForce};
-  // gamma_n = -2 sqrt(5/6) beta sqrt(S_n m*) with S_n = 2 E* sqrt(R* delta); S_t / S_n = 4 G* / E*.
-  c.dampN  = -2 * std::sqrt(5.0 / 6.0) * c.beta * std::sqrt(2 * c.Estar);
-  c.tOverN = std::sqrt(4 * c.Gstar / c.Estar);
+inline PairMaterial MakePairMaterial(PetscReal Ei, PetscReal nui, PetscReal Ej, PetscReal nuj, PetscReal e, PetscReal mu, bool limitForce = false,
+                                     PetscReal w = 0) {
+  PairMaterial c{EffectiveModulus(Ei, nui, Ej, nuj), EffectiveShearModulus(Ei, nui, Ej, nuj), DampingRatio(e), mu, limitForce, w};
+  // gamma_n = -2 sqrt(5/6) beta sqrt(S_n m*); S_t / S_n = 8 G* / (2 E*) whether S_n = 2 E* sqrt(R* delta)
+  // (Hertz) or 2 E* a (JKR).
+  c.k5     = -2 * std::sqrt(5.0 / 6.0) * c.beta;
+  c.tStiff = 4 * c.Gstar / c.Estar;
+  c.tOverN = std::sqrt(c.tStiff);
   return c;
+}
+
+// The normal elastic law at one instant: the elastic force (repulsive > 0), the normal contact
+// stiffness S_n, and what adds to F_n in the Coulomb limit.
+struct NormalLaw {
+  PetscReal Fel, Sn, frictionOffset;
+};
+
+// Hertz (P3): F = (4/3) E* sqrt(R*) delta^1.5 = (2/3) S_n delta, S_n = 2 E* sqrt(R* delta).
+inline NormalLaw HertzNormal(const PairMaterial &c, PetscReal delta, PetscReal Rstar) {
+  const PetscReal Sn = 2 * c.Estar * std::sqrt(Rstar * delta);
+  return {2.0 / 3.0 * Sn * delta, Sn, 0};
+}
+
+// JKR (P6): delta = a^2/R* - sqrt(2 pi w a / E*), F = 4 E* a^3/(3 R*) - sqrt(8 pi w E* a^3), S_n = 2 E* a.
+// The contact radius is found by Newton's method on the stable branch a >= a_c = (pi w R*^2 / (8 E*))^(1/3),
+// where delta(a) is increasing and convex, from the previous step's a (history) or from a_c.
+// Friction is bounded by mu (F_n + 2 F_c), F_c = 1.5 pi w R* (Thornton and Yin 1991).
+inline NormalLaw JkrNormal(const PairMaterial &c, PetscReal delta, PetscReal Rstar, PetscReal *a) {
+  const PetscReal ac = std::cbrt(PETSC_PI * c.w * Rstar * Rstar / (8 * c.Estar)), k = std::sqrt(2 * PETSC_PI * c.w / c.Estar);
+  PetscReal       x  = std::max(*a, 1.001 * ac);
+  for (int it = 0; it < 60; ++it) {
+    const PetscReal sx = std::sqrt(x), f = x * x / Rstar - k * sx - delta, df = 2 * x / Rstar - 0.5 * k / sx;
+    PetscReal       next = df > 0 ? x - f / df : 2 * x;
+    if (next < ac) next = ac;
+    const bool done = std::abs(next - x) <= 1e-13 * x;
+    x               = next;
+    if (done) break;
+  }
+  *a = x;
+  const PetscReal a3 = x * x * x;
+  return {4 * c.Estar * a3 / (3 * Rstar) - std::sqrt(8 * PETSC_PI * c.w * c.Estar * a3), 2 * c.Estar * x, 3 * PETSC_PI * c.w * Rstar};
+}
+
+// The overlap at which a JKR bond breaks under displacement control: -(3/4) (pi^2 w^2 R* / E*^2)^(1/3) (P6).
+inline PetscReal JkrBreakOverlap(const PairMaterial &c, PetscReal Rstar) {
+  return -0.75 * std::cbrt(PETSC_PI * PETSC_PI * c.w * c.w * Rstar / (c.Estar * c.Estar));
 }
 
 // Turns a spring into the plane normal to n keeping its length. When n has not turned measurably
@@ -81,12 +122,11 @@ inline void ProjectKeepingLength(PetscReal s[3], const PetscReal n[3]) {
   }
 }
 
-// One Hertz-Mindlin contact (P3). Inputs: overlap delta > 0, unit normal n pointing from the partner
+// One Hertz-Mindlin contact (P3). Inputs: the normal law at the overlap, unit normal n pointing from the partner
 // to this particle, R* and m*, the relative velocity of this particle's surface against the
 // partner's at the contact point (vrel), the step dt, and the tangential spring xi (history, m),
 // which is updated. Output: the force on this particle (the partner gets minus it) and its
-// tangential part Ft, from which each side's torque is -R n x Ft. Returns the normal force F_n
-// and sets Sn, the normal tangent stiffness 2 E* sqrt(R* delta).
+// tangential part Ft, from which each side's torque is -R n x Ft. Returns the normal force F_n.
 // Without limitForce the damping is not clipped (D1 needs that to give the input restitution) and
 // F_n turns slightly attractive as a contact ends. Friction needs compression: the Coulomb limit is
 // mu max(F_n, 0), never mu |F_n| (which made friction act under tension: the oblique impact's
@@ -99,16 +139,15 @@ inline void ProjectKeepingLength(PetscReal s[3], const PetscReal n[3]) {
 // backwards early in a contact, where gamma_t v_t alone exceeds the cap, and the friction impulse
 // fell 7 % short of mu times the normal impulse; capping only the spring part and adding damping
 // while sticking (LIGGGHTS) let |F_t| exceed mu |F_n| and the impulse came out 16 % too large.
-// sqrtMstar is sqrt(m*) (constant for a pair, so callers cache it).
-inline PetscReal Contact(const PairMaterial &c, PetscReal delta, const PetscReal n[3], PetscReal Rstar, PetscReal sqrtMstar, const PetscReal vrel[3],
-                         PetscReal dt, PetscReal xi[3], PetscReal F[3], PetscReal Ft[3], PetscReal *SnOut = nullptr) {
-  const PetscReal sqrtRd = std::sqrt(Rstar * delta);
-  const PetscReal Sn = 2 * c.Estar * sqrtRd, St = 8 * c.Gstar * sqrtRd;
-  const PetscReal gn = c.dampN * sqrtMstar * std::sqrt(sqrtRd), gt = gn * c.tOverN;  // gamma_n, gamma_t (P3)
-  if (SnOut) *SnOut = Sn;
-  const PetscReal vn = vrel[0] * n[0] + vrel[1] * n[1] + vrel[2] * n[2];  // > 0 separating
-  PetscReal       Fn = 2.0 / 3.0 * Sn * delta - gn * vn;                 // (4/3) E* sqrt(R*) delta^1.5 - gamma_n v_n
-  if (c.limitForce && Fn < 0) Fn = 0;
+// law: the normal elastic law at this overlap (HertzNormal or JkrNormal); sqrtMstar: sqrt(m*)
+// (constant for a pair, so callers cache it).
+inline PetscReal Contact(const PairMaterial &c, const NormalLaw &law, const PetscReal n[3], PetscReal sqrtMstar, const PetscReal vrel[3], PetscReal dt,
+                         PetscReal xi[3], PetscReal F[3], PetscReal Ft[3]) {
+  const PetscReal Sn = law.Sn, St = c.tStiff * Sn;
+  const PetscReal gn = c.k5 * sqrtMstar * std::sqrt(Sn), gt = gn * c.tOverN;  // gamma_n, gamma_t (P3)
+  const PetscReal vn = vrel[0] * n[0] + vrel[1] * n[1] + vrel[2] * n[2];      // > 0 separating
+  PetscReal       Fn = law.Fel - gn * vn;
+  if (c.limitForce) Fn = std::max(Fn, std::min(law.Fel, (PetscReal)0));
   PetscReal       vt[3];
   for (int d = 0; d < 3; ++d) vt[d] = vrel[d] - vn * n[d];
   ProjectKeepingLength(xi, n);
@@ -116,7 +155,7 @@ inline PetscReal Contact(const PairMaterial &c, PetscReal delta, const PetscReal
     xi[d] += vt[d] * dt;
     Ft[d] = -St * xi[d] - gt * vt[d];
   }
-  const PetscReal ft2 = Ft[0] * Ft[0] + Ft[1] * Ft[1] + Ft[2] * Ft[2], cap = c.mu * std::max(Fn, (PetscReal)0);
+  const PetscReal ft2 = Ft[0] * Ft[0] + Ft[1] * Ft[1] + Ft[2] * Ft[2], cap = c.mu * std::max(Fn + law.frictionOffset, (PetscReal)0);
   if (ft2 > cap * cap) {  // sliding
     const PetscReal s = cap / std::sqrt(ft2), invSt = St > 0 ? 1 / St : 0;
     for (int d = 0; d < 3; ++d) {

@@ -19,8 +19,10 @@
 
 namespace vofdem {
 
-// History values per contact: the tangential spring (m) and the rolling spring (N m), x,y,z each.
-inline constexpr int kSpringWidth = 6;
+// History values per contact: the tangential spring (m) and the rolling spring (N m), x,y,z each;
+// then the JKR contact radius (m) and whether the JKR bond holds (1) (P6).
+inline constexpr int kSpringWidth = 8;
+inline constexpr int kJkrRadius = 6, kJkrBonded = 7;
 
 // Springs of touching pairs keyed by the pair of global ids (lower id first), stored as seen from
 // the lower id; a wall contact is keyed by (particle id, -1 - wall). Lives only while lists are
