@@ -46,6 +46,12 @@ PetscErrorCode Dem::SetFromOptions(MPI_Comm comm) {
       PetscCall(opt.Real("-wall_surface_energy", "Surface energy of the walls (default: the particles'); w = gamma_p + gamma_w", "J/m^2", &wallSurfaceEnergy_,
                          RealRange::NonNegative()));
       if (jkr_ && surfaceEnergy_ == 0) VofdemInputError(comm, "option -dem_cohesion jkr needs -dem_surface_energy > 0");
+      vdw_.minGap = 0.165e-9;
+      vdw_.range  = 1e-6;
+      PetscCall(opt.Real("-hamaker", "Hamaker constant A of van der Waals attraction (P7); 0: none (regolith: 4.3e-20)", "J", &vdw_.hamaker, RealRange::NonNegative()));
+      PetscCall(opt.Real("-vdw_min_gap", "Gap z0 below which the van der Waals force is held constant (P7)", "m", &vdw_.minGap, RealRange::Positive()));
+      PetscCall(opt.Real("-vdw_range", "Gap beyond which van der Waals attraction is dropped", "m", &vdw_.range, RealRange::Positive()));
+      if (vdw_.hamaker > 0 && jkr_) VofdemInputError(comm, "options -dem_hamaker and -dem_cohesion jkr: choose one adhesion model");
     }
     PetscCall(opt.Bool("-limit_force", "Clip the normal contact force at zero: no tension from damping as a contact ends (LIGGGHTS' limitForce); the restitution then differs from -dem_restitution", &limitForce_));
     wallYoungs_   = material_.youngs;
@@ -116,6 +122,7 @@ PetscErrorCode Dem::SetUp(const Grid &grid, const PetscReal gravity[3], std::uin
   rayleighTime_ = hertz::RayleighTime(rMin_, m.density, m.youngs, m.poisson);
   // A JKR bond holds until the overlap falls to its break value, largest for the largest R* (a wall).
   if (jkr_) adhesionRange_ = -std::min(hertz::JkrBreakOverlap(pair_, rMax_ / 2), hertz::JkrBreakOverlap(wall_, rMax_));
+  if (vdw_.hamaker > 0) adhesionRange_ = vdw_.range;
   PetscCall(Rebuild());
   PetscCall(ComputeForces(0));
   PetscFunctionReturn(0);
@@ -237,7 +244,10 @@ PetscErrorCode Dem::View(PetscViewer viewer) const {
   if (jkr_)
     PetscCall(PetscViewerASCIIPrintf(viewer, "dem: adhesion: JKR (P6), surface energy %g J/m^2 (work of adhesion %g J/m^2), walls %g J/m^2; bonds break up to %g m apart\n",
                                      (double)surfaceEnergy_, (double)pair_.w, (double)wall_.w, (double)adhesionRange_));
-  PetscCall(PetscViewerASCIIPrintf(viewer, "dem: this build has no SJKR or van der Waals adhesion, STL or moving walls, periodic boundaries, several particle types (DEM engine issue)\n"));
+  if (vdw_.hamaker > 0)
+    PetscCall(PetscViewerASCIIPrintf(viewer, "dem: van der Waals (P7): Hamaker constant %g J, held below a gap of %g m, dropped beyond %g m\n", (double)vdw_.hamaker,
+                                     (double)vdw_.minGap, (double)vdw_.range));
+  PetscCall(PetscViewerASCIIPrintf(viewer, "dem: this build has no SJKR adhesion, STL or moving walls, periodic boundaries, several particle types (DEM engine issue)\n"));
   PetscFunctionReturn(0);
 }
 

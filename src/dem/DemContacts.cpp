@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cstring>
+#include <type_traits>
 #include <unordered_set>
 
 namespace vofdem {
@@ -145,13 +146,19 @@ PetscErrorCode Dem::ExchangeSprings(const std::vector<PetscInt64> &localIds) {
 
 PetscErrorCode Dem::ComputeForces(PetscReal dt) {
   PetscFunctionBeginUser;
-  // The rolling and cohesion models are chosen once per scene and bound here, outside the loops.
-  using R = hertz::Rolling;
+  // The rolling and adhesion models are chosen once per scene and bound here, outside the loops.
+  using R        = hertz::Rolling;
+  const bool vdw = vdw_.hamaker > 0;
+  auto       with = [&](auto rolling) {
+    constexpr R RM = decltype(rolling)::value;
+    if (jkr_) return ComputeForcesWith<RM, true, false>(dt);
+    return vdw ? ComputeForcesWith<RM, false, true>(dt) : ComputeForcesWith<RM, false, false>(dt);
+  };
   switch (rolling_) {
-  case R::None: PetscCall(jkr_ ? ComputeForcesWith<R::None, true>(dt) : ComputeForcesWith<R::None, false>(dt)); break;
-  case R::ConstantTorque: PetscCall(jkr_ ? ComputeForcesWith<R::ConstantTorque, true>(dt) : ComputeForcesWith<R::ConstantTorque, false>(dt)); break;
-  case R::Epsd: PetscCall(jkr_ ? ComputeForcesWith<R::Epsd, true>(dt) : ComputeForcesWith<R::Epsd, false>(dt)); break;
-  case R::Epsd2: PetscCall(jkr_ ? ComputeForcesWith<R::Epsd2, true>(dt) : ComputeForcesWith<R::Epsd2, false>(dt)); break;
+  case R::None: PetscCall(with(std::integral_constant<R, R::None>{})); break;
+  case R::ConstantTorque: PetscCall(with(std::integral_constant<R, R::ConstantTorque>{})); break;
+  case R::Epsd: PetscCall(with(std::integral_constant<R, R::Epsd>{})); break;
+  case R::Epsd2: PetscCall(with(std::integral_constant<R, R::Epsd2>{})); break;
   }
   PetscFunctionReturn(0);
 }
@@ -159,7 +166,7 @@ PetscErrorCode Dem::ComputeForces(PetscReal dt) {
 // Forces and torques on the local particles: gravity, the box faces, and the pairs of the list
 // (P3, P5). A pair is always evaluated from its lower id ("a") to its higher id ("b"), so a pair
 // that two ranks both evaluate (one particle a ghost) gives bit-identical results and springs there.
-template <hertz::Rolling RM, bool JKR>
+template <hertz::Rolling RM, bool JKR, bool VDW>
 PetscErrorCode Dem::ComputeForcesWith(PetscReal dt) {
   ParticleArrays a;
 
@@ -178,6 +185,11 @@ PetscErrorCode Dem::ComputeForcesWith(PetscReal dt) {
     PetscReal      *xi    = &walls_.spring[kSpringWidth * k];
     // In contact from touching on; a JKR bond holds until its break overlap (P6).
     const bool inContact = delta > 0 || (JKR && xi[kJkrBonded] != 0 && delta > hertz::JkrBreakOverlap(wall_, r));
+    if constexpr (VDW) {  // attraction towards the face across the gap -delta (P7, R* = R)
+      const PetscReal fv = hertz::VdwAttraction(vdw_, -delta, r);
+      a.f[3 * p + d] -= (face % 2 ? -1 : 1) * fv;
+      stats_.wallForce[face][d] += (face % 2 ? -1 : 1) * fv;
+    }
     if (!inContact) {
       if (walls_.touching[k]) std::fill(xi, xi + kSpringWidth, 0), walls_.touching[k] = 0;
       continue;
@@ -228,6 +240,16 @@ PetscErrorCode Dem::ComputeForcesWith(PetscReal dt) {
     const bool inContact =
       dist2 < rsum * rsum ||
       (JKR && stored[kJkrBonded] != 0 && rsum - std::sqrt(dist2) > hertz::JkrBreakOverlap(pair_, list_.rstar[k]));
+    if constexpr (VDW) {  // attraction along the line of centres across the gap (P7)
+      const PetscReal rangeSum = rsum + vdw_.range;
+      if (dist2 < rangeSum * rangeSum) {
+        const PetscReal dist = std::sqrt(dist2), fv = hertz::VdwAttraction(vdw_, dist - rsum, list_.rstar[k]) / dist;
+        if (ia < n)
+          for (int e = 0; e < 3; ++e) force[3 * ia + e] -= fv * dx[e];
+        if (ib < n)
+          for (int e = 0; e < 3; ++e) force[3 * ib + e] += fv * dx[e];
+      }
+    }
     if (!inContact) {
       if (list_.touching[k]) std::fill(stored, stored + kSpringWidth, 0), list_.touching[k] = 0;
       continue;

@@ -72,7 +72,7 @@ private:
   PetscErrorCode ReadParticles();                       // DemFill.cpp: -dem_particles_file
   PetscErrorCode Rebuild();                             // DemContacts.cpp: migrate, halo, list, springs
   PetscErrorCode ComputeForces(PetscReal dt);           // DemContacts.cpp
-  template <hertz::Rolling model, bool jkr>
+  template <hertz::Rolling model, bool jkr, bool vdw>
   PetscErrorCode ComputeForcesWith(PetscReal dt);
   PetscErrorCode ExchangeSprings(const std::vector<PetscInt64> &localIds);
 
@@ -102,7 +102,8 @@ private:
   hertz::Rolling       rolling_ = hertz::Rolling::None;
   PetscBool            jkr_ = PETSC_FALSE;                    // -dem_cohesion jkr (P6)
   PetscReal            surfaceEnergy_ = 0, wallSurfaceEnergy_ = -1;  // J/m^2, one surface
-  PetscReal            adhesionRange_ = 0;                    // m, largest |break overlap|: widens the cut-offs
+  PetscReal            adhesionRange_ = 0;                    // m, JKR break distance or vdW range: widens the cut-offs
+  hertz::VanDerWaals   vdw_{};                                // -dem_hamaker > 0 switches it on (P7)
   hertz::RollingParams rollingParams_{};
   hertz::PairMaterial pair_{}, wall_{};
   PetscReal     radius_     = 5e-4;  // m

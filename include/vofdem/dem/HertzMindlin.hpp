@@ -230,3 +230,23 @@ inline void RollingTorque(const RollingParams &p, PetscReal Fn, PetscReal kn, Pe
 
 }  // namespace vofdem::hertz
 
+namespace vofdem::hertz {
+
+// Van der Waals attraction between a sphere pair or a sphere and a wall (P7, Hamaker):
+// |F| = A R* / (6 z^2) for the gap z >= z0, held at its value at z0 below that (contact included),
+// zero from the range cut-off on. The largest attraction A R* / (6 z0^2) equals 2 pi w R* with
+// w = A / (12 pi z0^2). Returns the magnitude of the attraction.
+struct VanDerWaals {
+  PetscReal hamaker = 0;      // A, J
+  PetscReal minGap  = 0;      // z0, m
+  PetscReal range   = 0;      // cut-off gap, m
+};
+
+inline PetscReal VdwAttraction(const VanDerWaals &v, PetscReal gap, PetscReal Rstar) {
+  if (gap >= v.range) return 0;
+  const PetscReal z = std::max(gap, v.minGap);
+  return v.hamaker * Rstar / (6 * z * z);
+}
+
+}  // namespace vofdem::hertz
+

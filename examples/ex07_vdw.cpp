@@ -1,0 +1,89 @@
+static const char help[] = "Van der Waals attraction (P7, Hamaker) between two spheres and between a sphere and a wall.\n"
+                           "At rest at a set gap z the force is A R* / (6 z^2) for z0 <= z < range, A R* / (6 z0^2) below z0 (the\n"
+                           "largest attraction, 2 pi w R* with w = A / (12 pi z0^2)), and zero from the range on (within 1e-10).\n\n";
+
+#include "vofdem/core/Runtime.hpp"
+#include "vofdem/core/Simulation.hpp"
+
+#include <cstdio>
+
+static const PetscReal R = 5e-5, A = 4.3e-20, z0 = 0.165e-9, range = 1e-6;  // regolith values of seed 002
+
+// Force on particle 0 after one step from rest: two spheres about z = 5 mm (the rank boundary with
+// -grid_ranks 1,1,2) with the given gap, or one sphere at that gap above the floor. `realised` is
+// the gap the positions actually hold: near 5 mm a double carries ~1e-18 m of rounding, a relative
+// error of some 1e-9 in a 0.3 nm gap.
+static PetscErrorCode ForceAtGap(bool pair, PetscReal gap, PetscReal *force, PetscReal *realised) {
+  vofdem::Simulation sim;
+  PetscMPIInt        rank;
+  PetscReal          x[3], v[3], w[3], f[3];
+  PetscBool          found;
+  char               rows[256];
+
+  PetscFunctionBeginUser;
+  if (pair) std::snprintf(rows, sizeof rows, "x,y,z\n0.005,0.005,%.17g\n0.005,0.005,%.17g\n", 0.005 - R - gap / 2, 0.005 + R + gap / 2);
+  else std::snprintf(rows, sizeof rows, "x,y,z\n0.005,0.005,%.17g\n", R + gap);
+  PetscCallMPI(MPI_Comm_rank(PETSC_COMM_WORLD, &rank));
+  if (rank == 0) {
+    FILE *fp = std::fopen("ex07_particles.csv", "w");
+    PetscCheck(fp, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "cannot write ex07_particles.csv");
+    std::fputs(rows, fp);
+    std::fclose(fp);
+  }
+  PetscCallMPI(MPI_Barrier(PETSC_COMM_WORLD));
+  PetscCall(sim.Create(PETSC_COMM_WORLD));
+  PetscCall(sim.SetFromOptions());
+  PetscCall(sim.SetUp());
+  PetscCall(sim.Step());
+  PetscCall(sim.Particles()->FindParticle(0, x, v, &found, w, f));
+  *force = (pair ? f[2] : -f[2]) + 0.0;  // attraction: towards the partner (up) or the floor (down); + 0.0: no -0
+  if (pair) {
+    PetscReal x1[3];
+    PetscCall(sim.Particles()->FindParticle(1, x1, v, &found));
+    *realised = x1[2] - x[2] - 2 * R;
+  } else {
+    *realised = x[2] - R;
+  }
+  PetscCall(sim.Destroy());
+  PetscFunctionReturn(0);
+}
+
+static PetscErrorCode Run() {
+  PetscInt failures = 0;
+
+  PetscFunctionBeginUser;
+  // Very heavy spheres (density 1e15) do not move measurably in one 1e-9 s step.
+  PetscCall(PetscOptionsInsertString(nullptr, "-physics dem -grid_cells 2,2,2 -grid_upper 0.01,0.01,0.01 -gravity 0,0,0 -dem_radius 5e-5 -dem_density 1e15 "
+                                              "-dem_hamaker 4.3e-20 -dem_vdw_min_gap 0.165e-9 -dem_vdw_range 1e-6 -dem_particles_file ex07_particles.csv -dt 1e-9"));
+  for (bool pair : {true, false}) {
+    const PetscReal Rstar = pair ? R / 2 : R;
+    for (PetscReal gap : {0.5 * z0, 2 * z0, 1e-8, 1e-7, 5e-7, 2e-6}) {
+      PetscReal f, g;
+      PetscCall(ForceAtGap(pair, gap, &f, &g));
+      const PetscReal z = PetscMax(g, z0), exact = g >= range ? 0 : A * Rstar / (6 * z * z);
+      const PetscReal err = exact > 0 ? PetscAbsReal(f - exact) / exact : PetscAbsReal(f);
+      failures += err > 1e-10;
+      PetscCall(PetscPrintf(PETSC_COMM_WORLD, "%s, gap %.3e m: attraction %.10e N, A R*/(6 z^2) %.10e N %s\n", pair ? "two spheres" : "sphere and wall", (double)gap,
+                            (double)f, (double)exact, err > 1e-10 ? "FAIL" : "ok"));
+    }
+  }
+  if (failures) PetscCall(PetscPrintf(PETSC_COMM_WORLD, "FAILED: %d checks\n", (int)failures));
+  PetscFunctionReturn(failures ? PETSC_ERR_NOT_CONVERGED : 0);
+}
+
+int main(int argc, char **argv) {
+  if (int code = vofdem::Initialize(&argc, &argv, help)) return code;
+  return vofdem::Finalize(Run());
+}
+
+/*TEST
+  rtol: 1e-8
+  test:
+    suffix: 1
+    nsize: 1
+  test:
+    suffix: 2
+    nsize: 2
+    args: -grid_ranks 1,1,2
+    output_file: output/ex07_vdw_1.out
+TEST*/
