@@ -247,6 +247,17 @@ PetscErrorCode Dem::View(PetscViewer viewer) const {
   if (vdw_.hamaker > 0)
     PetscCall(PetscViewerASCIIPrintf(viewer, "dem: van der Waals (P7): Hamaker constant %g J, held below a gap of %g m, dropped beyond %g m\n", (double)vdw_.hamaker,
                                      (double)vdw_.minGap, (double)vdw_.range));
+  const PetscReal g = std::sqrt(gravity_[0] * gravity_[0] + gravity_[1] * gravity_[1] + gravity_[2] * gravity_[2]);
+  if ((jkr_ || vdw_.hamaker > 0) && g > 0 && rMax_ > 0) {
+    // Bond number K = pull-off force of two equal spheres / weight of one (P7): 1.5 pi w R* for JKR,
+    // A R* / (6 z0^2) for van der Waals, with R* = R/2.
+    auto bond = [&](PetscReal r) {
+      const PetscReal pull = jkr_ ? 1.5 * PETSC_PI * pair_.w * r / 2 : vdw_.hamaker * (r / 2) / (6 * vdw_.minGap * vdw_.minGap);
+      return pull / (material_.density * 4.0 / 3.0 * PETSC_PI * r * r * r * g);
+    };
+    PetscCall(PetscViewerASCIIPrintf(viewer, "dem: bond number (pull-off of two equal spheres / weight of one): %g for radius %g m, %g for radius %g m\n",
+                                     (double)bond(rMin_), (double)rMin_, (double)bond(rMax_), (double)rMax_));
+  }
   PetscCall(PetscViewerASCIIPrintf(viewer, "dem: this build has no SJKR adhesion, STL or moving walls, periodic boundaries, several particle types (DEM engine issue)\n"));
   PetscFunctionReturn(0);
 }
