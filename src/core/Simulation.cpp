@@ -89,7 +89,7 @@ PetscErrorCode Simulation::ChooseTimeStep() {
   PetscFunctionBeginUser;
   if (physics_.dem) {
     limit        = dem_->StableTimeStep();
-    dtLimitName_ = "dem (-dem_dt_factor x Rayleigh time, P9)";
+    dtLimitName_ = dem_->TimeStepBasis();
   }
   dt_ = limit;
   if (dtUser_ > 0) {

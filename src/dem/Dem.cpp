@@ -35,6 +35,15 @@ PetscErrorCode Dem::SetFromOptions(MPI_Comm comm) {
       PetscCall(opt.Real("-rolling_damping", "EPSD rolling damping as a fraction of critical", "-", &rollingParams_.eta, RealRange::NonNegative()));
     }
     {
+      static const std::vector<std::string> contacts = {"hertz", "linear"};
+      std::vector<std::string>              chosen   = {"hertz"};
+      PetscCall(opt.NameList("-contact", "Normal contact law: hertz (Hertz-Mindlin, P3) or linear (spring-dashpot, P4)", contacts, &chosen));
+      if (chosen.size() != 1) VofdemInputError(comm, "option -dem_contact: give one law (hertz or linear)");
+      linear_ = (PetscBool)(chosen[0] == "linear");
+      PetscCall(opt.Real("-linear_stiffness", "Normal stiffness k_n of the linear law (seed 002: 1e5)", "N/m", &linearKn_, RealRange::Positive()));
+      PetscCall(opt.Real("-linear_tangential_ratio", "k_t / k_n of the linear law (seed 002: 1)", "-", &linearKtRatio_, RealRange::Positive()));
+    }
+    {
       static const std::vector<std::string> models = {"none", "jkr"};
       std::vector<std::string>              chosen = {"none"};
       PetscCall(opt.NameList("-cohesion", "Adhesion between touching surfaces: none, jkr (JKR with hysteresis, P6)", models, &chosen));
@@ -52,6 +61,7 @@ PetscErrorCode Dem::SetFromOptions(MPI_Comm comm) {
       PetscCall(opt.Real("-vdw_min_gap", "Gap z0 below which the van der Waals force is held constant (P7)", "m", &vdw_.minGap, RealRange::Positive()));
       PetscCall(opt.Real("-vdw_range", "Gap beyond which van der Waals attraction is dropped", "m", &vdw_.range, RealRange::Positive()));
       if (vdw_.hamaker > 0 && jkr_) VofdemInputError(comm, "options -dem_hamaker and -dem_cohesion jkr: choose one adhesion model");
+      if (linear_ && jkr_) VofdemInputError(comm, "option -dem_cohesion jkr needs -dem_contact hertz (JKR is a Hertzian theory)");
     }
     PetscCall(opt.Bool("-limit_force", "Clip the normal contact force at zero: no tension from damping as a contact ends (LIGGGHTS' limitForce); the restitution then differs from -dem_restitution", &limitForce_));
     wallYoungs_   = material_.youngs;
@@ -98,6 +108,10 @@ PetscErrorCode Dem::SetUp(const Grid &grid, const PetscReal gravity[3], std::uin
   pair_ = hertz::MakePairMaterial(m.youngs, m.poisson, m.youngs, m.poisson, m.restitution, m.friction, limitForce_, jkr_ ? 2 * surfaceEnergy_ : 0);
   wall_ = hertz::MakePairMaterial(m.youngs, m.poisson, wallYoungs_, wallPoisson_, m.restitution, wallFriction_, limitForce_,
                                   jkr_ ? surfaceEnergy_ + wallSurfaceEnergy_ : 0);
+  if (linear_) {
+    pair_ = hertz::MakeLinearMaterial(m.restitution, m.friction, linearKtRatio_, limitForce_);
+    wall_ = hertz::MakeLinearMaterial(m.restitution, wallFriction_, linearKtRatio_, limitForce_);
+  }
   PetscClassId classId;
   PetscCall(PetscClassIdRegister("DEM", &classId));
   PetscCall(PetscLogEventRegister("DEMRebuild", classId, &evRebuild_));
@@ -120,6 +134,10 @@ PetscErrorCode Dem::SetUp(const Grid &grid, const PetscReal gravity[3], std::uin
     rMax_ = inserted_ ? global[1] : radius_;
   }
   rayleighTime_ = hertz::RayleighTime(rMin_, m.density, m.youngs, m.poisson);
+  // With the linear law the time scale is the contact duration of two equal smallest spheres,
+  // pi sqrt(m*/k_n) with m* = m_min/2: a tenth of it takes the Rayleigh time's place, so the default
+  // -dem_dt_factor 0.3 gives about 33 steps per contact.
+  if (linear_) rayleighTime_ = 0.1 * PETSC_PI * std::sqrt(m.density * 4.0 / 3.0 * PETSC_PI * rMin_ * rMin_ * rMin_ / (2 * linearKn_));
   // A JKR bond holds until the overlap falls to its break value, largest for the largest R* (a wall).
   if (jkr_) adhesionRange_ = -std::min(hertz::JkrBreakOverlap(pair_, rMax_ / 2), hertz::JkrBreakOverlap(wall_, rMax_));
   if (vdw_.hamaker > 0) adhesionRange_ = vdw_.range;
@@ -239,8 +257,11 @@ PetscErrorCode Dem::View(PetscViewer viewer) const {
                                    inserted_, (double)rMin_, (double)rMax_, (double)material_.density, (double)material_.youngs, (double)material_.poisson,
                                    (double)material_.restitution, (double)material_.friction, (double)rayleighTime_, (double)skin_));
   static const char *const rolling[] = {"none", "constant torque", "EPSD", "EPSD2 (LIGGGHTS)"};
-  PetscCall(PetscViewerASCIIPrintf(viewer, "dem: contacts: Hertz-Mindlin with damping, tangential springs and Coulomb friction between spheres and with the box faces (P3)%s; rolling resistance: %s, mu_r %g (P5)\n",
-                                   limitForce_ ? ", normal force clipped at zero" : "", rolling[(int)rolling_], (double)rollingParams_.mu));
+  char                     law[128];
+  if (linear_) std::snprintf(law, sizeof law, "linear spring-dashpot, k_n %g N/m, k_t/k_n %g (P4)", (double)linearKn_, (double)linearKtRatio_);
+  else std::snprintf(law, sizeof law, "Hertz-Mindlin (P3)");
+  PetscCall(PetscViewerASCIIPrintf(viewer, "dem: contacts: %s with damping, tangential springs and Coulomb friction between spheres and with the box faces%s; rolling resistance: %s, mu_r %g (P5)\n",
+                                   law, limitForce_ ? ", normal force clipped at zero" : "", rolling[(int)rolling_], (double)rollingParams_.mu));
   if (jkr_)
     PetscCall(PetscViewerASCIIPrintf(viewer, "dem: adhesion: JKR (P6), surface energy %g J/m^2 (work of adhesion %g J/m^2), walls %g J/m^2; bonds break up to %g m apart\n",
                                      (double)surfaceEnergy_, (double)pair_.w, (double)wall_.w, (double)adhesionRange_));

@@ -151,8 +151,9 @@ PetscErrorCode Dem::ComputeForces(PetscReal dt) {
   const bool vdw = vdw_.hamaker > 0;
   auto       with = [&](auto rolling) {
     constexpr R RM = decltype(rolling)::value;
-    if (jkr_) return ComputeForcesWith<RM, true, false>(dt);
-    return vdw ? ComputeForcesWith<RM, false, true>(dt) : ComputeForcesWith<RM, false, false>(dt);
+    if (jkr_) return ComputeForcesWith<RM, true, false, false>(dt);  // JKR only with Hertz
+    if (linear_) return vdw ? ComputeForcesWith<RM, false, true, true>(dt) : ComputeForcesWith<RM, false, false, true>(dt);
+    return vdw ? ComputeForcesWith<RM, false, true, false>(dt) : ComputeForcesWith<RM, false, false, false>(dt);
   };
   switch (rolling_) {
   case R::None: PetscCall(with(std::integral_constant<R, R::None>{})); break;
@@ -166,7 +167,7 @@ PetscErrorCode Dem::ComputeForces(PetscReal dt) {
 // Forces and torques on the local particles: gravity, the box faces, and the pairs of the list
 // (P3, P5). A pair is always evaluated from its lower id ("a") to its higher id ("b"), so a pair
 // that two ranks both evaluate (one particle a ghost) gives bit-identical results and springs there.
-template <hertz::Rolling RM, bool JKR, bool VDW>
+template <hertz::Rolling RM, bool JKR, bool VDW, bool LIN>
 PetscErrorCode Dem::ComputeForcesWith(PetscReal dt) {
   ParticleArrays a;
 
@@ -204,6 +205,8 @@ PetscErrorCode Dem::ComputeForcesWith(PetscReal dt) {
     if constexpr (JKR) {
       law             = hertz::JkrNormal(wall_, delta, r, &xi[kJkrRadius]);
       xi[kJkrBonded] = 1;
+    } else if constexpr (LIN) {
+      law = hertz::LinearNormal(linearKn_, delta);
     } else {
       law = hertz::HertzNormal(wall_, delta, r);
     }
@@ -214,7 +217,8 @@ PetscErrorCode Dem::ComputeForcesWith(PetscReal dt) {
     hertz::RollingTorque<RM>(rollingParams_, Fn, 2.0 / 3.0 * Sn, r, 1.4 * a.mass[p] * r * r, n, w, dt, xi + 3, M);
     for (int e = 0; e < 3; ++e) a.f[3 * p + e] += F[e], a.torque[3 * p + e] += tq[e] + M[e], stats_.wallForce[face][e] -= F[e];
     ++stats_.wallContacts;
-    if (!JKR) stats_.elastic += hertz::ElasticEnergy(Sn, delta);
+    if (LIN) stats_.elastic += 0.5 * linearKn_ * delta * delta;
+    else if (!JKR) stats_.elastic += hertz::ElasticEnergy(Sn, delta);
     stats_.maxOverlap = std::max(stats_.maxOverlap, delta / (2 * r));
   }
   const PetscInt n = a.n, ng = halo_.Count();
@@ -270,6 +274,8 @@ PetscErrorCode Dem::ComputeForcesWith(PetscReal dt) {
     if constexpr (JKR) {
       law             = hertz::JkrNormal(pair_, delta, Rstar, &xi[kJkrRadius]);
       xi[kJkrBonded] = 1;
+    } else if constexpr (LIN) {
+      law = hertz::LinearNormal(linearKn_, delta);
     } else {
       law = hertz::HertzNormal(pair_, delta, Rstar);
     }
@@ -291,7 +297,8 @@ PetscErrorCode Dem::ComputeForcesWith(PetscReal dt) {
     // A pair with a ghost is counted by both ranks: count it half on each.
     const bool both = ia < n && ib < n;
     stats_.pairContacts += both ? 2 : 1;
-    if (!JKR) stats_.elastic += (both ? 1.0 : 0.5) * hertz::ElasticEnergy(Sn, delta);
+    if (LIN) stats_.elastic += (both ? 1.0 : 0.5) * 0.5 * linearKn_ * delta * delta;
+    else if (!JKR) stats_.elastic += (both ? 1.0 : 0.5) * hertz::ElasticEnergy(Sn, delta);
     const PetscReal twoRmin = 2 * std::min(A.r, B.r);
     if (delta > stats_.maxOverlap * twoRmin) stats_.maxOverlap = delta / twoRmin;  // rarely: no division per contact
   }

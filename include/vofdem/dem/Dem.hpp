@@ -48,6 +48,8 @@ public:
   // Largest stable step: -dem_dt_factor times the Rayleigh time (P9).
   PetscReal StableTimeStep() const { return dtFactor_ * rayleighTime_; }
   PetscReal RayleighTime() const { return rayleighTime_; }
+  // What StableTimeStep() is a fraction of, for the banner.
+  const char *TimeStepBasis() const { return linear_ ? "dem (-dem_dt_factor x contact time/10 of the linear spring, P4)" : "dem (-dem_dt_factor x Rayleigh time, P9)"; }
   PetscErrorCode Step(PetscReal dt);  // one velocity-Verlet step
   PetscErrorCode Summarize(DemSummary *s) const;
   // Collective: writes every particle, in id order, as the CSV that -dem_particles_file reads
@@ -72,7 +74,7 @@ private:
   PetscErrorCode ReadParticles();                       // DemFill.cpp: -dem_particles_file
   PetscErrorCode Rebuild();                             // DemContacts.cpp: migrate, halo, list, springs
   PetscErrorCode ComputeForces(PetscReal dt);           // DemContacts.cpp
-  template <hertz::Rolling model, bool jkr, bool vdw>
+  template <hertz::Rolling model, bool jkr, bool vdw, bool linear>
   PetscErrorCode ComputeForcesWith(PetscReal dt);
   PetscErrorCode ExchangeSprings(const std::vector<PetscInt64> &localIds);
 
@@ -104,6 +106,8 @@ private:
   PetscReal            surfaceEnergy_ = 0, wallSurfaceEnergy_ = -1;  // J/m^2, one surface
   PetscReal            adhesionRange_ = 0;                    // m, JKR break distance or vdW range: widens the cut-offs
   hertz::VanDerWaals   vdw_{};                                // -dem_hamaker > 0 switches it on (P7)
+  PetscBool            linear_ = PETSC_FALSE;                 // -dem_contact linear (P4) instead of Hertz-Mindlin
+  PetscReal            linearKn_ = 1e5, linearKtRatio_ = 1;   // N/m; k_t / k_n
   hertz::RollingParams rollingParams_{};
   hertz::PairMaterial pair_{}, wall_{};
   PetscReal     radius_     = 5e-4;  // m

@@ -101,6 +101,19 @@ inline NormalLaw JkrNormal(const PairMaterial &c, PetscReal delta, PetscReal Rst
   return {4 * c.Estar * a3 / (3 * Rstar) - std::sqrt(8 * PETSC_PI * c.w * c.Estar * a3), 2 * c.Estar * x, 3 * PETSC_PI * c.w * Rstar};
 }
 
+// Linear spring-dashpot (P4): F = k_n delta with constant stiffnesses k_n, k_t = ratio k_n. The
+// damping -2 beta sqrt(k m*) then gives the restitution e exactly (no sqrt(5/6): that factor belongs
+// to Hertz' stiffness growing with the overlap).
+inline PairMaterial MakeLinearMaterial(PetscReal e, PetscReal mu, PetscReal tangentialRatio, bool limitForce = false) {
+  PairMaterial c{0, 0, DampingRatio(e), mu, limitForce, 0};
+  c.k5     = -2 * c.beta;
+  c.tStiff = tangentialRatio;
+  c.tOverN = std::sqrt(tangentialRatio);
+  return c;
+}
+
+inline NormalLaw LinearNormal(PetscReal kn, PetscReal delta) { return {kn * delta, kn, 0}; }
+
 // The overlap at which a JKR bond breaks under displacement control: -(3/4) (pi^2 w^2 R* / E*^2)^(1/3) (P6).
 inline PetscReal JkrBreakOverlap(const PairMaterial &c, PetscReal Rstar) {
   return -0.75 * std::cbrt(PETSC_PI * PETSC_PI * c.w * c.w * Rstar / (c.Estar * c.Estar));
