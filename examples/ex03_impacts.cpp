@@ -8,6 +8,7 @@ static const char help[] = "Verification D1 (two spheres) and D2 (oblique impact
 
 #include "vofdem/core/Runtime.hpp"
 #include "vofdem/core/Simulation.hpp"
+#include "vofdem/io/TextFile.hpp"
 
 #include <cstdio>
 #include <string>
@@ -20,19 +21,10 @@ static std::string Num(double v) {  // full precision (std::to_string prints 5.4
   return buf;
 }
 
-// Writes the particles (x,y,z,vx,vy,vz per row) on rank 0 and points -dem_particles_file at them.
+// Writes the particles (x,y,z,vx,vy,vz per row) and points -dem_particles_file at them.
 static PetscErrorCode UseParticles(const char *path, const std::string &rows) {
-  PetscMPIInt rank;
-
   PetscFunctionBeginUser;
-  PetscCallMPI(MPI_Comm_rank(PETSC_COMM_WORLD, &rank));
-  if (rank == 0) {
-    FILE *f = std::fopen(path, "w");
-    PetscCheck(f, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "cannot write %s", path);
-    std::fprintf(f, "x,y,z,vx,vy,vz\n%s", rows.c_str());
-    std::fclose(f);
-  }
-  PetscCallMPI(MPI_Barrier(PETSC_COMM_WORLD));
+  PetscCall(vofdem::WriteTextFile(PETSC_COMM_WORLD, path, "x,y,z,vx,vy,vz\n" + rows, "particle file"));
   PetscCall(PetscOptionsSetValue(nullptr, "-dem_particles_file", path));
   PetscFunctionReturn(0);
 }

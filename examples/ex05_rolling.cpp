@@ -6,6 +6,7 @@ static const char help[] = "Verification D5: rolling resistance (P5) of a sphere
 
 #include "vofdem/core/Runtime.hpp"
 #include "vofdem/core/Simulation.hpp"
+#include "vofdem/io/TextFile.hpp"
 
 #include <cstdio>
 #include <string>
@@ -17,7 +18,6 @@ struct Rolled {
 
 static PetscErrorCode Roll(const char *model, PetscReal R, PetscReal v0, PetscReal muR, PetscReal tEnd, Rolled *out) {
   vofdem::Simulation sim;
-  PetscMPIInt        rank;
   char               row[256];
   PetscReal          x[3], v[3], w[3];
   PetscBool          found;
@@ -26,14 +26,7 @@ static PetscErrorCode Roll(const char *model, PetscReal R, PetscReal v0, PetscRe
   // Rolling without slip from the start: v = (v0, 0, 0), w = (0, v0/R, 0), touching the floor; it rolls
   // about 1.8 mm, across x = 5 mm, the rank boundary with -grid_ranks 2,1,1.
   std::snprintf(row, sizeof row, "x,y,z,vx,vy,vz,wx,wy,wz\n%.17g,%.17g,%.17g,%.17g,0,0,0,%.17g,0\n", 0.0035, 0.005, R, v0, v0 / R);
-  PetscCallMPI(MPI_Comm_rank(PETSC_COMM_WORLD, &rank));
-  if (rank == 0) {
-    FILE *f = std::fopen("ex05_sphere.csv", "w");
-    PetscCheck(f, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "cannot write ex05_sphere.csv");
-    std::fputs(row, f);
-    std::fclose(f);
-  }
-  PetscCallMPI(MPI_Barrier(PETSC_COMM_WORLD));
+  PetscCall(vofdem::WriteTextFile(PETSC_COMM_WORLD, "ex05_sphere.csv", row, "particle file"));
   PetscCall(PetscOptionsSetValue(nullptr, "-dem_particles_file", "ex05_sphere.csv"));
   PetscCall(PetscOptionsSetValue(nullptr, "-dem_rolling", model));
   std::snprintf(row, sizeof row, "%.17g", (double)muR);

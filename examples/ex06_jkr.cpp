@@ -5,6 +5,7 @@ static const char help[] = "Verification D3: JKR adhesion (P6) pulled apart slow
 
 #include "vofdem/core/Runtime.hpp"
 #include "vofdem/core/Simulation.hpp"
+#include "vofdem/io/TextFile.hpp"
 
 #include <cstdio>
 #include <string>
@@ -17,17 +18,8 @@ struct Pulled {
 };
 
 static PetscErrorCode WriteParticles(const char *rows) {
-  PetscMPIInt rank;
-
   PetscFunctionBeginUser;
-  PetscCallMPI(MPI_Comm_rank(PETSC_COMM_WORLD, &rank));
-  if (rank == 0) {
-    FILE *f = std::fopen("ex06_particles.csv", "w");
-    PetscCheck(f, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "cannot write ex06_particles.csv");
-    std::fprintf(f, "x,y,z,vx,vy,vz\n%s", rows);
-    std::fclose(f);
-  }
-  PetscCallMPI(MPI_Barrier(PETSC_COMM_WORLD));
+  PetscCall(vofdem::WriteTextFile(PETSC_COMM_WORLD, "ex06_particles.csv", std::string("x,y,z,vx,vy,vz\n") + rows, "particle file"));
   PetscCall(PetscOptionsSetValue(nullptr, "-dem_particles_file", "ex06_particles.csv"));
   PetscFunctionReturn(0);
 }

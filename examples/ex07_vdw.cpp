@@ -4,6 +4,7 @@ static const char help[] = "Van der Waals attraction (P7, Hamaker) between two s
 
 #include "vofdem/core/Runtime.hpp"
 #include "vofdem/core/Simulation.hpp"
+#include "vofdem/io/TextFile.hpp"
 
 #include <cstdio>
 
@@ -15,7 +16,6 @@ static const PetscReal R = 5e-5, A = 4.3e-20, z0 = 0.165e-9, range = 1e-6;  // r
 // error of some 1e-9 in a 0.3 nm gap.
 static PetscErrorCode ForceAtGap(bool pair, PetscReal gap, PetscReal *force, PetscReal *realised) {
   vofdem::Simulation sim;
-  PetscMPIInt        rank;
   PetscReal          x[3], v[3], w[3], f[3];
   PetscBool          found;
   char               rows[256];
@@ -23,14 +23,7 @@ static PetscErrorCode ForceAtGap(bool pair, PetscReal gap, PetscReal *force, Pet
   PetscFunctionBeginUser;
   if (pair) std::snprintf(rows, sizeof rows, "x,y,z\n0.005,0.005,%.17g\n0.005,0.005,%.17g\n", 0.005 - R - gap / 2, 0.005 + R + gap / 2);
   else std::snprintf(rows, sizeof rows, "x,y,z\n0.005,0.005,%.17g\n", R + gap);
-  PetscCallMPI(MPI_Comm_rank(PETSC_COMM_WORLD, &rank));
-  if (rank == 0) {
-    FILE *fp = std::fopen("ex07_particles.csv", "w");
-    PetscCheck(fp, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "cannot write ex07_particles.csv");
-    std::fputs(rows, fp);
-    std::fclose(fp);
-  }
-  PetscCallMPI(MPI_Barrier(PETSC_COMM_WORLD));
+  PetscCall(vofdem::WriteTextFile(PETSC_COMM_WORLD, "ex07_particles.csv", rows, "particle file"));
   PetscCall(sim.Create(PETSC_COMM_WORLD));
   PetscCall(sim.SetFromOptions());
   PetscCall(sim.SetUp());

@@ -6,6 +6,7 @@ static const char help[] = "Verification of the linear spring-dashpot (P4): two 
 
 #include "vofdem/core/Runtime.hpp"
 #include "vofdem/core/Simulation.hpp"
+#include "vofdem/io/TextFile.hpp"
 
 #include <cstdio>
 
@@ -15,20 +16,13 @@ static const PetscReal R = 1e-3, rho = 2500, kn = 1e5, v0 = 0.5;
 // -grid_ranks 1,1,2); returns the restitution and the contact duration (gap crossings interpolated).
 static PetscErrorCode Collide(PetscReal e, PetscReal dt, PetscReal *restitution, PetscReal *duration) {
   vofdem::Simulation sim;
-  PetscMPIInt        rank;
   PetscReal          xa[3], va[3], xb[3], vb[3], g0 = 0, tStart = -1, tEnd = -1;
   PetscBool          found;
   char               buf[256];
 
   PetscFunctionBeginUser;
-  PetscCallMPI(MPI_Comm_rank(PETSC_COMM_WORLD, &rank));
-  if (rank == 0) {
-    FILE *f = std::fopen("ex08_particles.csv", "w");
-    PetscCheck(f, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "cannot write ex08_particles.csv");
-    std::fprintf(f, "x,y,z,vz\n0.005,0.005,0.003,%.17g\n0.005,0.005,0.007,%.17g\n", v0 / 2, -v0 / 2);
-    std::fclose(f);
-  }
-  PetscCallMPI(MPI_Barrier(PETSC_COMM_WORLD));
+  std::snprintf(buf, sizeof buf, "x,y,z,vz\n0.005,0.005,0.003,%.17g\n0.005,0.005,0.007,%.17g\n", v0 / 2, -v0 / 2);
+  PetscCall(vofdem::WriteTextFile(PETSC_COMM_WORLD, "ex08_particles.csv", buf, "particle file"));
   std::snprintf(buf, sizeof buf, "%.17g", (double)e);
   PetscCall(PetscOptionsSetValue(nullptr, "-dem_restitution", buf));
   std::snprintf(buf, sizeof buf, "%.17g", (double)dt);

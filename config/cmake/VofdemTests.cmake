@@ -60,6 +60,7 @@ vofdem_bad_input(fill_fractions     "option -dem_fill_mass_fractions: 1 fraction
 vofdem_bad_input(jkr_without_energy "option -dem_cohesion jkr needs -dem_surface_energy > 0" ${_dem} -dem_cohesion jkr)
 vofdem_bad_input(two_adhesions      "options -dem_hamaker and -dem_cohesion jkr: choose one adhesion model" ${_dem} -dem_cohesion jkr -dem_surface_energy 0.1 -dem_hamaker 1e-20)
 vofdem_bad_input(linear_with_jkr    "option -dem_cohesion jkr needs -dem_contact hertz" ${_dem} -dem_contact linear -dem_cohesion jkr -dem_surface_energy 0.1)
+vofdem_bad_input(save_unwritable    "option -dem_save_particles: cannot write ./proc/vofdem.csv." ${_dem} -dem_radius 1e-3 -dem_fill_count 3 -max_steps 1 -dem_save_particles /proc/vofdem.csv)
 vofdem_bad_input(rolling_unknown    "option -dem_rolling: unknown name 'epsd3'"     ${_dem} -dem_rolling epsd3)
 vofdem_bad_input(rolling_two        "option -dem_rolling: give one model"          ${_dem} -dem_rolling cdt,epsd)
 vofdem_bad_input(grid_ranks         "option -grid_ranks: 3 x 1 x 1 does not fit the 2 ranks" ${_dem} -grid_ranks 3,1,1)

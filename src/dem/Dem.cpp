@@ -2,6 +2,7 @@
 
 #include "vofdem/core/Options.hpp"
 #include "vofdem/core/Runtime.hpp"
+#include "vofdem/io/TextFile.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -118,6 +119,7 @@ PetscErrorCode Dem::SetUp(const Grid &grid, const PetscReal gravity[3], std::uin
   PetscCall(PetscLogEventRegister("DEMHaloRefresh", classId, &evHalo_));
   PetscCall(PetscLogEventRegister("DEMForces", classId, &evForces_));
   PetscCall(PetscLogEventRegister("DEMIntegrate", classId, &evIntegrate_));
+  if (!savePath_.empty()) PetscCall(CheckWritable(comm_, savePath_, "option -dem_save_particles"));
   PetscCall(swarm_.Create(grid));
   PetscCall(halo_.SetUp(grid));
   PetscCall(Fill(seed));

@@ -11,6 +11,20 @@ namespace vofdem {
 
 namespace {
 
+// The normal law of the scene's contact model at overlap delta (P3, P4, P6); a JKR contact keeps
+// its contact radius and bond flag in the history.
+template <bool JKR, bool LIN>
+inline hertz::NormalLaw NormalLawAt(const hertz::PairMaterial &c, PetscReal kLinear, PetscReal delta, PetscReal Rstar, PetscReal *history) {
+  if constexpr (JKR) {
+    history[kJkrBonded] = 1;
+    return hertz::JkrNormal(c, delta, Rstar, &history[kJkrRadius]);
+  } else if constexpr (LIN) {
+    return hertz::LinearNormal(kLinear, delta);
+  } else {
+    return hertz::HertzNormal(c, delta, Rstar);
+  }
+}
+
 inline void Cross(const PetscReal a[3], const PetscReal b[3], PetscReal c[3]) {
   c[0] = a[1] * b[2] - a[2] * b[1];
   c[1] = a[2] * b[0] - a[0] * b[2];
@@ -201,16 +215,8 @@ PetscErrorCode Dem::ComputeForcesWith(PetscReal dt) {
     for (int e = 0; e < 3; ++e) rn[e] = -r * n[e];  // centre to contact point
     Cross(w, rn, wxr);
     for (int e = 0; e < 3; ++e) vrel[e] = v[e] + wxr[e];
-    hertz::NormalLaw law;
-    if constexpr (JKR) {
-      law             = hertz::JkrNormal(wall_, delta, r, &xi[kJkrRadius]);
-      xi[kJkrBonded] = 1;
-    } else if constexpr (LIN) {
-      law = hertz::LinearNormal(linearKn_, delta);
-    } else {
-      law = hertz::HertzNormal(wall_, delta, r);
-    }
-    const PetscReal Sn = law.Sn, Fn = hertz::Contact(wall_, law, n, std::sqrt(a.mass[p]), vrel, dt, xi, F, Ft);
+    const hertz::NormalLaw law = NormalLawAt<JKR, LIN>(wall_, linearKn_, delta, r, xi);
+    const PetscReal        Sn = law.Sn, Fn = hertz::Contact(wall_, law, n, std::sqrt(a.mass[p]), vrel, dt, xi, F, Ft);
     Cross(rn, Ft, tq);
     // Rolling against the face: w_rel = w, I_r = I + m R^2 = 1.4 m R^2 about the contact; the
     // secant normal stiffness F_n,elastic / delta is (2/3) S_n.
@@ -270,16 +276,8 @@ PetscErrorCode Dem::ComputeForcesWith(PetscReal dt) {
     for (int e = 0; e < 3; ++e) nrm[e] = dx[e] * inv, rw[e] = A.r * A.w[e] + B.r * B.w[e], wrel[e] = A.w[e] - B.w[e];
     Cross(rw, nrm, wxn);
     for (int e = 0; e < 3; ++e) vrel[e] = A.v[e] - B.v[e] - wxn[e];  // surface of A against surface of B
-    hertz::NormalLaw law;
-    if constexpr (JKR) {
-      law             = hertz::JkrNormal(pair_, delta, Rstar, &xi[kJkrRadius]);
-      xi[kJkrBonded] = 1;
-    } else if constexpr (LIN) {
-      law = hertz::LinearNormal(linearKn_, delta);
-    } else {
-      law = hertz::HertzNormal(pair_, delta, Rstar);
-    }
-    const PetscReal Sn = law.Sn, Fn = hertz::Contact(pair_, law, nrm, list_.sqrtMstar[k], vrel, dt, xi, F, Ft);
+    const hertz::NormalLaw law = NormalLawAt<JKR, LIN>(pair_, linearKn_, delta, Rstar, xi);
+    const PetscReal        Sn = law.Sn, Fn = hertz::Contact(pair_, law, nrm, list_.sqrtMstar[k], vrel, dt, xi, F, Ft);
     Cross(nrm, Ft, nxF);
     if constexpr (RM != hertz::Rolling::None) {
       const PetscReal Ia = 1.4 * A.m * A.r * A.r, Ib = 1.4 * B.m * B.r * B.r;  // about the contact point

@@ -2,6 +2,7 @@
 
 #include "vofdem/core/Random.hpp"
 #include "vofdem/core/Runtime.hpp"
+#include "vofdem/io/TextFile.hpp"
 
 #include <algorithm>
 #include <array>
@@ -205,23 +206,19 @@ PetscErrorCode Dem::SaveParticles(const std::string &path) const {
     for (int q = 0; q < size; ++q) displs[q] = total, total += counts[q];
   all.resize(total);
   PetscCallMPI(MPI_Gatherv(mine.data(), n, MPIU_REAL, all.data(), counts.data(), displs.data(), MPIU_REAL, 0, comm_));
-  int ok = 1;
+  std::string text;
   if (rank == 0) {
     std::vector<std::array<PetscReal, W>> rows(total / W);
     for (size_t r = 0; r < rows.size(); ++r) std::copy(&all[W * r], &all[W * r] + W, rows[r].begin());
     std::sort(rows.begin(), rows.end(), [](const auto &x, const auto &y) { return x[0] < y[0]; });
-    const std::string tmp = path + ".tmp";
-    FILE             *f   = std::fopen(tmp.c_str(), "w");
-    ok                    = f != nullptr;
-    if (f) {
-      std::fprintf(f, "x,y,z,vx,vy,vz,wx,wy,wz,radius\n");
-      for (const auto &r : rows)
-        std::fprintf(f, "%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g\n", r[1], r[2], r[3], r[4], r[5], r[6], r[7], r[8], r[9], r[10]);
-      ok = std::fclose(f) == 0 && std::rename(tmp.c_str(), path.c_str()) == 0;
+    text = "x,y,z,vx,vy,vz,wx,wy,wz,radius\n";
+    char line[512];
+    for (const auto &r : rows) {
+      std::snprintf(line, sizeof line, "%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g\n", r[1], r[2], r[3], r[4], r[5], r[6], r[7], r[8], r[9], r[10]);
+      text += line;
     }
   }
-  PetscCallMPI(MPI_Bcast(&ok, 1, MPI_INT, 0, comm_));
-  if (!ok) VofdemInputError(comm_, "option -dem_save_particles: cannot write '%s'", path.c_str());
+  PetscCall(WriteTextFile(comm_, path, text, "option -dem_save_particles"));
   PetscFunctionReturn(0);
 }
 
