@@ -32,7 +32,7 @@ PetscErrorCode Dem::SetFromOptions(MPI_Comm comm) {
       rolling_ = chosen[0] == "cdt" ? hertz::Rolling::ConstantTorque
                : chosen[0] == "epsd" ? hertz::Rolling::Epsd
                : chosen[0] == "epsd2" ? hertz::Rolling::Epsd2 : hertz::Rolling::None;
-      PetscCall(opt.Real("-rolling_friction", "Rolling friction coefficient mu_r (P5)", "-", &rollingParams_.mu, RealRange::NonNegative()));
+      PetscCall(opt.Real("-rolling_friction", "Rolling friction coefficient mu_r (P5)", "-", &material_.rollingFriction, RealRange::NonNegative()));
       PetscCall(opt.Real("-rolling_damping", "EPSD rolling damping as a fraction of critical", "-", &rollingParams_.eta, RealRange::NonNegative()));
     }
     {
@@ -50,12 +50,10 @@ PetscErrorCode Dem::SetFromOptions(MPI_Comm comm) {
       PetscCall(opt.NameList("-cohesion", "Adhesion between touching surfaces: none, jkr (JKR with hysteresis, P6)", models, &chosen));
       if (chosen.size() != 1) VofdemInputError(comm, "option -dem_cohesion: give one model (none or jkr)");
       jkr_ = (PetscBool)(chosen[0] == "jkr");
-      PetscCall(opt.Real("-surface_energy", "Surface energy gamma of one particle surface; work of adhesion w = 2 gamma (P6)", "J/m^2", &surfaceEnergy_,
+      PetscCall(opt.Real("-surface_energy", "Surface energy gamma of one particle surface; work of adhesion w = 2 gamma (P6)", "J/m^2", &material_.surfaceEnergy,
                          RealRange::NonNegative()));
-      wallSurfaceEnergy_ = surfaceEnergy_;
-      PetscCall(opt.Real("-wall_surface_energy", "Surface energy of the walls (default: the particles'); w = gamma_p + gamma_w", "J/m^2", &wallSurfaceEnergy_,
+      PetscCall(opt.Real("-wall_surface_energy", "Surface energy of the walls (default: each particle type's); w = gamma_p + gamma_w", "J/m^2", &wallSurfaceEnergy_,
                          RealRange::NonNegative()));
-      if (jkr_ && surfaceEnergy_ == 0) VofdemInputError(comm, "option -dem_cohesion jkr needs -dem_surface_energy > 0");
       vdw_.minGap = 0.165e-9;
       vdw_.range  = 1e-6;
       PetscCall(opt.Real("-hamaker", "Hamaker constant A of van der Waals attraction (P7); 0: none (regolith: 4.3e-20)", "J", &vdw_.hamaker, RealRange::NonNegative()));
@@ -65,12 +63,12 @@ PetscErrorCode Dem::SetFromOptions(MPI_Comm comm) {
       if (linear_ && jkr_) VofdemInputError(comm, "option -dem_cohesion jkr needs -dem_contact hertz (JKR is a Hertzian theory)");
     }
     PetscCall(opt.Bool("-limit_force", "Clip the normal contact force at zero: no tension from damping as a contact ends (LIGGGHTS' limitForce); the restitution then differs from -dem_restitution", &limitForce_));
-    wallYoungs_   = material_.youngs;
-    wallPoisson_  = material_.poisson;
-    wallFriction_ = material_.friction;
-    PetscCall(opt.Real("-wall_youngs_modulus", "Young's modulus of the walls (default: the particles')", "Pa", &wallYoungs_, RealRange::Positive()));
-    PetscCall(opt.Real("-wall_poisson_ratio", "Poisson ratio of the walls (default: the particles')", "-", &wallPoisson_, RealRange::LeftOpen(-1, 0.5)));
-    PetscCall(opt.Real("-wall_friction", "Sliding friction coefficient against the walls (default: the particles')", "-", &wallFriction_, RealRange::NonNegative()));
+    PetscCall(opt.Real("-wall_youngs_modulus", "Young's modulus of the walls (default -1: each particle type's)", "Pa", &wallYoungs_));
+    PetscCall(opt.Real("-wall_poisson_ratio", "Poisson ratio of the walls (default -1: each particle type's)", "-", &wallPoisson_));
+    PetscCall(opt.Real("-wall_friction", "Sliding friction coefficient against the walls (default -1: each particle type's)", "-", &wallFriction_));
+    if (wallYoungs_ != -1 && !(wallYoungs_ > 0)) VofdemInputError(comm, "option -dem_wall_youngs_modulus: must be positive (or -1 for the particles')");
+    if (wallPoisson_ != -1 && !(wallPoisson_ > -1 && wallPoisson_ <= 0.5)) VofdemInputError(comm, "option -dem_wall_poisson_ratio: must be in (-1, 0.5] (or -1 for the particles')");
+    if (wallFriction_ != -1 && !(wallFriction_ >= 0)) VofdemInputError(comm, "option -dem_wall_friction: must be non-negative (or -1 for the particles')");
     skin_ = 0.4 * radius_;
     PetscCall(opt.Real("-skin", "Verlet skin: lists are rebuilt and particles migrate once one has moved half of it (default: 0.2 diameters)", "m", &skin_, RealRange::Positive()));
     PetscCall(opt.Real("-dt_factor", "Time step as a fraction of the Rayleigh time (P9)", "-", &dtFactor_, RealRange::LeftOpen(0, 1)));
@@ -90,9 +88,14 @@ PetscErrorCode Dem::SetFromOptions(MPI_Comm comm) {
       VofdemInputError(comm, "option -dem_fill_mass_fractions: %d fractions for %d radii in -dem_fill_radii", (int)fillMassFractions_.size(), (int)fillRadii_.size());
     PetscCall(opt.Real("-fill_velocity_spread", "Random part of the initial velocity: each component uniform in [-spread, spread]", "m/s", &fillSpread_, RealRange::NonNegative()));
     PetscCall(opt.String("-save_particles", "Write all particles at the end of the run to this CSV (the format -dem_particles_file reads, with radius)", &savePath_));
-    PetscCall(opt.String("-particles_file", "CSV of particles to insert after the fill; the header names the columns: x,y,z required, vx,vy,vz,wx,wy,wz,radius optional (m, m/s, rad/s)", &particlesFile_));
+    PetscCall(opt.String("-particles_file", "CSV of particles to insert after the fill; the header names the columns: x,y,z required, vx,vy,vz,wx,wy,wz,radius,type optional (m, m/s, rad/s, index into -dem_types)", &particlesFile_));
+    PetscCall(TypesFromOptions(PetscOptionsObject));
   }
   PetscOptionsEnd();
+  if (jkr_)
+    for (size_t t = 0; t < types_.size(); ++t)
+      if (types_[t].surfaceEnergy == 0)
+        VofdemInputError(comm, "option -dem_cohesion jkr needs a surface energy > 0 for every type (-dem_surface_energy or -dem_type_%s_surface_energy)", typeNames_[t].c_str());
   const PetscReal rFillMax = *std::max_element(fillRadii_.begin(), fillRadii_.end());
   if (fillSpacing_ == 0) fillSpacing_ = 2.2 * rFillMax;
   if (fillSpacing_ < 2 * rFillMax)
@@ -105,14 +108,13 @@ PetscErrorCode Dem::SetUp(const Grid &grid, const PetscReal gravity[3], std::uin
   PetscFunctionBeginUser;
   grid_ = &grid;
   std::copy(gravity, gravity + 3, gravity_);
-  const DemMaterial &m = material_;
-  pair_ = hertz::MakePairMaterial(m.youngs, m.poisson, m.youngs, m.poisson, m.restitution, m.friction, limitForce_, jkr_ ? 2 * surfaceEnergy_ : 0);
-  wall_ = hertz::MakePairMaterial(m.youngs, m.poisson, wallYoungs_, wallPoisson_, m.restitution, wallFriction_, limitForce_,
-                                  jkr_ ? surfaceEnergy_ + wallSurfaceEnergy_ : 0);
-  if (linear_) {
-    pair_ = hertz::MakeLinearMaterial(m.restitution, m.friction, linearKtRatio_, limitForce_);
-    wall_ = hertz::MakeLinearMaterial(m.restitution, wallFriction_, linearKtRatio_, limitForce_);
-  }
+  WallMaterial wall;
+  wall.youngs = wallYoungs_, wall.poisson = wallPoisson_, wall.friction = wallFriction_, wall.surfaceEnergy = wallSurfaceEnergy_;
+  table_.Build(types_, pairValues_, wall, linear_, linearKtRatio_, limitForce_, jkr_, rollingParams_.eta);
+  // The single-type fast path of the contact loop binds these.
+  pair_          = table_.Pair(0);
+  wall_          = table_.Wall(0);
+  rollingParams_ = table_.Rolling(0);
   PetscClassId classId;
   PetscCall(PetscClassIdRegister("DEM", &classId));
   PetscCall(PetscLogEventRegister("DEMRebuild", classId, &evRebuild_));
@@ -135,13 +137,22 @@ PetscErrorCode Dem::SetUp(const Grid &grid, const PetscReal gravity[3], std::uin
     rMin_ = inserted_ ? -global[0] : radius_;
     rMax_ = inserted_ ? global[1] : radius_;
   }
-  rayleighTime_ = hertz::RayleighTime(rMin_, m.density, m.youngs, m.poisson);
-  // With the linear law the time scale is the contact duration of two equal smallest spheres,
-  // pi sqrt(m*/k_n) with m* = m_min/2: a tenth of it takes the Rayleigh time's place, so the default
-  // -dem_dt_factor 0.3 gives about 33 steps per contact.
-  if (linear_) rayleighTime_ = 0.1 * PETSC_PI * std::sqrt(m.density * 4.0 / 3.0 * PETSC_PI * rMin_ * rMin_ * rMin_ / (2 * linearKn_));
+  // The smallest time scale over the types present in the scene's definition (P9, P4).
+  rayleighTime_ = PETSC_MAX_REAL;
+  adhesionRange_ = 0;
+  for (const DemMaterial &m : types_) {
+    // With the linear law the time scale is the contact duration of two equal smallest spheres,
+    // pi sqrt(m*/k_n) with m* = m_min/2: a tenth of it takes the Rayleigh time's place, so the default
+    // -dem_dt_factor 0.3 gives about 33 steps per contact.
+    const PetscReal tr = linear_ ? 0.1 * PETSC_PI * std::sqrt(m.density * 4.0 / 3.0 * PETSC_PI * rMin_ * rMin_ * rMin_ / (2 * linearKn_))
+                                 : hertz::RayleighTime(rMin_, m.density, m.youngs, m.poisson);
+    rayleighTime_ = std::min(rayleighTime_, tr);
+  }
   // A JKR bond holds until the overlap falls to its break value, largest for the largest R* (a wall).
-  if (jkr_) adhesionRange_ = -std::min(hertz::JkrBreakOverlap(pair_, rMax_ / 2), hertz::JkrBreakOverlap(wall_, rMax_));
+  if (jkr_) {
+    for (const auto &c : table_.Pairs()) adhesionRange_ = std::max(adhesionRange_, -hertz::JkrBreakOverlap(c, rMax_ / 2));
+    for (PetscInt t = 0; t < table_.Count(); ++t) adhesionRange_ = std::max(adhesionRange_, -hertz::JkrBreakOverlap(table_.Wall(t), rMax_));
+  }
   if (vdw_.hamaker > 0) adhesionRange_ = vdw_.range;
   PetscCall(Rebuild());
   PetscCall(ComputeForces(0));
@@ -258,15 +269,31 @@ PetscErrorCode Dem::View(PetscViewer viewer) const {
   PetscCall(PetscViewerASCIIPrintf(viewer, "dem: %" PetscInt_FMT " spheres of radius %g to %g m, density %g kg/m^3, E %g Pa, nu %g, e %g, mu %g; Rayleigh time %g s; skin %g m\n",
                                    inserted_, (double)rMin_, (double)rMax_, (double)material_.density, (double)material_.youngs, (double)material_.poisson,
                                    (double)material_.restitution, (double)material_.friction, (double)rayleighTime_, (double)skin_));
+  if (types_.size() > 1) {
+    const PetscInt nt = (PetscInt)types_.size();
+    for (PetscInt t = 0; t < nt; ++t) {
+      const DemMaterial &m = types_[t];
+      PetscCall(PetscViewerASCIIPrintf(viewer, "dem: type %" PetscInt_FMT " '%s': density %g kg/m^3, E %g Pa, nu %g, e %g, mu %g, mu_r %g, gamma %g J/m^2\n", t,
+                                       typeNames_[t].c_str(), (double)m.density, (double)m.youngs, (double)m.poisson, (double)m.restitution, (double)m.friction,
+                                       (double)m.rollingFriction, (double)m.surfaceEnergy));
+    }
+    for (PetscInt i = 0; i < nt; ++i)
+      for (PetscInt j = i + 1; j < nt; ++j) {
+        const PetscInt k = table_.PairIndex(i, j);
+        PetscCall(PetscViewerASCIIPrintf(viewer, "dem: pair %s-%s: E* %g Pa, e %g, mu %g, mu_r %g%s\n", typeNames_[i].c_str(), typeNames_[j].c_str(),
+                                         (double)table_.Pair(k).Estar, (double)table_.Restitution(k), (double)table_.Pair(k).mu, (double)table_.Rolling(k).mu,
+                                         pairValues_[k].restitution < 0 || pairValues_[k].friction < 0 ? " (unset values: mean of the two types)" : ""));
+      }
+  }
   static const char *const rolling[] = {"none", "constant torque", "EPSD", "EPSD2 (LIGGGHTS)"};
   char                     law[128];
   if (linear_) std::snprintf(law, sizeof law, "linear spring-dashpot, k_n %g N/m, k_t/k_n %g (P4)", (double)linearKn_, (double)linearKtRatio_);
   else std::snprintf(law, sizeof law, "Hertz-Mindlin (P3)");
   PetscCall(PetscViewerASCIIPrintf(viewer, "dem: contacts: %s with damping, tangential springs and Coulomb friction between spheres and with the box faces%s; rolling resistance: %s, mu_r %g (P5)\n",
-                                   law, limitForce_ ? ", normal force clipped at zero" : "", rolling[(int)rolling_], (double)rollingParams_.mu));
+                                   law, limitForce_ ? ", normal force clipped at zero" : "", rolling[(int)rolling_], (double)material_.rollingFriction));
   if (jkr_)
     PetscCall(PetscViewerASCIIPrintf(viewer, "dem: adhesion: JKR (P6), surface energy %g J/m^2 (work of adhesion %g J/m^2), walls %g J/m^2; bonds break up to %g m apart\n",
-                                     (double)surfaceEnergy_, (double)pair_.w, (double)wall_.w, (double)adhesionRange_));
+                                     (double)material_.surfaceEnergy, (double)pair_.w, (double)wall_.w, (double)adhesionRange_));
   if (vdw_.hamaker > 0)
     PetscCall(PetscViewerASCIIPrintf(viewer, "dem: van der Waals (P7): Hamaker constant %g J, held below a gap of %g m, dropped beyond %g m\n", (double)vdw_.hamaker,
                                      (double)vdw_.minGap, (double)vdw_.range));
@@ -281,7 +308,7 @@ PetscErrorCode Dem::View(PetscViewer viewer) const {
     PetscCall(PetscViewerASCIIPrintf(viewer, "dem: bond number (pull-off of two equal spheres / weight of one): %g for radius %g m, %g for radius %g m\n",
                                      (double)bond(rMin_), (double)rMin_, (double)bond(rMax_), (double)rMax_));
   }
-  PetscCall(PetscViewerASCIIPrintf(viewer, "dem: this build has no SJKR adhesion, STL or moving walls, periodic boundaries, several particle types (DEM engine issue)\n"));
+  PetscCall(PetscViewerASCIIPrintf(viewer, "dem: this build has no SJKR adhesion, STL or moving walls, periodic boundaries, (DEM engine issue)\n"));
   PetscFunctionReturn(0);
 }
 

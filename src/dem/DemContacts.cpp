@@ -71,7 +71,7 @@ PetscErrorCode Dem::Rebuild() {
   grid_->LocalBox(lo, hi);
   PetscCall(swarm_.GetArrays(&a));
   PetscCall(list_.Build(a.n, a.x, a.radius, a.mass, a.id, halo_.Count(), halo_.x.data(), halo_.radius.data(), halo_.mass.data(), halo_.id.data(),
-                        cutoff, skin_ + adhesionRange_, lo, hi));
+                        cutoff, skin_ + adhesionRange_, lo, hi, PairTags{a.type, halo_.type.data(), a.clump, halo_.clump.data(), table_.Count()}));
   for (size_t k = 0; k < list_.Size() && !springs_.empty(); ++k) {
     const auto it = springs_.find({idOf(list_.first[k]), idOf(list_.second[k])});  // lower id first
     if (it != springs_.end()) {
@@ -165,9 +165,14 @@ PetscErrorCode Dem::ComputeForces(PetscReal dt) {
   const bool vdw = vdw_.hamaker > 0;
   auto       with = [&](auto rolling) {
     constexpr R RM = decltype(rolling)::value;
-    if (jkr_) return ComputeForcesWith<RM, true, false, false>(dt);  // JKR only with Hertz
-    if (linear_) return vdw ? ComputeForcesWith<RM, false, true, true>(dt) : ComputeForcesWith<RM, false, false, true>(dt);
-    return vdw ? ComputeForcesWith<RM, false, true, false>(dt) : ComputeForcesWith<RM, false, false, false>(dt);
+    if (table_.Count() > 1) {  // several types: each pair's constants from the table
+      if (jkr_) return ComputeForcesWith<RM, true, false, false, true>(dt);
+      if (linear_) return vdw ? ComputeForcesWith<RM, false, true, true, true>(dt) : ComputeForcesWith<RM, false, false, true, true>(dt);
+      return vdw ? ComputeForcesWith<RM, false, true, false, true>(dt) : ComputeForcesWith<RM, false, false, false, true>(dt);
+    }
+    if (jkr_) return ComputeForcesWith<RM, true, false, false, false>(dt);  // JKR only with Hertz
+    if (linear_) return vdw ? ComputeForcesWith<RM, false, true, true, false>(dt) : ComputeForcesWith<RM, false, false, true, false>(dt);
+    return vdw ? ComputeForcesWith<RM, false, true, false, false>(dt) : ComputeForcesWith<RM, false, false, false, false>(dt);
   };
   switch (rolling_) {
   case R::None: PetscCall(with(std::integral_constant<R, R::None>{})); break;
@@ -181,7 +186,9 @@ PetscErrorCode Dem::ComputeForces(PetscReal dt) {
 // Forces and torques on the local particles: gravity, the box faces, and the pairs of the list
 // (P3, P5). A pair is always evaluated from its lower id ("a") to its higher id ("b"), so a pair
 // that two ranks both evaluate (one particle a ghost) gives bit-identical results and springs there.
-template <hertz::Rolling RM, bool JKR, bool VDW, bool LIN>
+// MULTI: several particle types, whose pair constants come from the MaterialTable; a single type
+// keeps them in registers for the whole loop.
+template <hertz::Rolling RM, bool JKR, bool VDW, bool LIN, bool MULTI>
 PetscErrorCode Dem::ComputeForcesWith(PetscReal dt) {
   ParticleArrays a;
 
@@ -199,7 +206,8 @@ PetscErrorCode Dem::ComputeForcesWith(PetscReal dt) {
     const PetscReal delta = r - (face % 2 ? hi[d] - x[d] : x[d] - lo[d]);
     PetscReal      *xi    = &walls_.spring[kSpringWidth * k];
     // In contact from touching on; a JKR bond holds until its break overlap (P6).
-    const bool inContact = delta > 0 || (JKR && xi[kJkrBonded] != 0 && delta > hertz::JkrBreakOverlap(wall_, r));
+    const hertz::PairMaterial &wm = MULTI ? table_.Wall(a.type[p]) : wall_;
+    const bool inContact = delta > 0 || (JKR && xi[kJkrBonded] != 0 && delta > hertz::JkrBreakOverlap(wm, r));
     if constexpr (VDW) {  // attraction towards the face across the gap -delta (P7, R* = R)
       const PetscReal fv = hertz::VdwAttraction(vdw_, -delta, r);
       a.f[3 * p + d] -= (face % 2 ? -1 : 1) * fv;
@@ -215,12 +223,12 @@ PetscErrorCode Dem::ComputeForcesWith(PetscReal dt) {
     for (int e = 0; e < 3; ++e) rn[e] = -r * n[e];  // centre to contact point
     Cross(w, rn, wxr);
     for (int e = 0; e < 3; ++e) vrel[e] = v[e] + wxr[e];
-    const hertz::NormalLaw law = NormalLawAt<JKR, LIN>(wall_, linearKn_, delta, r, xi);
-    const PetscReal        Sn = law.Sn, Fn = hertz::Contact(wall_, law, n, std::sqrt(a.mass[p]), vrel, dt, xi, F, Ft);
+    const hertz::NormalLaw law = NormalLawAt<JKR, LIN>(wm, linearKn_, delta, r, xi);
+    const PetscReal        Sn = law.Sn, Fn = hertz::Contact(wm, law, n, std::sqrt(a.mass[p]), vrel, dt, xi, F, Ft);
     Cross(rn, Ft, tq);
     // Rolling against the face: w_rel = w, I_r = I + m R^2 = 1.4 m R^2 about the contact; the
     // secant normal stiffness F_n,elastic / delta is (2/3) S_n.
-    hertz::RollingTorque<RM>(rollingParams_, Fn, 2.0 / 3.0 * Sn, r, 1.4 * a.mass[p] * r * r, n, w, dt, xi + 3, M);
+    hertz::RollingTorque<RM>(MULTI ? table_.WallRolling(a.type[p]) : rollingParams_, Fn, 2.0 / 3.0 * Sn, r, 1.4 * a.mass[p] * r * r, n, w, dt, xi + 3, M);
     for (int e = 0; e < 3; ++e) a.f[3 * p + e] += F[e], a.torque[3 * p + e] += tq[e] + M[e], stats_.wallForce[face][e] -= F[e];
     ++stats_.wallContacts;
     if (LIN) stats_.elastic += 0.5 * linearKn_ * delta * delta;
@@ -246,10 +254,11 @@ PetscErrorCode Dem::ComputeForcesWith(PetscReal dt) {
     const PetscReal  dx[3] = {xa[0] - xb[0], xa[1] - xb[1], xa[2] - xb[2]};
     const PetscReal  dist2 = dx[0] * dx[0] + dx[1] * dx[1] + dx[2] * dx[2], rsum = hot_[ia].r + hot_[ib].r;
     PetscReal       *stored = &list_.spring[kSpringWidth * k];
+    const hertz::PairMaterial &pm = MULTI ? table_.Pair(list_.material[k]) : pair_;
     // In contact from touching on; a JKR bond holds until its break overlap (P6).
     const bool inContact =
       dist2 < rsum * rsum ||
-      (JKR && stored[kJkrBonded] != 0 && rsum - std::sqrt(dist2) > hertz::JkrBreakOverlap(pair_, list_.rstar[k]));
+      (JKR && stored[kJkrBonded] != 0 && rsum - std::sqrt(dist2) > hertz::JkrBreakOverlap(pm, list_.rstar[k]));
     if constexpr (VDW) {  // attraction along the line of centres across the gap (P7)
       const PetscReal rangeSum = rsum + vdw_.range;
       if (dist2 < rangeSum * rangeSum) {
@@ -276,12 +285,12 @@ PetscErrorCode Dem::ComputeForcesWith(PetscReal dt) {
     for (int e = 0; e < 3; ++e) nrm[e] = dx[e] * inv, rw[e] = A.r * A.w[e] + B.r * B.w[e], wrel[e] = A.w[e] - B.w[e];
     Cross(rw, nrm, wxn);
     for (int e = 0; e < 3; ++e) vrel[e] = A.v[e] - B.v[e] - wxn[e];  // surface of A against surface of B
-    const hertz::NormalLaw law = NormalLawAt<JKR, LIN>(pair_, linearKn_, delta, Rstar, xi);
-    const PetscReal        Sn = law.Sn, Fn = hertz::Contact(pair_, law, nrm, list_.sqrtMstar[k], vrel, dt, xi, F, Ft);
+    const hertz::NormalLaw law = NormalLawAt<JKR, LIN>(pm, linearKn_, delta, Rstar, xi);
+    const PetscReal        Sn = law.Sn, Fn = hertz::Contact(pm, law, nrm, list_.sqrtMstar[k], vrel, dt, xi, F, Ft);
     Cross(nrm, Ft, nxF);
     if constexpr (RM != hertz::Rolling::None) {
       const PetscReal Ia = 1.4 * A.m * A.r * A.r, Ib = 1.4 * B.m * B.r * B.r;  // about the contact point
-      hertz::RollingTorque<RM>(rollingParams_, Fn, 2.0 / 3.0 * Sn, Rstar, Ia * Ib / (Ia + Ib), nrm, wrel, dt, xi + 3, M);
+      hertz::RollingTorque<RM>(MULTI ? table_.Rolling(list_.material[k]) : rollingParams_, Fn, 2.0 / 3.0 * Sn, Rstar, Ia * Ib / (Ia + Ib), nrm, wrel, dt, xi + 3, M);
     } else {
       M[0] = M[1] = M[2] = 0;
     }

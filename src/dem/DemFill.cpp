@@ -86,8 +86,10 @@ PetscErrorCode Dem::Fill(std::uint64_t seed) {
     for (int d = 0; d < 3; ++d) a.omega[3 * p + d] = a.torque[3 * p + d] = 0;
     const PetscReal r = radiusOf(id);
     a.radius[p]       = r;
-    a.mass[p]         = material_.density * 4.0 / 3.0 * PETSC_PI * r * r * r;
+    a.mass[p]         = types_[fillType_].density * 4.0 / 3.0 * PETSC_PI * r * r * r;
     a.id[p]           = id;
+    a.type[p]         = fillType_;
+    a.clump[p]        = -1;
     ++p;
   }
   PetscCall(swarm_.RestoreArrays(&a));
@@ -103,8 +105,8 @@ PetscErrorCode Dem::Fill(std::uint64_t seed) {
 // owns, so the result does not depend on the rank count. A bad file is an input error naming file
 // and line; so is a particle outside the box or cut deeply by a face.
 PetscErrorCode Dem::ReadParticles() {
-  static const char *const names[] = {"x", "y", "z", "vx", "vy", "vz", "wx", "wy", "wz", "radius"};
-  constexpr int            kCols   = 10;
+  static const char *const names[] = {"x", "y", "z", "vx", "vy", "vz", "wx", "wy", "wz", "radius", "type"};
+  constexpr int            kCols   = 11;
 
   PetscFunctionBeginUser;
   if (particlesFile_.empty()) PetscFunctionReturn(0);
@@ -126,7 +128,7 @@ PetscErrorCode Dem::ReadParticles() {
     int q = -1;
     for (int i = 0; i < kCols; ++i)
       if (c == names[i]) q = i;
-    if (q < 0) VofdemInputError(comm_, "%s:1: unknown column '%s' (known: x,y,z,vx,vy,vz,wx,wy,wz,radius)", particlesFile_.c_str(), c.c_str());
+    if (q < 0) VofdemInputError(comm_, "%s:1: unknown column '%s' (known: x,y,z,vx,vy,vz,wx,wy,wz,radius,type)", particlesFile_.c_str(), c.c_str());
     column.push_back(q);
   }
   for (int q = 0; q < 3; ++q)
@@ -146,6 +148,8 @@ PetscErrorCode Dem::ReadParticles() {
     }
     if (!ok) VofdemInputError(comm_, "%s:%d: expected %d comma-separated numbers, as the header names", particlesFile_.c_str(), lineNo, (int)column.size());
     if (!(r[9] > 0)) VofdemInputError(comm_, "%s:%d: the radius must be positive", particlesFile_.c_str(), lineNo);
+    if (!(r[10] >= 0 && r[10] < (PetscReal)types_.size() && r[10] == std::floor(r[10])))
+      VofdemInputError(comm_, "%s:%d: the type must be an index into -dem_types, 0 to %d", particlesFile_.c_str(), lineNo, (int)types_.size() - 1);
     // A settled particle rests with a small overlap on a wall: accept up to 5 % of the radius.
     const PetscReal inside = 0.95 * r[9];
     for (int d = 0; d < 3; ++d)
@@ -170,8 +174,10 @@ PetscErrorCode Dem::ReadParticles() {
       a.f[3 * p + d] = a.torque[3 * p + d] = 0;
     }
     a.radius[p] = r[9];
-    a.mass[p]   = material_.density * 4.0 / 3.0 * PETSC_PI * r[9] * r[9] * r[9];
+    a.type[p]   = (PetscInt)r[10];
+    a.mass[p]   = types_[a.type[p]].density * 4.0 / 3.0 * PETSC_PI * r[9] * r[9] * r[9];
     a.id[p]     = start + (PetscInt64)k;
+    a.clump[p]  = -1;
     ++p;
   }
   PetscCall(swarm_.RestoreArrays(&a));
@@ -185,7 +191,7 @@ PetscErrorCode Dem::SaveParticles(const std::string &path) const {
   std::vector<PetscReal>    mine;
   std::vector<PetscReal>    all;
   std::vector<PetscMPIInt>  counts, displs;
-  constexpr int             W = 11;  // id (as a real: exact below 2^53) + 9 values + radius
+  constexpr int             W = 12;  // id (as a real: exact below 2^53) + 9 values + radius + type
 
   PetscFunctionBeginUser;
   PetscCallMPI(MPI_Comm_rank(comm_, &rank));
@@ -196,6 +202,7 @@ PetscErrorCode Dem::SaveParticles(const std::string &path) const {
     mine[W * p] = (PetscReal)a.id[p];
     for (int d = 0; d < 3; ++d) mine[W * p + 1 + d] = a.x[3 * p + d], mine[W * p + 4 + d] = a.v[3 * p + d], mine[W * p + 7 + d] = a.omega[3 * p + d];
     mine[W * p + 10] = a.radius[p];
+    mine[W * p + 11] = (PetscReal)a.type[p];
   }
   PetscCall(swarm_.RestoreArrays(&a));
   PetscMPIInt n = (PetscMPIInt)mine.size();
@@ -211,10 +218,10 @@ PetscErrorCode Dem::SaveParticles(const std::string &path) const {
     std::vector<std::array<PetscReal, W>> rows(total / W);
     for (size_t r = 0; r < rows.size(); ++r) std::copy(&all[W * r], &all[W * r] + W, rows[r].begin());
     std::sort(rows.begin(), rows.end(), [](const auto &x, const auto &y) { return x[0] < y[0]; });
-    text = "x,y,z,vx,vy,vz,wx,wy,wz,radius\n";
+    text = "x,y,z,vx,vy,vz,wx,wy,wz,radius,type\n";
     char line[512];
     for (const auto &r : rows) {
-      std::snprintf(line, sizeof line, "%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g\n", r[1], r[2], r[3], r[4], r[5], r[6], r[7], r[8], r[9], r[10]);
+      std::snprintf(line, sizeof line, "%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%d\n", r[1], r[2], r[3], r[4], r[5], r[6], r[7], r[8], r[9], r[10], (int)r[11]);
       text += line;
     }
   }

@@ -27,7 +27,7 @@ inline PetscReal BoxDistance2(const std::array<PetscReal, 6> &a, const std::arra
   return s;
 }
 
-constexpr int kFull = 13;    // x3 v3 omega3 radius mass id(bits)
+constexpr int kFull = 14;    // x3 v3 omega3 radius mass id(bits) type clump(bits)
 constexpr int kMoving = 9;   // x3 v3 omega3
 
 }  // namespace
@@ -102,6 +102,7 @@ PetscErrorCode Halo::Exchange(const ParticleArrays &a, const PetscReal *om, bool
     PetscInt total = 0;
     for (int q = 0; q < nq; ++q) total += recvCount_[q];
     x.resize(3 * total), v.resize(3 * total), omega.resize(3 * total), radius.resize(total), mass.resize(total), id.resize(total);
+    type.resize(total), clump.resize(total);
   }
   size_t sendTotal = 0, recvTotal = 0;
   for (int q = 0; q < nq; ++q) sendTotal += send_[q].size(), recvTotal += recvCount_[q];
@@ -115,7 +116,8 @@ PetscErrorCode Halo::Exchange(const ParticleArrays &a, const PetscReal *om, bool
         s[9]  = a.radius[p];
         s[10] = a.mass[p];
         std::memcpy(&s[11], &a.id[p], sizeof(PetscInt64));  // the id's bits, not its value
-        s[12] = 0;
+        s[12] = (PetscReal)a.type[p];  // exact: a small integer
+        std::memcpy(&s[13], &a.clump[p], sizeof(PetscInt64));
       }
       s += width;
     }
@@ -132,6 +134,8 @@ PetscErrorCode Halo::Exchange(const ParticleArrays &a, const PetscReal *om, bool
       radius[g] = r[9];
       mass[g]   = r[10];
       std::memcpy(&id[g], &r[11], sizeof(PetscInt64));
+      type[g] = (PetscInt)r[12];
+      std::memcpy(&clump[g], &r[13], sizeof(PetscInt64));
     }
   }
   PetscFunctionReturn(0);

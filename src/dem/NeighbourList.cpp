@@ -8,7 +8,7 @@ namespace vofdem {
 PetscErrorCode NeighbourList::Build(PetscInt nLocal, const PetscReal *xLocal, const PetscReal *rLocal, const PetscReal *mLocal,
                                     const PetscInt64 *idLocal, PetscInt nGhost, const PetscReal *xGhost, const PetscReal *rGhost,
                                     const PetscReal *mGhost, const PetscInt64 *idGhost, PetscReal cutoff, PetscReal skin,
-                                    const PetscReal lo[3], const PetscReal hi[3]) {
+                                    const PetscReal lo[3], const PetscReal hi[3], const PairTags &tags) {
   PetscFunctionBeginUser;
   const PetscInt n = nLocal + nGhost;
   PetscInt       nc[3];
@@ -42,8 +42,10 @@ PetscErrorCode NeighbourList::Build(PetscInt nLocal, const PetscReal *xLocal, co
   first.clear();
   second.clear();
   auto rad = [&](PetscInt p) { return p < nLocal ? rLocal[p] : rGhost[p - nLocal]; };
+  const bool clumped = tags.clumpLocal != nullptr;
   for (PetscInt i = 0; i < nLocal; ++i) {
     const PetscReal *xi = pos(i), ri = rLocal[i] + skin;
+    const PetscInt64 clumpI = clumped ? tags.clumpLocal[i] : -1;
     PetscInt         c[3];
     cellOf(xi, c);
     for (PetscInt dz = -1; dz <= 1; ++dz)
@@ -55,6 +57,7 @@ PetscErrorCode NeighbourList::Build(PetscInt nLocal, const PetscReal *xLocal, co
           for (PetscInt k = cellStart_[cell]; k < cellStart_[cell + 1]; ++k) {
             const PetscInt j = order_[k];
             if (j < nLocal && j <= i) continue;  // each local pair once; ghost pairs from the local side
+            if (clumped && clumpI >= 0 && clumpI == (j < nLocal ? tags.clumpLocal[j] : tags.clumpGhost[j - nLocal])) continue;  // one rigid body (P10)
             const PetscReal *xj = pos(j);
             const PetscReal  ex = xi[0] - xj[0], ey = xi[1] - xj[1], ez = xi[2] - xj[2], c = ri + rad(j);
             if (ex * ex + ey * ey + ez * ez < c * c) {
@@ -68,6 +71,7 @@ PetscErrorCode NeighbourList::Build(PetscInt nLocal, const PetscReal *xLocal, co
   touching.assign(first.size(), 0);
   rstar.resize(first.size());
   sqrtMstar.resize(first.size());
+  material.assign(first.size(), 0);
   for (size_t k = 0; k < first.size(); ++k) {
     // Lower global id first (see the header).
     const PetscInt64 idi = idLocal[first[k]], idj = second[k] < nLocal ? idLocal[second[k]] : idGhost[second[k] - nLocal];
@@ -77,6 +81,10 @@ PetscErrorCode NeighbourList::Build(PetscInt nLocal, const PetscReal *xLocal, co
     const PetscReal rj = j < nLocal ? rLocal[j] : rGhost[j - nLocal], mj = j < nLocal ? mLocal[j] : mGhost[j - nLocal];
     rstar[k]     = ri * rj / (ri + rj);
     sqrtMstar[k] = std::sqrt(mi * mj / (mi + mj));
+    if (tags.typeLocal) {
+      const PetscInt ti = i < nLocal ? tags.typeLocal[i] : tags.typeGhost[i - nLocal], tj = j < nLocal ? tags.typeLocal[j] : tags.typeGhost[j - nLocal];
+      material[k] = ti * tags.typeCount + tj;
+    }
   }
   PetscFunctionReturn(0);
 }

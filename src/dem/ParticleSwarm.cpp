@@ -20,6 +20,8 @@ PetscErrorCode ParticleSwarm::Create(const Grid &grid) {
   PetscCall(DMSwarmRegisterPetscDatatypeField(swarm_, field::reference, 3, PETSC_REAL));
   PetscCall(DMSwarmRegisterPetscDatatypeField(swarm_, field::omega, 3, PETSC_REAL));
   PetscCall(DMSwarmRegisterPetscDatatypeField(swarm_, field::torque, 3, PETSC_REAL));
+  PetscCall(DMSwarmRegisterPetscDatatypeField(swarm_, field::type, 1, PETSC_INT));
+  PetscCall(DMSwarmRegisterPetscDatatypeField(swarm_, field::clump, 1, PETSC_INT64));
 
   PetscCall(DMSwarmFinalizeFieldRegister(swarm_));
   PetscCall(DMSwarmSetLocalSizes(swarm_, 0, 64));
@@ -44,6 +46,8 @@ PetscErrorCode ParticleSwarm::GetArrays(ParticleArrays *a) const {
   PetscCall(DMSwarmGetField(swarm_, field::reference, nullptr, nullptr, (void **)&a->reference));
   PetscCall(DMSwarmGetField(swarm_, field::omega, nullptr, nullptr, (void **)&a->omega));
   PetscCall(DMSwarmGetField(swarm_, field::torque, nullptr, nullptr, (void **)&a->torque));
+  PetscCall(DMSwarmGetField(swarm_, field::type, nullptr, nullptr, (void **)&a->type));
+  PetscCall(DMSwarmGetField(swarm_, field::clump, nullptr, nullptr, (void **)&a->clump));
 
   PetscFunctionReturn(0);
 }
@@ -51,6 +55,8 @@ PetscErrorCode ParticleSwarm::GetArrays(ParticleArrays *a) const {
 PetscErrorCode ParticleSwarm::RestoreArrays(ParticleArrays *a) const {
   PetscFunctionBeginUser;
 
+  PetscCall(DMSwarmRestoreField(swarm_, field::clump, nullptr, nullptr, (void **)&a->clump));
+  PetscCall(DMSwarmRestoreField(swarm_, field::type, nullptr, nullptr, (void **)&a->type));
   PetscCall(DMSwarmRestoreField(swarm_, field::torque, nullptr, nullptr, (void **)&a->torque));
   PetscCall(DMSwarmRestoreField(swarm_, field::omega, nullptr, nullptr, (void **)&a->omega));
   PetscCall(DMSwarmRestoreField(swarm_, field::reference, nullptr, nullptr, (void **)&a->reference));

@@ -8,6 +8,7 @@
 
 #include "vofdem/dem/Halo.hpp"
 #include "vofdem/dem/HertzMindlin.hpp"
+#include "vofdem/dem/Materials.hpp"
 #include "vofdem/dem/NeighbourList.hpp"
 #include "vofdem/dem/ParticleSwarm.hpp"
 #include "vofdem/grid/Grid.hpp"
@@ -17,14 +18,6 @@
 #include <vector>
 
 namespace vofdem {
-
-struct DemMaterial {
-  PetscReal density     = 2500;  // kg/m^3
-  PetscReal youngs      = 1e8;   // Pa
-  PetscReal poisson     = 0.28;  // -
-  PetscReal restitution = 0.5;   // -
-  PetscReal friction    = 0.5;   // sliding friction coefficient mu_s
-};
 
 // Global totals over all ranks, for monitors and tests.
 struct DemSummary {
@@ -63,7 +56,12 @@ public:
   // found is false on all ranks when no rank has it.
   PetscErrorCode FindParticle(std::int64_t id, PetscReal x[3], PetscReal v[3], PetscBool *found, PetscReal omega[3] = nullptr,
                               PetscReal force[3] = nullptr) const;
-  const DemMaterial &Material() const { return material_; }
+  const DemMaterial &Material() const { return material_; }  // the default type's (type 0 when -dem_types is not given)
+  // Particle types (-dem_types): names, materials and the mixed pair table.
+  PetscInt                        TypeCount() const { return (PetscInt)typeNames_.size(); }
+  const std::vector<std::string> &TypeNames() const { return typeNames_; }
+  const DemMaterial              &TypeMaterial(PetscInt t) const { return types_[t]; }
+  const MaterialTable            &Materials() const { return table_; }
   PetscReal          Radius() const { return radius_; }  // -dem_radius: the single size, and the default one
   PetscReal          MinRadius() const { return rMin_; }
   PetscReal          MaxRadius() const { return rMax_; }
@@ -74,8 +72,10 @@ private:
   PetscErrorCode ReadParticles();                       // DemFill.cpp: -dem_particles_file
   PetscErrorCode Rebuild();                             // DemContacts.cpp: migrate, halo, list, springs
   PetscErrorCode ComputeForces(PetscReal dt);           // DemContacts.cpp
-  template <hertz::Rolling model, bool jkr, bool vdw, bool linear>
+  template <hertz::Rolling model, bool jkr, bool vdw, bool linear, bool multi>
   PetscErrorCode ComputeForcesWith(PetscReal dt);
+  PetscErrorCode TypesFromOptions(PetscOptionItems *items);  // Dem.cpp: -dem_types, -dem_type_*, -dem_pair_*
+  PetscInt       TypeIndex(const std::string &name) const;    // -1 when unknown
   PetscErrorCode ExchangeSprings(const std::vector<PetscInt64> &localIds);
 
   // Per-evaluation contact statistics of this rank (summed over ranks by Summarize).
@@ -89,6 +89,7 @@ private:
   struct HotParticle {
     PetscReal x[3], v[3], w[3], r, m;
   };
+  // Rolling parameters of the single-type fast path; the pair table otherwise.
   std::vector<HotParticle> hot_;
 
   const Grid   *grid_ = nullptr;
@@ -98,7 +99,12 @@ private:
   WallList      walls_;
   ContactHistory springs_;  // only during Rebuild()
   LocalStats    stats_;
-  DemMaterial   material_;
+  DemMaterial   material_;  // -dem_density etc.: the default type, and what -dem_types start from
+  std::vector<std::string> typeNames_;  // -dem_types; {"default"} without it
+  std::vector<DemMaterial> types_;
+  std::vector<PairValues>  pairValues_;  // nt*nt, given pair values (< 0: mixed)
+  MaterialTable            table_;
+  PetscInt                 fillType_ = 0;  // -dem_fill_type
   PetscReal     wallYoungs_ = -1, wallPoisson_ = -1, wallFriction_ = -1;  // default: the particles'
   PetscBool     limitForce_ = PETSC_FALSE;
   hertz::Rolling       rolling_ = hertz::Rolling::None;

@@ -26,7 +26,8 @@ public:
 
   // Ghost state, structure of arrays; vectors hold x,y,z per ghost.
   std::vector<PetscReal>  x, v, omega, radius, mass;
-  std::vector<PetscInt64> id;
+  std::vector<PetscInt64> id, clump;
+  std::vector<PetscInt>   type;
 
 private:
   PetscErrorCode Exchange(const ParticleArrays &a, const PetscReal *omega, bool full);

@@ -38,6 +38,14 @@ struct PairKeyHash {
 };
 using ContactHistory = std::unordered_map<PairKey, std::array<PetscReal, kSpringWidth>, PairKeyHash>;
 
+// What a pair needs besides geometry: the particles' types (for the pair's material) and clump ids
+// (spheres of one rigid clump never touch each other, P10). Local then ghost arrays.
+struct PairTags {
+  const PetscInt   *typeLocal = nullptr, *typeGhost = nullptr;
+  const PetscInt64 *clumpLocal = nullptr, *clumpGhost = nullptr;
+  PetscInt          typeCount = 1;
+};
+
 class NeighbourList {
 public:
   // Builds the pairs among nLocal local and nGhost ghost particles with r_i + r_j + skin, binning
@@ -45,13 +53,14 @@ public:
   // ghost) also give each pair its R*, m*.
   PetscErrorCode Build(PetscInt nLocal, const PetscReal *xLocal, const PetscReal *rLocal, const PetscReal *mLocal, const PetscInt64 *idLocal,
                        PetscInt nGhost, const PetscReal *xGhost, const PetscReal *rGhost, const PetscReal *mGhost, const PetscInt64 *idGhost,
-                       PetscReal cutoff, PetscReal skin, const PetscReal lo[3], const PetscReal hi[3]);
+                       PetscReal cutoff, PetscReal skin, const PetscReal lo[3], const PetscReal hi[3], const PairTags &tags = {});
 
   size_t Size() const { return first.size(); }
   std::vector<PetscInt>  first, second;  // the pairs
   std::vector<PetscReal> spring;         // kSpringWidth per pair, as seen from the lower id
   std::vector<char>      touching;       // the pair touched at the last evaluation (its springs may be non-zero)
   std::vector<PetscReal> rstar, sqrtMstar;  // R* and sqrt(m*) of the pair: fixed while the list lives
+  std::vector<PetscInt>  material;          // index of the pair of types into the MaterialTable
 
 private:
   std::vector<PetscInt> cellStart_, cellOf_, order_;

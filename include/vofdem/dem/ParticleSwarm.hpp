@@ -20,6 +20,8 @@ inline constexpr const char *id       = "id";                  // global id, Pet
 inline constexpr const char *reference = "reference";          // m, position at the last migration
 inline constexpr const char *omega    = "omega";               // rad/s, angular velocity
 inline constexpr const char *torque   = "torque";              // N m, total torque of the last evaluation
+inline constexpr const char *type     = "type";                // particle type (index into -dem_types), PetscInt
+inline constexpr const char *clump    = "clump";               // id of the rigid clump the sphere belongs to, -1: none (P10), PetscInt64
 }  // namespace field
 
 // Every field of the local particles at once, for loops over particles (structure of arrays;
@@ -28,7 +30,8 @@ struct ParticleArrays {
   PetscInt    n = 0;
   PetscReal  *x = nullptr, *v = nullptr, *f = nullptr, *radius = nullptr, *mass = nullptr, *reference = nullptr;
   PetscReal  *omega = nullptr, *torque = nullptr;
-  PetscInt64 *id = nullptr;
+  PetscInt64 *id = nullptr, *clump = nullptr;
+  PetscInt   *type = nullptr;
 };
 
 class ParticleSwarm {
