@@ -71,3 +71,5 @@ vofdem_bad_input(material_number    "option -dem_type_a_material: .*material-not
 vofdem_bad_input(fill_type_unknown  "option -dem_fill_type: no type 'steel' in -dem_types" ${_dem} -dem_types glass -dem_fill_type steel)
 vofdem_bad_input(type_name          "option -dem_types: 'a-b' is not a type name" ${_dem} -dem_types a-b)
 vofdem_bad_input(pair_restitution   "option -dem_pair_a_b_restitution: must be in \\(0, 1\\]" ${_dem} -dem_types a,b -dem_pair_a_b_restitution 2)
+vofdem_bad_input(sjkr_without_k     "option -dem_cohesion sjkr needs -dem_cohesion_energy_density > 0" ${_dem} -dem_cohesion sjkr)
+vofdem_bad_input(lubrication_gaps   "option -dem_lubrication_max_gap: 1e-06 m must exceed -dem_lubrication_min_gap 1e-05 m" ${_dem} -dem_lubrication_viscosity 1e-3 -dem_lubrication_min_gap 1e-5 -dem_lubrication_max_gap 1e-6)

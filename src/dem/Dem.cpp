@@ -45,11 +45,18 @@ PetscErrorCode Dem::SetFromOptions(MPI_Comm comm) {
       PetscCall(opt.Real("-linear_tangential_ratio", "k_t / k_n of the linear law (seed 002: 1)", "-", &linearKtRatio_, RealRange::Positive()));
     }
     {
-      static const std::vector<std::string> models = {"none", "jkr"};
+      static const std::vector<std::string> models = {"none", "jkr", "sjkr"};
       std::vector<std::string>              chosen = {"none"};
-      PetscCall(opt.NameList("-cohesion", "Adhesion between touching surfaces: none, jkr (JKR with hysteresis, P6)", models, &chosen));
-      if (chosen.size() != 1) VofdemInputError(comm, "option -dem_cohesion: give one model (none or jkr)");
-      jkr_ = (PetscBool)(chosen[0] == "jkr");
+      PetscCall(opt.NameList("-cohesion", "Adhesion between touching surfaces: none, jkr (JKR with hysteresis, P6), sjkr (LIGGGHTS' simplified JKR, F = k A)", models, &chosen));
+      if (chosen.size() != 1) VofdemInputError(comm, "option -dem_cohesion: give one model (none, jkr or sjkr)");
+      jkr_  = (PetscBool)(chosen[0] == "jkr");
+      sjkr_ = (PetscBool)(chosen[0] == "sjkr");
+      PetscCall(opt.Real("-cohesion_energy_density", "SJKR cohesion energy density k: F = k A_overlap (P6; LIGGGHTS' cohesionEnergyDensity)", "J/m^3", &sjkrDensity_,
+                         RealRange::NonNegative()));
+      if (sjkr_ && sjkrDensity_ == 0) VofdemInputError(comm, "option -dem_cohesion sjkr needs -dem_cohesion_energy_density > 0");
+      PetscCall(opt.Real("-surface_energy_modulus", "Young's modulus at which the surface energies were measured: when given, each is scaled to the "
+                                                   "modulus in use by (E'/E)^(2/5) (P9, Haervig et al. 2017); 0: they are given for the modulus in use and are never scaled",
+                         "Pa", &surfaceEnergyModulus_, RealRange::NonNegative()));
       PetscCall(opt.Real("-surface_energy", "Surface energy gamma of one particle surface; work of adhesion w = 2 gamma (P6)", "J/m^2", &material_.surfaceEnergy,
                          RealRange::NonNegative()));
       PetscCall(opt.Real("-wall_surface_energy", "Surface energy of the walls (default: each particle type's); w = gamma_p + gamma_w", "J/m^2", &wallSurfaceEnergy_,
@@ -59,7 +66,16 @@ PetscErrorCode Dem::SetFromOptions(MPI_Comm comm) {
       PetscCall(opt.Real("-hamaker", "Hamaker constant A of van der Waals attraction (P7); 0: none (regolith: 4.3e-20)", "J", &vdw_.hamaker, RealRange::NonNegative()));
       PetscCall(opt.Real("-vdw_min_gap", "Gap z0 below which the van der Waals force is held constant (P7)", "m", &vdw_.minGap, RealRange::Positive()));
       PetscCall(opt.Real("-vdw_range", "Gap beyond which van der Waals attraction is dropped", "m", &vdw_.range, RealRange::Positive()));
-      if (vdw_.hamaker > 0 && jkr_) VofdemInputError(comm, "options -dem_hamaker and -dem_cohesion jkr: choose one adhesion model");
+      if (vdw_.hamaker > 0 && (jkr_ || sjkr_)) VofdemInputError(comm, "options -dem_hamaker and -dem_cohesion %s: choose one adhesion model", jkr_ ? "jkr" : "sjkr");
+      PetscCall(opt.Real("-lubrication_viscosity", "Viscosity of the liquid between particles for lubrication (P8); 0: none", "Pa s", &lubrication_.viscosity,
+                         RealRange::NonNegative()));
+      lubrication_.minGap = 0.01 * radius_;
+      lubrication_.maxGap = 0.2 * radius_;
+      PetscCall(opt.Real("-lubrication_min_gap", "Gap below which lubrication is held at its value (default 0.01 -dem_radius)", "m", &lubrication_.minGap,
+                         RealRange::Positive()));
+      PetscCall(opt.Real("-lubrication_max_gap", "Gap beyond which lubrication is dropped (default 0.2 -dem_radius)", "m", &lubrication_.maxGap, RealRange::Positive()));
+      if (lubrication_.viscosity > 0 && !(lubrication_.maxGap > lubrication_.minGap))
+        VofdemInputError(comm, "option -dem_lubrication_max_gap: %g m must exceed -dem_lubrication_min_gap %g m", (double)lubrication_.maxGap, (double)lubrication_.minGap);
       if (linear_ && jkr_) VofdemInputError(comm, "option -dem_cohesion jkr needs -dem_contact hertz (JKR is a Hertzian theory)");
     }
     PetscCall(opt.Bool("-limit_force", "Clip the normal contact force at zero: no tension from damping as a contact ends (LIGGGHTS' limitForce); the restitution then differs from -dem_restitution", &limitForce_));
@@ -92,6 +108,18 @@ PetscErrorCode Dem::SetFromOptions(MPI_Comm comm) {
     PetscCall(TypesFromOptions(PetscOptionsObject));
   }
   PetscOptionsEnd();
+  if (surfaceEnergyModulus_ > 0) {  // P9: measured gamma -> gamma' = gamma (E'/E)^(2/5) for each type's E'
+    measuredSurfaceEnergy_.resize(types_.size());
+    for (size_t t = 0; t < types_.size(); ++t) {
+      measuredSurfaceEnergy_[t] = types_[t].surfaceEnergy;
+      types_[t].surfaceEnergy *= std::pow(types_[t].youngs / surfaceEnergyModulus_, 0.4);
+    }
+    material_.surfaceEnergy = types_[0].surfaceEnergy;
+    if (wallSurfaceEnergy_ >= 0) {
+      PetscReal Ewall = wallYoungs_ > 0 ? wallYoungs_ : types_[0].youngs;
+      wallSurfaceEnergy_ *= std::pow(Ewall / surfaceEnergyModulus_, 0.4);
+    }
+  }
   if (jkr_)
     for (size_t t = 0; t < types_.size(); ++t)
       if (types_[t].surfaceEnergy == 0)
@@ -154,6 +182,7 @@ PetscErrorCode Dem::SetUp(const Grid &grid, const PetscReal gravity[3], std::uin
     for (PetscInt t = 0; t < table_.Count(); ++t) adhesionRange_ = std::max(adhesionRange_, -hertz::JkrBreakOverlap(table_.Wall(t), rMax_));
   }
   if (vdw_.hamaker > 0) adhesionRange_ = vdw_.range;
+  if (lubrication_.viscosity > 0) adhesionRange_ = std::max(adhesionRange_, lubrication_.maxGap);
   PetscCall(Rebuild());
   PetscCall(ComputeForces(0));
   PetscFunctionReturn(0);
@@ -294,6 +323,15 @@ PetscErrorCode Dem::View(PetscViewer viewer) const {
   if (jkr_)
     PetscCall(PetscViewerASCIIPrintf(viewer, "dem: adhesion: JKR (P6), surface energy %g J/m^2 (work of adhesion %g J/m^2), walls %g J/m^2; bonds break up to %g m apart\n",
                                      (double)material_.surfaceEnergy, (double)pair_.w, (double)wall_.w, (double)adhesionRange_));
+  if (sjkr_) PetscCall(PetscViewerASCIIPrintf(viewer, "dem: adhesion: SJKR (LIGGGHTS' cohesion sjkr, P6), cohesion energy density %g J/m^3\n", (double)sjkrDensity_));
+  if (surfaceEnergyModulus_ > 0)
+    for (size_t t = 0; t < types_.size(); ++t)
+      PetscCall(PetscViewerASCIIPrintf(viewer, "dem: surface energy of type '%s': %g J/m^2 measured at E = %g Pa, scaled to %g J/m^2 for E' = %g Pa (P9: (E'/E)^(2/5), keeps the energy of separation, not the pull-off force)\n",
+                                       typeNames_[t].c_str(), (double)measuredSurfaceEnergy_[t], (double)surfaceEnergyModulus_, (double)types_[t].surfaceEnergy,
+                                       (double)types_[t].youngs));
+  if (lubrication_.viscosity > 0)
+    PetscCall(PetscViewerASCIIPrintf(viewer, "dem: lubrication (P8): viscosity %g Pa s across gaps from %g m (held below) to %g m\n", (double)lubrication_.viscosity,
+                                     (double)lubrication_.minGap, (double)lubrication_.maxGap));
   if (vdw_.hamaker > 0)
     PetscCall(PetscViewerASCIIPrintf(viewer, "dem: van der Waals (P7): Hamaker constant %g J, held below a gap of %g m, dropped beyond %g m\n", (double)vdw_.hamaker,
                                      (double)vdw_.minGap, (double)vdw_.range));

@@ -13,9 +13,11 @@ namespace {
 
 // The normal law of the scene's contact model at overlap delta (P3, P4, P6); a JKR contact keeps
 // its contact radius and bond flag in the history.
-template <bool JKR, bool LIN>
+constexpr int kNoCohesion = 0, kJkr = 1, kSjkr = 2;
+
+template <int COH, bool LIN>
 inline hertz::NormalLaw NormalLawAt(const hertz::PairMaterial &c, PetscReal kLinear, PetscReal delta, PetscReal Rstar, PetscReal *history) {
-  if constexpr (JKR) {
+  if constexpr (COH == kJkr) {
     history[kJkrBonded] = 1;
     return hertz::JkrNormal(c, delta, Rstar, &history[kJkrRadius]);
   } else if constexpr (LIN) {
@@ -161,24 +163,28 @@ PetscErrorCode Dem::ExchangeSprings(const std::vector<PetscInt64> &localIds) {
 PetscErrorCode Dem::ComputeForces(PetscReal dt) {
   PetscFunctionBeginUser;
   // The rolling and adhesion models are chosen once per scene and bound here, outside the loops.
-  using R        = hertz::Rolling;
-  const bool vdw = vdw_.hamaker > 0;
-  auto       with = [&](auto rolling) {
-    constexpr R RM = decltype(rolling)::value;
-    if (table_.Count() > 1) {  // several types: each pair's constants from the table
-      if (jkr_) return ComputeForcesWith<RM, true, false, false, true>(dt);
-      if (linear_) return vdw ? ComputeForcesWith<RM, false, true, true, true>(dt) : ComputeForcesWith<RM, false, false, true, true>(dt);
-      return vdw ? ComputeForcesWith<RM, false, true, false, true>(dt) : ComputeForcesWith<RM, false, false, false, true>(dt);
+  using R         = hertz::Rolling;
+  const bool near = vdw_.hamaker > 0 || lubrication_.viscosity > 0;
+  auto       with = [&](auto rolling, auto multi) {
+    constexpr R    RM = decltype(rolling)::value;
+    constexpr bool MU = decltype(multi)::value;
+    if (jkr_) return near ? ComputeForcesWith<RM, kJkr, true, false, MU>(dt) : ComputeForcesWith<RM, kJkr, false, false, MU>(dt);  // JKR only with Hertz
+    if (sjkr_) {
+      if (linear_) return near ? ComputeForcesWith<RM, kSjkr, true, true, MU>(dt) : ComputeForcesWith<RM, kSjkr, false, true, MU>(dt);
+      return near ? ComputeForcesWith<RM, kSjkr, true, false, MU>(dt) : ComputeForcesWith<RM, kSjkr, false, false, MU>(dt);
     }
-    if (jkr_) return ComputeForcesWith<RM, true, false, false, false>(dt);  // JKR only with Hertz
-    if (linear_) return vdw ? ComputeForcesWith<RM, false, true, true, false>(dt) : ComputeForcesWith<RM, false, false, true, false>(dt);
-    return vdw ? ComputeForcesWith<RM, false, true, false, false>(dt) : ComputeForcesWith<RM, false, false, false, false>(dt);
+    if (linear_) return near ? ComputeForcesWith<RM, kNoCohesion, true, true, MU>(dt) : ComputeForcesWith<RM, kNoCohesion, false, true, MU>(dt);
+    return near ? ComputeForcesWith<RM, kNoCohesion, true, false, MU>(dt) : ComputeForcesWith<RM, kNoCohesion, false, false, MU>(dt);
+  };
+  // Several types: each pair's constants from the table; one type keeps them fixed for the loop.
+  auto withRolling = [&](auto rolling) {
+    return table_.Count() > 1 ? with(rolling, std::true_type{}) : with(rolling, std::false_type{});
   };
   switch (rolling_) {
-  case R::None: PetscCall(with(std::integral_constant<R, R::None>{})); break;
-  case R::ConstantTorque: PetscCall(with(std::integral_constant<R, R::ConstantTorque>{})); break;
-  case R::Epsd: PetscCall(with(std::integral_constant<R, R::Epsd>{})); break;
-  case R::Epsd2: PetscCall(with(std::integral_constant<R, R::Epsd2>{})); break;
+  case R::None: PetscCall(withRolling(std::integral_constant<R, R::None>{})); break;
+  case R::ConstantTorque: PetscCall(withRolling(std::integral_constant<R, R::ConstantTorque>{})); break;
+  case R::Epsd: PetscCall(withRolling(std::integral_constant<R, R::Epsd>{})); break;
+  case R::Epsd2: PetscCall(withRolling(std::integral_constant<R, R::Epsd2>{})); break;
   }
   PetscFunctionReturn(0);
 }
@@ -188,8 +194,9 @@ PetscErrorCode Dem::ComputeForces(PetscReal dt) {
 // that two ranks both evaluate (one particle a ghost) gives bit-identical results and springs there.
 // MULTI: several particle types, whose pair constants come from the MaterialTable; a single type
 // keeps them in registers for the whole loop.
-template <hertz::Rolling RM, bool JKR, bool VDW, bool LIN, bool MULTI>
+template <hertz::Rolling RM, int COH, bool NEAR, bool LIN, bool MULTI>
 PetscErrorCode Dem::ComputeForcesWith(PetscReal dt) {
+  constexpr bool JKR = COH == kJkr, SJKR = COH == kSjkr;
   ParticleArrays a;
 
   PetscFunctionBeginUser;
@@ -208,10 +215,11 @@ PetscErrorCode Dem::ComputeForcesWith(PetscReal dt) {
     // In contact from touching on; a JKR bond holds until its break overlap (P6).
     const hertz::PairMaterial &wm = MULTI ? table_.Wall(a.type[p]) : wall_;
     const bool inContact = delta > 0 || (JKR && xi[kJkrBonded] != 0 && delta > hertz::JkrBreakOverlap(wm, r));
-    if constexpr (VDW) {  // attraction towards the face across the gap -delta (P7, R* = R)
-      const PetscReal fv = hertz::VdwAttraction(vdw_, -delta, r);
-      a.f[3 * p + d] -= (face % 2 ? -1 : 1) * fv;
-      stats_.wallForce[face][d] += (face % 2 ? -1 : 1) * fv;
+    if constexpr (NEAR) {  // across the gap -delta: van der Waals attraction (P7) and lubrication (P8), R* = R
+      const PetscReal sgn = face % 2 ? -1 : 1;  // the inward normal is sgn e_d
+      const PetscReal fv = hertz::VdwAttraction(vdw_, -delta, r) + hertz::LubricationCoefficient(lubrication_, -delta, r) * sgn * v[d];
+      a.f[3 * p + d] -= sgn * fv;
+      stats_.wallForce[face][d] += sgn * fv;
     }
     if (!inContact) {
       if (walls_.touching[k]) std::fill(xi, xi + kSpringWidth, 0), walls_.touching[k] = 0;
@@ -223,7 +231,8 @@ PetscErrorCode Dem::ComputeForcesWith(PetscReal dt) {
     for (int e = 0; e < 3; ++e) rn[e] = -r * n[e];  // centre to contact point
     Cross(w, rn, wxr);
     for (int e = 0; e < 3; ++e) vrel[e] = v[e] + wxr[e];
-    const hertz::NormalLaw law = NormalLawAt<JKR, LIN>(wm, linearKn_, delta, r, xi);
+    hertz::NormalLaw law = NormalLawAt<COH, LIN>(wm, linearKn_, delta, r, xi);
+    if constexpr (SJKR) law.Fel -= sjkrDensity_ * hertz::SjkrWallArea(r, delta);
     const PetscReal        Sn = law.Sn, Fn = hertz::Contact(wm, law, n, std::sqrt(a.mass[p]), vrel, dt, xi, F, Ft);
     Cross(rn, Ft, tq);
     // Rolling against the face: w_rel = w, I_r = I + m R^2 = 1.4 m R^2 about the contact; the
@@ -259,10 +268,13 @@ PetscErrorCode Dem::ComputeForcesWith(PetscReal dt) {
     const bool inContact =
       dist2 < rsum * rsum ||
       (JKR && stored[kJkrBonded] != 0 && rsum - std::sqrt(dist2) > hertz::JkrBreakOverlap(pm, list_.rstar[k]));
-    if constexpr (VDW) {  // attraction along the line of centres across the gap (P7)
-      const PetscReal rangeSum = rsum + vdw_.range;
+    if constexpr (NEAR) {  // along the line of centres across the gap: van der Waals (P7) and lubrication (P8)
+      const PetscReal rangeSum = rsum + adhesionRange_;
       if (dist2 < rangeSum * rangeSum) {
-        const PetscReal dist = std::sqrt(dist2), fv = hertz::VdwAttraction(vdw_, dist - rsum, list_.rstar[k]) / dist;
+        const PetscReal dist = std::sqrt(dist2), gap = dist - rsum, *va = hot_[ia].v, *vb = hot_[ib].v;
+        // f = -(c v_n) n on a, with v_n = (v_a - v_b) . dx / dist > 0 separating: divided by dist once more below.
+        const PetscReal vnDist = (va[0] - vb[0]) * dx[0] + (va[1] - vb[1]) * dx[1] + (va[2] - vb[2]) * dx[2];
+        const PetscReal fv = (hertz::VdwAttraction(vdw_, gap, list_.rstar[k]) + hertz::LubricationCoefficient(lubrication_, gap, list_.rstar[k]) * vnDist / dist) / dist;
         if (ia < n)
           for (int e = 0; e < 3; ++e) force[3 * ia + e] -= fv * dx[e];
         if (ib < n)
@@ -285,7 +297,8 @@ PetscErrorCode Dem::ComputeForcesWith(PetscReal dt) {
     for (int e = 0; e < 3; ++e) nrm[e] = dx[e] * inv, rw[e] = A.r * A.w[e] + B.r * B.w[e], wrel[e] = A.w[e] - B.w[e];
     Cross(rw, nrm, wxn);
     for (int e = 0; e < 3; ++e) vrel[e] = A.v[e] - B.v[e] - wxn[e];  // surface of A against surface of B
-    const hertz::NormalLaw law = NormalLawAt<JKR, LIN>(pm, linearKn_, delta, Rstar, xi);
+    hertz::NormalLaw law = NormalLawAt<COH, LIN>(pm, linearKn_, delta, Rstar, xi);
+    if constexpr (SJKR) law.Fel -= sjkrDensity_ * hertz::SjkrPairArea(A.r, B.r, dist);
     const PetscReal        Sn = law.Sn, Fn = hertz::Contact(pm, law, nrm, list_.sqrtMstar[k], vrel, dt, xi, F, Ft);
     Cross(nrm, Ft, nxF);
     if constexpr (RM != hertz::Rolling::None) {

@@ -72,7 +72,8 @@ private:
   PetscErrorCode ReadParticles();                       // DemFill.cpp: -dem_particles_file
   PetscErrorCode Rebuild();                             // DemContacts.cpp: migrate, halo, list, springs
   PetscErrorCode ComputeForces(PetscReal dt);           // DemContacts.cpp
-  template <hertz::Rolling model, bool jkr, bool vdw, bool linear, bool multi>
+  // cohesion: 0 none, 1 JKR, 2 SJKR; near: forces across a gap (van der Waals and/or lubrication)
+  template <hertz::Rolling model, int cohesion, bool near, bool linear, bool multi>
   PetscErrorCode ComputeForcesWith(PetscReal dt);
   PetscErrorCode TypesFromOptions(PetscOptionItems *items);  // Dem.cpp: -dem_types, -dem_type_*, -dem_pair_*
   PetscInt       TypeIndex(const std::string &name) const;    // -1 when unknown
@@ -112,6 +113,11 @@ private:
   PetscReal            surfaceEnergy_ = 0, wallSurfaceEnergy_ = -1;  // J/m^2, one surface
   PetscReal            adhesionRange_ = 0;                    // m, JKR break distance or vdW range: widens the cut-offs
   hertz::VanDerWaals   vdw_{};                                // -dem_hamaker > 0 switches it on (P7)
+  PetscBool            sjkr_ = PETSC_FALSE;                   // -dem_cohesion sjkr (P6, LIGGGHTS' definition)
+  PetscReal            sjkrDensity_ = 0;                      // J/m^3
+  PetscReal            surfaceEnergyModulus_ = 0;             // Pa; > 0: scale surface energies (P9)
+  std::vector<PetscReal> measuredSurfaceEnergy_;              // before that scaling, per type
+  hertz::Lubrication   lubrication_{};                        // -dem_lubrication_viscosity > 0 switches it on (P8)
   PetscBool            linear_ = PETSC_FALSE;                 // -dem_contact linear (P4) instead of Hertz-Mindlin
   PetscReal            linearKn_ = 1e5, linearKtRatio_ = 1;   // N/m; k_t / k_n
   hertz::RollingParams rollingParams_{};

@@ -263,3 +263,32 @@ inline PetscReal VdwAttraction(const VanDerWaals &v, PetscReal gap, PetscReal Rs
 
 }  // namespace vofdem::hertz
 
+
+namespace vofdem::hertz {
+
+// SJKR, LIGGGHTS' "cohesion sjkr" (P6, for cross-checks with LIGGGHTS): an attraction F = k A while
+// the spheres overlap, k the cohesion energy density (J/m^3) and A the area of the circle where the
+// undeformed spheres intersect: A = -pi/4 (d-Ri-Rj)(d+Ri-Rj)(d-Ri+Rj)(d+Ri+Rj)/d^2 for two spheres
+// at distance d, and pi (2 R delta - delta^2) for a sphere cut by a plane. As LIGGGHTS' default
+// (tangential_reduce off), the friction limit sees the normal force reduced by the attraction.
+inline PetscReal SjkrPairArea(PetscReal ri, PetscReal rj, PetscReal d) {
+  return -0.25 * PETSC_PI * (d - ri - rj) * (d + ri - rj) * (d - ri + rj) * (d + ri + rj) / (d * d);
+}
+inline PetscReal SjkrWallArea(PetscReal r, PetscReal delta) { return PETSC_PI * (2 * r * delta - delta * delta); }
+
+// Lubrication (P8): f = 6 pi mu R_eff^2 v_n / h across a gap h between the cut-offs (a wall has
+// R_eff = R); below the inner cut-off h is held at it, beyond the outer one the force is zero.
+// Acts only across a gap (not in contact: the contact's damping takes over there). Returns the
+// coefficient c of f = -c v_n (v_n > 0 separating), 0 outside the range.
+struct Lubrication {
+  PetscReal viscosity = 0;  // mu, Pa s; 0: off
+  PetscReal minGap    = 0;  // m
+  PetscReal maxGap    = 0;  // m
+};
+
+inline PetscReal LubricationCoefficient(const Lubrication &l, PetscReal gap, PetscReal Reff) {
+  if (gap <= 0 || gap >= l.maxGap) return 0;
+  return 6 * PETSC_PI * l.viscosity * Reff * Reff / std::max(gap, l.minGap);
+}
+
+}  // namespace vofdem::hertz
