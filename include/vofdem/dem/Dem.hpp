@@ -72,6 +72,7 @@ public:
   PetscReal          MinRadius() const { return rMin_; }
   PetscReal          MaxRadius() const { return rMax_; }
   DM                 Swarm() const { return swarm_.Dm(); }
+  const ParticleSources &Sources() const { return sources_; }  // insertion and deletion books
   PetscReal          FillVolumeFraction() const { return fillReached_; }  // reached by the random fill (0: none)
 
 private:
