@@ -94,18 +94,26 @@ PetscErrorCode Dem::SetFromOptions(MPI_Comm comm) {
     PetscCall(opt.Real("-fill_jitter", "Random displacement of lattice points, fraction of the free gap", "-", &fillJitter_, RealRange::Closed(0, 1)));
     PetscCall(opt.Int("-fill_count", "Number of particles to place on the fill lattice (0: none, -1: as many as the region holds)", &fillCount_, -1));
     PetscCall(opt.RealVector("-fill_velocity", "Initial velocity of inserted particles", "m/s", fillVelocity_, 3));
-    fillRadii_ = {radius_};
-    PetscCall(opt.RealList("-fill_radii", "Radii of the fill's discrete size distribution (default: -dem_radius)", "m", &fillRadii_, 64, RealRange::Positive()));
-    fillMassFractions_.assign(fillRadii_.size(), 1.0 / fillRadii_.size());
-    PetscBool fractionsSet = PETSC_FALSE;
-    PetscCall(opt.RealList("-fill_mass_fractions", "Mass fraction of each fill radius, normalised to sum 1 (default: equal)", "-", &fillMassFractions_, 64,
-                           RealRange::Positive(), &fractionsSet));
-    if (fillMassFractions_.size() != fillRadii_.size())
-      VofdemInputError(comm, "option -dem_fill_mass_fractions: %d fractions for %d radii in -dem_fill_radii", (int)fillMassFractions_.size(), (int)fillRadii_.size());
+    PetscCall(fillSizes_.SetFromOptions(opt, comm, "fill_", radius_));  // SizeDistribution.cpp
+    {  // DemFill.cpp (FillRandom)
+      static const std::vector<std::string> modes = {"lattice", "random"};
+      std::vector<std::string>              mode  = {"lattice"};
+      PetscCall(opt.NameList("-fill_mode", "Fill: lattice (with jitter) or random (non-overlapping random sequential addition)", modes, &mode));
+      if (mode.size() != 1) VofdemInputError(comm, "option -dem_fill_mode: give one mode (lattice or random)");
+      fillRandom_ = (PetscBool)(mode[0] == "random");
+      PetscCall(opt.Real("-fill_volume_fraction", "Random fill: solid volume fraction of the region to reach (instead of -dem_fill_count)", "-", &fillFraction_,
+                         RealRange::LeftOpen(0, 1)));
+      PetscCall(opt.Int("-fill_attempts", "Random fill: candidate centres per particle before the fill gives up", &fillAttempts_, 1));
+    }
     PetscCall(opt.Real("-fill_velocity_spread", "Random part of the initial velocity: each component uniform in [-spread, spread]", "m/s", &fillSpread_, RealRange::NonNegative()));
     PetscCall(opt.String("-save_particles", "Write all particles at the end of the run to this CSV (the format -dem_particles_file reads, with radius)", &savePath_));
     PetscCall(opt.String("-particles_file", "CSV of particles to insert after the fill; the header names the columns: x,y,z required, vx,vy,vz,wx,wy,wz,radius,type optional (m, m/s, rad/s, index into -dem_types)", &particlesFile_));
     PetscCall(TypesFromOptions(PetscOptionsObject));
+    {
+      std::vector<PetscReal> densities;
+      for (const auto &m : types_) densities.push_back(m.density);
+      PetscCall(sources_.SetFromOptions(opt, comm, radius_, typeNames_, densities));  // ParticleSources.cpp
+    }
   }
   PetscOptionsEnd();
   if (surfaceEnergyModulus_ > 0) {  // P9: measured gamma -> gamma' = gamma (E'/E)^(2/5) for each type's E'
@@ -124,7 +132,7 @@ PetscErrorCode Dem::SetFromOptions(MPI_Comm comm) {
     for (size_t t = 0; t < types_.size(); ++t)
       if (types_[t].surfaceEnergy == 0)
         VofdemInputError(comm, "option -dem_cohesion jkr needs a surface energy > 0 for every type (-dem_surface_energy or -dem_type_%s_surface_energy)", typeNames_[t].c_str());
-  const PetscReal rFillMax = *std::max_element(fillRadii_.begin(), fillRadii_.end());
+  const PetscReal rFillMax = fillSizes_.MaxRadius();
   if (fillSpacing_ == 0) fillSpacing_ = 2.2 * rFillMax;
   if (fillSpacing_ < 2 * rFillMax)
     VofdemInputError(comm, "option -dem_fill_spacing: %g m is less than the largest particle diameter (%g m): particles would overlap", (double)fillSpacing_,
@@ -164,7 +172,10 @@ PetscErrorCode Dem::SetUp(const Grid &grid, const PetscReal gravity[3], std::uin
     PetscCallMPI(MPI_Allreduce(range, global, 2, MPIU_REAL, MPIU_MAX, comm_));
     rMin_ = inserted_ ? -global[0] : radius_;
     rMax_ = inserted_ ? global[1] : radius_;
+    if (!inserted_ && sources_.Sources().size()) rMin_ = PETSC_MAX_REAL, rMax_ = 0;
+    sources_.RadiusRange(&rMin_, &rMax_);  // what insertion will bring
   }
+  PetscCall(sources_.SetUp(grid, swarm_, seed));
   // The smallest time scale over the types present in the scene's definition (P9, P4).
   rayleighTime_ = PETSC_MAX_REAL;
   adhesionRange_ = 0;
@@ -211,7 +222,9 @@ PetscErrorCode Dem::Step(PetscReal dt) {
   HalfKick(a, dt);
   for (PetscInt k = 0; k < 3 * a.n; ++k) a.x[k] += dt * a.v[k];
   PetscCall(swarm_.RestoreArrays(&a));
+  time_ += dt;
   PetscCall(swarm_.NeedsRebuild(0.5 * skin_, &rebuild));
+  if (!rebuild && sources_.Active()) PetscCall(sources_.NeedsChange(time_, swarm_, &rebuild));  // Rebuild() inserts and deletes
   PetscCall(PetscLogEventEnd(evIntegrate_, 0, 0, 0, 0));
   if (rebuild) {
     PetscCall(PetscLogEventBegin(evRebuild_, 0, 0, 0, 0));
@@ -265,6 +278,9 @@ PetscErrorCode Dem::Summarize(DemSummary *s) const {
   s->coordination = s->particles ? (PetscReal)gcounts[0] / s->particles : 0;
   for (int f = 0; f < 6; ++f)
     for (int d = 0; d < 3; ++d) s->wallForce[f][d] = global[3 + 3 * f + d];
+  s->sources = (PetscBool)sources_.Active();
+  s->inserted = sources_.Inserted(), s->deleted = sources_.Deleted();
+  s->massInserted = sources_.MassInserted(), s->massDeleted = sources_.MassDeleted();
   PetscFunctionReturn(0);
 }
 
@@ -346,6 +362,7 @@ PetscErrorCode Dem::View(PetscViewer viewer) const {
     PetscCall(PetscViewerASCIIPrintf(viewer, "dem: bond number (pull-off of two equal spheres / weight of one): %g for radius %g m, %g for radius %g m\n",
                                      (double)bond(rMin_), (double)rMin_, (double)bond(rMax_), (double)rMax_));
   }
+  PetscCall(sources_.View(viewer));
   PetscCall(PetscViewerASCIIPrintf(viewer, "dem: this build has no SJKR adhesion, STL or moving walls, periodic boundaries, (DEM engine issue)\n"));
   PetscFunctionReturn(0);
 }

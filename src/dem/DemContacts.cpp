@@ -58,6 +58,8 @@ PetscErrorCode Dem::Rebuild() {
     std::copy(s, s + kSpringWidth, h.begin());
   }
   PetscCall(swarm_.RestoreArrays(&a));
+  // 1b. Deletion boxes and insertion sources (their springs go with deleted particles).
+  if (sources_.Active()) PetscCall(sources_.Apply(time_, swarm_, &springs_, rMax_));
   // 2. Particles to their owners; 3. ghosts within the cut-off.
   PetscCall(swarm_.Migrate());
   // A JKR bond may hold adhesionRange_ beyond touching: the cut-offs include it.

@@ -2,6 +2,7 @@
 
 #include "vofdem/core/Random.hpp"
 #include "vofdem/core/Runtime.hpp"
+#include "vofdem/dem/RandomFill.hpp"
 #include "vofdem/io/TextFile.hpp"
 
 #include <algorithm>
@@ -18,13 +19,17 @@ namespace vofdem {
 // Lattice fill: centres at lower + R + j + i*s, R the largest fill radius and j the jitter
 // amplitude, so that jittered particles neither overlap each other nor leave the region. Every rank
 // walks the same lattice and keeps the points it owns; ids, jitter and each particle's radius
-// (drawn from the discrete distribution: number fractions n_i ~ mass fraction_i / r_i^3) depend
+// (drawn from -dem_fill_size_distribution, SizeDistribution.hpp; R is then its upper cut-off) depend
 // only on the lattice index and the seed, so the same particles result on any rank count.
 PetscErrorCode Dem::Fill(std::uint64_t seed) {
   PetscReal lo[3], hi[3];
   PetscInt  n[3];
 
   PetscFunctionBeginUser;
+  if (fillRandom_) {
+    PetscCall(FillRandom(seed));
+    PetscFunctionReturn(0);
+  }
   if (fillCount_ == 0) PetscFunctionReturn(0);
   for (int d = 0; d < 3; ++d) {
     lo[d] = fillLowerSet_ ? fillLower_[d] : grid_->Lower()[d];
@@ -33,17 +38,9 @@ PetscErrorCode Dem::Fill(std::uint64_t seed) {
       VofdemInputError(comm_, "options -dem_fill_lower/-dem_fill_upper: the region [%g, %g] in %c must be non-empty and inside the box [%g, %g]",
                        (double)lo[d], (double)hi[d], "xyz"[d], (double)grid_->Lower()[d], (double)grid_->Upper()[d]);
   }
-  const PetscReal rFill  = *std::max_element(fillRadii_.begin(), fillRadii_.end());
+  const PetscReal rFill  = fillSizes_.MaxRadius();
   const PetscReal jitter = fillJitter_ * (fillSpacing_ - 2 * rFill) / 2;
-  std::vector<PetscReal> cdf(fillRadii_.size());  // cumulative number fractions
-  for (size_t i = 0; i < cdf.size(); ++i) cdf[i] = (i ? cdf[i - 1] : 0) + fillMassFractions_[i] / std::pow(fillRadii_[i], 3);
-  for (auto &c : cdf) c /= cdf.back();
-  auto radiusOf = [&](PetscInt64 id) {
-    const double u = random::Uniform(seed, (std::uint64_t)id, 6);
-    size_t       i = 0;
-    while (i + 1 < cdf.size() && u >= cdf[i]) ++i;
-    return fillRadii_[i];
-  };
+  auto radiusOf = [&](PetscInt64 id) { return fillSizes_.Radius(random::Uniform(seed, (std::uint64_t)id, 6)); };
   PetscInt64      total  = 1;
   for (int d = 0; d < 3; ++d) {
     const PetscReal room = hi[d] - lo[d] - 2 * (rFill + jitter);
@@ -96,6 +93,66 @@ PetscErrorCode Dem::Fill(std::uint64_t seed) {
   PetscCall(swarm_.GlobalCount(&inserted_));
   PetscCheck(inserted_ == want, comm_, PETSC_ERR_PLIB, "lattice fill placed %" PetscInt_FMT " particles instead of %" PetscInt64_FMT, inserted_, want);
   PetscCall(swarm_.Migrate());  // agree with the swarm's own point location; set the reference positions
+  PetscFunctionReturn(0);
+}
+
+// Random non-overlapping fill of the region (RandomFill.hpp): every rank computes the same
+// particles from -seed and keeps those it owns; velocities as in the lattice fill. A target that
+// cannot be met (too dense for random sequential addition) is an input error saying what was reached.
+PetscErrorCode Dem::FillRandom(std::uint64_t seed) {
+  RandomFillRequest req;
+  RandomFillResult  res;
+
+  PetscFunctionBeginUser;
+  if (fillCount_ < 0) VofdemInputError(comm_, "option -dem_fill_count -1 (as many as fit) is for -dem_fill_mode lattice; give a count or -dem_fill_volume_fraction");
+  if (fillCount_ > 0 && fillFraction_ > 0) VofdemInputError(comm_, "options -dem_fill_count and -dem_fill_volume_fraction: give one target for the random fill");
+  if (fillCount_ == 0 && fillFraction_ == 0) VofdemInputError(comm_, "option -dem_fill_mode random needs -dem_fill_count or -dem_fill_volume_fraction");
+  for (int d = 0; d < 3; ++d) {
+    req.lower[d] = fillLowerSet_ ? fillLower_[d] : grid_->Lower()[d];
+    req.upper[d] = fillUpperSet_ ? fillUpper_[d] : grid_->Upper()[d];
+    if (req.lower[d] < grid_->Lower()[d] || req.upper[d] > grid_->Upper()[d] || !(req.upper[d] > req.lower[d]))
+      VofdemInputError(comm_, "options -dem_fill_lower/-dem_fill_upper: the region [%g, %g] in %c must be non-empty and inside the box [%g, %g]",
+                       (double)req.lower[d], (double)req.upper[d], "xyz"[d], (double)grid_->Lower()[d], (double)grid_->Upper()[d]);
+  }
+  req.count    = fillCount_;
+  req.fraction = fillFraction_;
+  req.attempts = fillAttempts_;
+  req.seed     = seed;
+  RandomFill(fillSizes_, req, &res);
+  const PetscInt64 placed = (PetscInt64)res.radius.size();
+  if (!res.complete) {
+    if (fillCount_ > 0)
+      VofdemInputError(comm_, "option -dem_fill_count: placed only %" PetscInt64_FMT " of %" PetscInt_FMT " particles (volume fraction %.4f) before one found no room in %" PetscInt_FMT " attempts (-dem_fill_attempts); random sequential addition of equal spheres stalls near 0.3 (jamming limit 0.38)",
+                       placed, fillCount_, (double)res.fraction, fillAttempts_);
+    VofdemInputError(comm_, "option -dem_fill_volume_fraction: reached only %.4f of %g (%" PetscInt64_FMT " particles) before one found no room in %" PetscInt_FMT " attempts (-dem_fill_attempts); random sequential addition of equal spheres stalls near 0.3 (jamming limit 0.38)",
+                     (double)res.fraction, (double)fillFraction_, placed, fillAttempts_);
+  }
+  if (placed > PETSC_MAX_INT) VofdemInputError(comm_, "option -dem_fill_volume_fraction: %" PetscInt64_FMT " particles exceed this build's 32-bit indices", placed);
+  PetscInt local = 0, first;
+  for (PetscInt64 id = 0; id < placed; ++id) local += grid_->OwnsPoint(&res.x[3 * id]);
+  ParticleArrays a;
+  PetscCall(swarm_.AddLocal(local, &first));
+  PetscCall(swarm_.GetArrays(&a));
+  for (PetscInt64 id = 0, p = first; id < placed; ++id) {
+    if (!grid_->OwnsPoint(&res.x[3 * id])) continue;
+    for (int d = 0; d < 3; ++d) {
+      a.x[3 * p + d] = res.x[3 * id + d];
+      a.v[3 * p + d] = fillVelocity_[d] + fillSpread_ * (2 * random::Uniform(seed, (std::uint64_t)id, 3 + d) - 1);
+      a.f[3 * p + d] = a.omega[3 * p + d] = a.torque[3 * p + d] = 0;
+    }
+    const PetscReal r = res.radius[id];
+    a.radius[p]       = r;
+    a.mass[p]         = types_[fillType_].density * 4.0 / 3.0 * PETSC_PI * r * r * r;
+    a.id[p]           = id;
+    a.type[p]         = fillType_;
+    a.clump[p]        = -1;
+    ++p;
+  }
+  PetscCall(swarm_.RestoreArrays(&a));
+  PetscCall(swarm_.GlobalCount(&inserted_));
+  PetscCheck(inserted_ == placed, comm_, PETSC_ERR_PLIB, "random fill placed %" PetscInt_FMT " particles instead of %" PetscInt64_FMT, inserted_, placed);
+  PetscCall(swarm_.Migrate());
+  fillReached_ = res.fraction;
   PetscFunctionReturn(0);
 }
 

@@ -10,6 +10,7 @@
 #include "vofdem/dem/HertzMindlin.hpp"
 #include "vofdem/dem/Materials.hpp"
 #include "vofdem/dem/NeighbourList.hpp"
+#include "vofdem/dem/ParticleSources.hpp"
 #include "vofdem/dem/ParticleSwarm.hpp"
 #include "vofdem/grid/Grid.hpp"
 
@@ -31,6 +32,9 @@ struct DemSummary {
   PetscReal coordination = 0;  // mean number of particle contacts per particle
   PetscReal maxOverlap   = 0;  // largest overlap / diameter (particles and walls)
   PetscReal wallForce[6][3] = {};  // force of the particles on each face (x-, x+, y-, y+, z-, z+), N
+  PetscBool  sources  = PETSC_FALSE;  // insertion sources or deletion boxes exist (ParticleSources)
+  PetscInt64 inserted = 0, deleted = 0;  // particles inserted by the sources and deleted so far
+  PetscReal  massInserted = 0, massDeleted = 0;  // kg
 };
 
 class Dem {
@@ -66,9 +70,12 @@ public:
   PetscReal          MinRadius() const { return rMin_; }
   PetscReal          MaxRadius() const { return rMax_; }
   DM                 Swarm() const { return swarm_.Dm(); }
+  const ParticleSources &Sources() const { return sources_; }  // insertion and deletion books
+  PetscReal          FillVolumeFraction() const { return fillReached_; }  // reached by the random fill (0: none)
 
 private:
   PetscErrorCode Fill(std::uint64_t seed);              // DemFill.cpp
+  PetscErrorCode FillRandom(std::uint64_t seed);        // DemFill.cpp: -dem_fill_mode random
   PetscErrorCode ReadParticles();                       // DemFill.cpp: -dem_particles_file
   PetscErrorCode Rebuild();                             // DemContacts.cpp: migrate, halo, list, springs
   PetscErrorCode ComputeForces(PetscReal dt);           // DemContacts.cpp
@@ -140,7 +147,13 @@ private:
   PetscInt  fillCount_    = 0;  // 0 = no fill, -1 = as many as fit
   PetscReal fillVelocity_[3] = {0, 0, 0};
   PetscReal fillSpread_   = 0;  // m/s, random velocity components uniform in [-spread, spread]
-  std::vector<PetscReal> fillRadii_, fillMassFractions_;  // discrete size distribution of the fill
+  SizeDistribution fillSizes_;  // -dem_fill_size_distribution and its parameters
+  PetscBool fillRandom_   = PETSC_FALSE;  // -dem_fill_mode random
+  PetscReal fillFraction_ = 0;            // -dem_fill_volume_fraction (random fill)
+  PetscInt  fillAttempts_ = 1000;         // -dem_fill_attempts (random fill)
+  PetscReal fillReached_  = 0;            // volume fraction the random fill reached
+  ParticleSources sources_;  // insertion during the run and deletion boxes
+  PetscReal time_ = 0;       // s, sum of the steps taken (insertion schedules)
   std::string particlesFile_;  // CSV: x,y,z,vx,vy,vz[,wx,wy,wz] per line, one header line
   std::string savePath_;       // -dem_save_particles: the same CSV at the end of the run
   PetscInt  inserted_     = 0;

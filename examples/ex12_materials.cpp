@@ -66,7 +66,7 @@ static PetscErrorCode Binary(const char *pairRestitution, PetscReal v0, PetscRea
   PetscBool          found;
 
   PetscFunctionBeginUser;
-  PetscCall(UseParticles("ex10_binary.csv", "0.005,0.005,0.003,0,0," + Num(v0 / 2) + "," + Num(Ra) + ",0\n0.005,0.005,0.007,0,0," + Num(-v0 / 2) + "," +
+  PetscCall(UseParticles("ex12_binary.csv", "0.005,0.005,0.003,0,0," + Num(v0 / 2) + "," + Num(Ra) + ",0\n0.005,0.005,0.007,0,0," + Num(-v0 / 2) + "," +
                                               Num(Rb) + ",1\n"));
   if (pairRestitution) PetscCall(PetscOptionsSetValue(nullptr, "-dem_pair_glass_steel_restitution", pairRestitution));
   PetscCall(PetscOptionsSetValue(nullptr, "-dt", Num(dt).c_str()));
@@ -98,7 +98,7 @@ static PetscErrorCode Floor(int t, PetscReal v0, PetscReal dt, PetscReal *restit
   PetscBool          found;
 
   PetscFunctionBeginUser;
-  PetscCall(UseParticles("ex10_floor.csv", "0.005,0.005," + Num(1.01 * R) + ",0,0," + Num(-v0) + "," + Num(R) + "," + std::to_string(t) + "\n"));
+  PetscCall(UseParticles("ex12_floor.csv", "0.005,0.005," + Num(1.01 * R) + ",0,0," + Num(-v0) + "," + Num(R) + "," + std::to_string(t) + "\n"));
   PetscCall(PetscOptionsSetValue(nullptr, "-dt", Num(dt).c_str()));
   PetscCall(sim.Create(PETSC_COMM_WORLD));
   PetscCall(sim.SetFromOptions());
@@ -175,5 +175,5 @@ int main(int argc, char **argv) {
     suffix: 2
     nsize: 2
     args: -grid_ranks 1,1,2
-    output_file: output/ex10_materials_1.out
+    output_file: output/ex12_materials_1.out
 TEST*/

@@ -24,8 +24,8 @@ static std::string Num(double v) {
 
 static PetscErrorCode UseParticles(const std::string &rows) {
   PetscFunctionBeginUser;
-  PetscCall(vofdem::WriteTextFile(PETSC_COMM_WORLD, "ex11_particles.csv", "x,y,z,vx,vy,vz\n" + rows, "particle file"));
-  PetscCall(PetscOptionsSetValue(nullptr, "-dem_particles_file", "ex11_particles.csv"));
+  PetscCall(vofdem::WriteTextFile(PETSC_COMM_WORLD, "ex13_particles.csv", "x,y,z,vx,vy,vz\n" + rows, "particle file"));
+  PetscCall(PetscOptionsSetValue(nullptr, "-dem_particles_file", "ex13_particles.csv"));
   PetscFunctionReturn(0);
 }
 
@@ -153,5 +153,5 @@ int main(int argc, char **argv) {
     suffix: 2
     nsize: 2
     args: -grid_ranks 1,1,2
-    output_file: output/ex11_sjkr_lubrication_1.out
+    output_file: output/ex13_sjkr_lubrication_1.out
 TEST*/

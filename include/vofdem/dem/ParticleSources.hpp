@@ -1,0 +1,83 @@
+// Particles entering and leaving during a run: insertion sources (-dem_inserts a,b: each a box or
+// slot of centres fed at a rate in particles/s or kg/s with a velocity and spread, between a start
+// and an end time) and deletion boxes (-dem_delete_boxes: a particle whose centre is inside one is
+// removed, with its contact histories). Both act only when the neighbour lists are rebuilt, which
+// they request (NeedsChange), since they change the particles' local indices.
+//
+// Insertion is decided identically on every rank: particle k of a source draws its radius,
+// velocity and candidate centres from the counter-based generator keyed by k, and is tested for
+// overlap against ALL particles near the source (gathered on every rank), so the decision does not
+// depend on the rank count; only the rank that owns the accepted centre stores the particle. New
+// global ids continue after the largest id so far.
+#pragma once
+
+#include "vofdem/core/Options.hpp"
+#include "vofdem/dem/NeighbourList.hpp"
+#include "vofdem/dem/ParticleSwarm.hpp"
+#include "vofdem/dem/SizeDistribution.hpp"
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace vofdem {
+
+struct InsertionSource {
+  std::string      name;
+  PetscReal        lower[3] = {0, 0, 0}, upper[3] = {0, 0, 0};  // region of the centres, m
+  PetscReal        rate = 0, massRate = 0;                      // particles/s or kg/s (one of them)
+  PetscReal        velocity[3] = {0, 0, 0}, spread = 0;         // m/s
+  PetscReal        start = 0, end = PETSC_MAX_REAL;             // s
+  PetscInt         attempts = 100;                              // candidate centres per particle and round
+  PetscInt         type = 0;                                    // particle type (index into -dem_types)
+  PetscReal        density = 0;                                 // kg/m^3, the type's
+  SizeDistribution sizes;
+  std::uint64_t    seed = 0;
+  // State (the same on every rank).
+  PetscInt64 count = 0;        // particles inserted
+  PetscReal  mass  = 0;        // kg inserted
+  PetscInt64 tries = 0;        // candidate centres already tried for particle `count`
+  PetscReal  retryAt = 0;      // after a round found no room: the next try, one particle period later
+  PetscInt64 blocked = 0;      // rounds that found no room
+};
+
+class ParticleSources {
+public:
+  // Inside the Dem's PetscOptionsBegin block; `radius` is -dem_radius (the default size).
+  // types/densities: the names of -dem_types and their densities.
+  PetscErrorCode SetFromOptions(OptionReader &opt, MPI_Comm comm, PetscReal radius, const std::vector<std::string> &types, const std::vector<PetscReal> &densities);
+  // After the initial particles exist: checks the regions, ids continue after the largest one.
+  PetscErrorCode SetUp(const Grid &grid, const ParticleSwarm &swarm, std::uint64_t seed);
+  bool Active() const { return !sources_.empty() || !boxes_.empty(); }
+  // Widens [rmin, rmax] by the sizes the sources can insert (time step and neighbour cut-off).
+  void RadiusRange(PetscReal *rmin, PetscReal *rmax) const;
+  // Collective: whether Apply() at time t would insert or delete a particle.
+  PetscErrorCode NeedsChange(PetscReal t, const ParticleSwarm &swarm, PetscBool *change) const;
+  // Collective: deletes the particles in deletion boxes (and their springs), then inserts what the
+  // sources owe at time t. rMax bounds the radius of every particle present.
+  PetscErrorCode Apply(PetscReal t, ParticleSwarm &swarm, ContactHistory *springs, PetscReal rMax);
+  PetscErrorCode View(PetscViewer viewer) const;
+
+  PetscInt64 Inserted() const { return inserted_; }
+  PetscInt64 Deleted() const { return deleted_; }
+  PetscReal  MassInserted() const { return massInserted_; }
+  PetscReal  MassDeleted() const { return massDeleted_; }
+  const std::vector<InsertionSource> &Sources() const { return sources_; }
+
+private:
+  bool           Due(const InsertionSource &s, PetscReal t) const;
+  static PetscReal MassOf(const InsertionSource &s, PetscReal r) { return s.density * 4.0 / 3.0 * PETSC_PI * r * r * r; }
+  bool           InDeletionBox(const PetscReal x[3]) const;
+  PetscErrorCode Delete(ParticleSwarm &swarm, ContactHistory *springs);
+  PetscErrorCode Insert(PetscReal t, InsertionSource &s, ParticleSwarm &swarm, PetscReal rMax);
+
+  MPI_Comm                     comm_ = MPI_COMM_NULL;
+  const Grid                  *grid_ = nullptr;
+  std::vector<InsertionSource> sources_;
+  std::vector<PetscReal>       boxes_;  // deletion boxes: xlo,ylo,zlo,xhi,yhi,zhi each
+  PetscInt64                   nextId_ = 0, inserted_ = 0, deleted_ = 0;
+  PetscReal                    massInserted_ = 0, massDeleted_ = 0;
+  std::vector<PetscReal>       near_, newParticles_;  // work arrays, reused
+};
+
+}  // namespace vofdem

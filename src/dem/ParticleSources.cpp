@@ -1,0 +1,254 @@
+#include "vofdem/dem/ParticleSources.hpp"
+
+#include "vofdem/core/Random.hpp"
+#include "vofdem/core/Runtime.hpp"
+#include "vofdem/dem/SphereHash.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <unordered_set>
+
+namespace vofdem {
+
+PetscErrorCode ParticleSources::SetFromOptions(OptionReader &opt, MPI_Comm comm, PetscReal radius, const std::vector<std::string> &types,
+                                               const std::vector<PetscReal> &densities) {
+  std::string names;
+
+  PetscFunctionBeginUser;
+  comm_    = comm;
+  PetscCall(opt.String("-inserts", "Names of insertion sources, comma-separated; each is set by -dem_insert_<name>_* options", &names));
+  sources_.clear();
+  for (const auto &n : SplitList(names)) {
+    if (n.empty() || !std::all_of(n.begin(), n.end(), [](char c) { return std::isalnum((unsigned char)c); }))
+      VofdemInputError(comm, "option -dem_inserts: '%s' is not a name (letters and digits only)", n.c_str());
+    for (const auto &s : sources_)
+      if (s.name == n) VofdemInputError(comm, "option -dem_inserts: the name '%s' is given twice", n.c_str());
+    InsertionSource s;
+    s.name              = n;
+    const std::string p = "-insert_" + n + "_";
+    auto              o = [&](const char *suffix) { return p + suffix; };
+    PetscBool         lowerSet = PETSC_FALSE, upperSet = PETSC_FALSE;
+    PetscCall(opt.RealVector(o("lower").c_str(), "Lower corner of the region the new centres are drawn in (a slot may be flat)", "m", s.lower, 3, RealRange::Any(), &lowerSet));
+    PetscCall(opt.RealVector(o("upper").c_str(), "Upper corner of the region the new centres are drawn in", "m", s.upper, 3, RealRange::Any(), &upperSet));
+    if (!lowerSet || !upperSet) VofdemInputError(comm, "options -dem_insert_%s_lower and -dem_insert_%s_upper: both are needed", n.c_str(), n.c_str());
+    PetscCall(opt.Real(o("rate").c_str(), "Insertion rate by number", "particles/s", &s.rate, RealRange::NonNegative()));
+    PetscCall(opt.Real(o("mass_rate").c_str(), "Insertion rate by mass (instead of -dem_insert_<name>_rate)", "kg/s", &s.massRate, RealRange::NonNegative()));
+    if ((s.rate > 0) == (s.massRate > 0))
+      VofdemInputError(comm, "options -dem_insert_%s_rate and -dem_insert_%s_mass_rate: give exactly one positive rate", n.c_str(), n.c_str());
+    PetscCall(opt.RealVector(o("velocity").c_str(), "Initial velocity of the inserted particles", "m/s", s.velocity, 3));
+    PetscCall(opt.Real(o("velocity_spread").c_str(), "Random part of the initial velocity: each component uniform in [-spread, spread]", "m/s", &s.spread,
+                       RealRange::NonNegative()));
+    PetscCall(opt.Real(o("start").c_str(), "Time insertion starts", "s", &s.start, RealRange::NonNegative()));
+    PetscCall(opt.Real(o("end").c_str(), "Time insertion ends (default: never)", "s", &s.end, RealRange::NonNegative()));
+    if (!(s.end > s.start)) VofdemInputError(comm, "option -dem_insert_%s_end: %g s is not after the start %g s", n.c_str(), (double)s.end, (double)s.start);
+    PetscCall(opt.Int(o("attempts").c_str(), "Candidate centres per particle before a round gives up (the slot is full; retried one particle period later)",
+                      &s.attempts, 1));
+    PetscCall(s.sizes.SetFromOptions(opt, comm, "insert_" + n + "_", radius));
+    std::string type = types[0];
+    PetscCall(opt.String(o("type").c_str(), "Particle type of the inserted particles (default: the first of -dem_types)", &type));
+    const auto it = std::find(types.begin(), types.end(), type);
+    if (it == types.end()) VofdemInputError(comm, "option -dem_insert_%s_type: no type '%s' in -dem_types", n.c_str(), type.c_str());
+    s.type    = (PetscInt)(it - types.begin());
+    s.density = densities[s.type];
+    sources_.push_back(s);
+  }
+  PetscBool boxesSet = PETSC_FALSE;
+  boxes_.clear();
+  PetscCall(opt.RealList("-delete_boxes", "Deletion boxes, 6 numbers each (xlo,ylo,zlo,xhi,yhi,zhi): a particle whose centre enters one is removed", "m", &boxes_,
+                         6 * 32, RealRange::Any(), &boxesSet));
+  if (boxes_.size() % 6)
+    VofdemInputError(comm, "option -dem_delete_boxes: %d numbers are not whole boxes of 6 (xlo,ylo,zlo,xhi,yhi,zhi)", (int)boxes_.size());
+  for (size_t b = 0; b < boxes_.size(); b += 6)
+    for (int d = 0; d < 3; ++d)
+      if (!(boxes_[b + 3 + d] > boxes_[b + d]))
+        VofdemInputError(comm, "option -dem_delete_boxes: box %d is empty in %c (upper %g <= lower %g)", (int)(b / 6 + 1), "xyz"[d], (double)boxes_[b + 3 + d],
+                         (double)boxes_[b + d]);
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode ParticleSources::SetUp(const Grid &grid, const ParticleSwarm &swarm, std::uint64_t seed) {
+  ParticleArrays a;
+  PetscInt64     top = -1, globalTop;
+
+  PetscFunctionBeginUser;
+  grid_ = &grid;
+  for (size_t k = 0; k < sources_.size(); ++k) {
+    InsertionSource &s = sources_[k];
+    // A stream of keys of its own per source: the sources draw independent numbers.
+    s.seed             = random::Mix(seed ^ random::Mix(0x5eed0000ULL + k));
+    const PetscReal r  = s.sizes.MaxRadius();
+    for (int d = 0; d < 3; ++d)
+      if (!(s.upper[d] >= s.lower[d]) || s.lower[d] - r < grid.Lower()[d] || s.upper[d] + r > grid.Upper()[d])
+        VofdemInputError(comm_, "options -dem_insert_%s_lower/-dem_insert_%s_upper: the region [%g, %g] in %c must be ordered and at least the largest radius %g m inside the box [%g, %g]",
+                         s.name.c_str(), s.name.c_str(), (double)s.lower[d], (double)s.upper[d], "xyz"[d], (double)r, (double)grid.Lower()[d], (double)grid.Upper()[d]);
+  }
+  PetscCall(swarm.GetArrays(&a));
+  for (PetscInt p = 0; p < a.n; ++p) top = std::max(top, (PetscInt64)a.id[p]);
+  PetscCall(swarm.RestoreArrays(&a));
+  PetscCallMPI(MPI_Allreduce(&top, &globalTop, 1, MPIU_INT64, MPI_MAX, comm_));
+  nextId_ = globalTop + 1;
+  PetscFunctionReturn(0);
+}
+
+void ParticleSources::RadiusRange(PetscReal *rmin, PetscReal *rmax) const {
+  for (const auto &s : sources_) *rmin = std::min(*rmin, s.sizes.MinRadius()), *rmax = std::max(*rmax, s.sizes.MaxRadius());
+}
+
+// Particle `count` of a source is due once the clock has passed its turn: by number, when
+// floor(rate (t - start)) exceeds the count; by mass, when the mass inserted with it would not
+// exceed mass_rate (t - start). Insertion stops at the end time.
+bool ParticleSources::Due(const InsertionSource &s, PetscReal t) const {
+  if (t < s.start || t < s.retryAt) return false;
+  const PetscReal span = std::min(t, s.end) - s.start;
+  if (s.rate > 0) return (PetscReal)s.count < std::floor(s.rate * span);
+  const PetscReal r = s.sizes.Radius(random::Uniform(s.seed, (std::uint64_t)s.count, 6));
+  return s.mass + MassOf(s, r) <= s.massRate * span;
+}
+
+bool ParticleSources::InDeletionBox(const PetscReal x[3]) const {
+  for (size_t b = 0; b < boxes_.size(); b += 6)
+    if (x[0] >= boxes_[b] && x[0] <= boxes_[b + 3] && x[1] >= boxes_[b + 1] && x[1] <= boxes_[b + 4] && x[2] >= boxes_[b + 2] && x[2] <= boxes_[b + 5]) return true;
+  return false;
+}
+
+PetscErrorCode ParticleSources::NeedsChange(PetscReal t, const ParticleSwarm &swarm, PetscBool *change) const {
+  PetscFunctionBeginUser;
+  *change = PETSC_FALSE;
+  for (const auto &s : sources_)
+    if (Due(s, t)) *change = PETSC_TRUE;  // the same on every rank: no communication
+  if (*change || boxes_.empty()) PetscFunctionReturn(0);
+  ParticleArrays a;
+  int            local = 0, any;
+  PetscCall(swarm.GetArrays(&a));
+  for (PetscInt p = 0; p < a.n && !local; ++p) local = InDeletionBox(&a.x[3 * p]);
+  PetscCall(swarm.RestoreArrays(&a));
+  PetscCallMPI(MPI_Allreduce(&local, &any, 1, MPI_INT, MPI_LOR, comm_));
+  *change = (PetscBool)any;
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode ParticleSources::Apply(PetscReal t, ParticleSwarm &swarm, ContactHistory *springs, PetscReal rMax) {
+  PetscFunctionBeginUser;
+  if (!boxes_.empty()) PetscCall(Delete(swarm, springs));
+  for (auto &s : sources_)
+    if (Due(s, t)) PetscCall(Insert(t, s, swarm, rMax));
+  PetscFunctionReturn(0);
+}
+
+// Removes from the end so that the particle DMSwarm swaps into a freed slot was already looked at.
+PetscErrorCode ParticleSources::Delete(ParticleSwarm &swarm, ContactHistory *springs) {
+  ParticleArrays                 a;
+  std::unordered_set<PetscInt64> gone;
+  PetscReal                      local[2] = {0, 0}, global[2];  // count, mass
+
+  PetscFunctionBeginUser;
+  PetscCall(swarm.GetArrays(&a));
+  std::vector<PetscInt> remove;
+  for (PetscInt p = a.n - 1; p >= 0; --p)
+    if (InDeletionBox(&a.x[3 * p])) remove.push_back(p), gone.insert(a.id[p]), local[0] += 1, local[1] += a.mass[p];
+  PetscCall(swarm.RestoreArrays(&a));
+  for (PetscInt p : remove) PetscCall(DMSwarmRemovePointAtIndex(swarm.Dm(), p));
+  // Their contact histories go too (pairs with a ghost partner would be dropped at the next list
+  // anyway, as they are in no list).
+  if (!gone.empty() && springs)
+    for (auto it = springs->begin(); it != springs->end();) {
+      if (gone.count(it->first.lo) || (!it->first.IsWall() && gone.count(it->first.hi))) it = springs->erase(it);
+      else ++it;
+    }
+  PetscCallMPI(MPI_Allreduce(local, global, 2, MPIU_REAL, MPIU_SUM, comm_));
+  deleted_ += (PetscInt64)global[0];
+  massDeleted_ += global[1];
+  PetscFunctionReturn(0);
+}
+
+// Every rank gathers the particles whose centres lie within r_source + rMax of the source region
+// and runs the same sequential placement; each keeps the new particles whose centres it owns.
+PetscErrorCode ParticleSources::Insert(PetscReal t, InsertionSource &s, ParticleSwarm &swarm, PetscReal rMax) {
+  ParticleArrays a;
+  PetscMPIInt    size;
+  const PetscReal reach = s.sizes.MaxRadius() + rMax;
+  PetscReal       lo[3], hi[3];
+
+  PetscFunctionBeginUser;
+  for (int d = 0; d < 3; ++d) lo[d] = s.lower[d] - reach, hi[d] = s.upper[d] + reach;
+  near_.clear();
+  PetscCall(swarm.GetArrays(&a));
+  for (PetscInt p = 0; p < a.n; ++p) {
+    const PetscReal *x = &a.x[3 * p];
+    if (x[0] < lo[0] || x[0] > hi[0] || x[1] < lo[1] || x[1] > hi[1] || x[2] < lo[2] || x[2] > hi[2]) continue;
+    near_.insert(near_.end(), {x[0], x[1], x[2], a.radius[p]});
+  }
+  PetscCall(swarm.RestoreArrays(&a));
+  PetscCallMPI(MPI_Comm_size(comm_, &size));
+  std::vector<PetscMPIInt> counts(size), displs(size);
+  PetscMPIInt              n = (PetscMPIInt)near_.size(), total = 0;
+  PetscCallMPI(MPI_Allgather(&n, 1, MPI_INT, counts.data(), 1, MPI_INT, comm_));
+  for (int q = 0; q < size; ++q) displs[q] = total, total += counts[q];
+  std::vector<PetscReal> all(total);
+  PetscCallMPI(MPI_Allgatherv(near_.data(), n, MPIU_REAL, all.data(), counts.data(), displs.data(), MPIU_REAL, comm_));
+  // Whether a candidate overlaps is a yes/no over the same set on every rank: the order does not matter.
+  SphereHash hash;
+  hash.Reset(lo, hi, reach, total / 4 + 64);
+  for (PetscMPIInt k = 0; k < total; k += 4) hash.Add(&all[k], all[k + 3]);
+  newParticles_.clear();  // x, y, z, vx, vy, vz, r, id per new particle
+  while (Due(s, t)) {
+    const std::uint64_t key = (std::uint64_t)s.count;
+    const PetscReal     r   = s.sizes.Radius(random::Uniform(s.seed, key, 6));
+    PetscReal           x[3];
+    bool                placed = false;
+    for (PetscInt k = 0; k < s.attempts && !placed; ++k, ++s.tries) {
+      for (int d = 0; d < 3; ++d) x[d] = s.lower[d] + (s.upper[d] - s.lower[d]) * random::Uniform(s.seed, key, 16 + 3 * (std::uint64_t)s.tries + d);
+      placed = !hash.Overlaps(x, r);
+    }
+    if (!placed) {  // the slot is full: try again one particle period later, from fresh candidates
+      ++s.blocked;
+      s.retryAt = t + (s.rate > 0 ? 1 / s.rate : MassOf(s, s.sizes.Mean()) / s.massRate);
+      break;
+    }
+    hash.Add(x, r);
+    newParticles_.insert(newParticles_.end(), {x[0], x[1], x[2]});
+    for (int d = 0; d < 3; ++d) newParticles_.push_back(s.velocity[d] + s.spread * (2 * random::Uniform(s.seed, key, 3 + d) - 1));
+    newParticles_.push_back(r);
+    newParticles_.push_back((PetscReal)nextId_);  // exact below 2^53
+    ++nextId_, ++s.count, ++inserted_;
+    s.tries = 0;
+    s.mass += MassOf(s, r);
+    massInserted_ += MassOf(s, r);
+  }
+  constexpr int W     = 8;
+  PetscInt      local = 0, first;
+  for (size_t k = 0; k < newParticles_.size(); k += W) local += grid_->OwnsPoint(&newParticles_[k]);
+  PetscCall(swarm.AddLocal(local, &first));
+  PetscCall(swarm.GetArrays(&a));
+  for (size_t k = 0, p = first; k < newParticles_.size(); k += W) {
+    const PetscReal *q = &newParticles_[k];
+    if (!grid_->OwnsPoint(q)) continue;
+    for (int d = 0; d < 3; ++d) a.x[3 * p + d] = a.reference[3 * p + d] = q[d], a.v[3 * p + d] = q[3 + d], a.f[3 * p + d] = a.omega[3 * p + d] = a.torque[3 * p + d] = 0;
+    a.radius[p] = q[6];
+    a.mass[p]   = MassOf(s, q[6]);
+    a.id[p]     = (PetscInt64)q[7];
+    a.type[p]   = s.type;
+    a.clump[p]  = -1;
+    ++p;
+  }
+  PetscCall(swarm.RestoreArrays(&a));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode ParticleSources::View(PetscViewer viewer) const {
+  PetscFunctionBeginUser;
+  for (const auto &s : sources_) {
+    char rate[64];
+    if (s.rate > 0) std::snprintf(rate, sizeof rate, "%g particles/s", (double)s.rate);
+    else std::snprintf(rate, sizeof rate, "%g kg/s", (double)s.massRate);
+    PetscCall(PetscViewerASCIIPrintf(viewer, "dem: insertion '%s': %s into [%g, %g] x [%g, %g] x [%g, %g] m from t = %g s%s, velocity (%g, %g, %g) +- %g m/s; sizes: %s\n",
+                                     s.name.c_str(), rate, (double)s.lower[0], (double)s.upper[0], (double)s.lower[1], (double)s.upper[1], (double)s.lower[2],
+                                     (double)s.upper[2], (double)s.start, s.end < PETSC_MAX_REAL ? (" to " + std::to_string((double)s.end) + " s").c_str() : "",
+                                     (double)s.velocity[0], (double)s.velocity[1], (double)s.velocity[2], (double)s.spread, s.sizes.Describe().c_str()));
+  }
+  if (!boxes_.empty()) PetscCall(PetscViewerASCIIPrintf(viewer, "dem: %d deletion box(es)\n", (int)(boxes_.size() / 6)));
+  PetscFunctionReturn(0);
+}
+
+}  // namespace vofdem
