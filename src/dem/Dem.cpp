@@ -122,6 +122,7 @@ PetscErrorCode Dem::SetUp(const Grid &grid, const PetscReal gravity[3], std::uin
   if (!savePath_.empty()) PetscCall(CheckWritable(comm_, savePath_, "option -dem_save_particles"));
   PetscCall(swarm_.Create(grid));
   PetscCall(halo_.SetUp(grid));
+  PetscCall(halo_.Images().CheckRanks(grid));
   PetscCall(Fill(seed));
   PetscCall(ReadParticles());
   PetscCall(swarm_.GlobalCount(&inserted_));
@@ -281,7 +282,7 @@ PetscErrorCode Dem::View(PetscViewer viewer) const {
     PetscCall(PetscViewerASCIIPrintf(viewer, "dem: bond number (pull-off of two equal spheres / weight of one): %g for radius %g m, %g for radius %g m\n",
                                      (double)bond(rMin_), (double)rMin_, (double)bond(rMax_), (double)rMax_));
   }
-  PetscCall(PetscViewerASCIIPrintf(viewer, "dem: this build has no SJKR adhesion, STL or moving walls, periodic boundaries, several particle types (DEM engine issue)\n"));
+  PetscCall(PetscViewerASCIIPrintf(viewer, "dem: this build has no SJKR adhesion, STL or moving walls, several particle types (DEM engine issue)\n"));
   PetscFunctionReturn(0);
 }
 

@@ -2,8 +2,8 @@
 // Hertz-Mindlin contacts with damping, tangential springs and Coulomb friction between particles
 // and against the six faces of the box (PHYSICS.md P3), rotation, velocity Verlet with a
 // Rayleigh-time step (P9), Verlet lists with a skin, ghost particles across ranks, migration with a
-// particle-count check. Not yet: rolling resistance, adhesion, STL walls, insertion streams,
-// periodic boundaries, several particle types (the DEM engine's issue); the banner says so.
+// particle-count check, periodic directions (-grid_periodic, PeriodicImages.hpp). Not yet: rolling
+// resistance, adhesion, STL walls, insertion streams, several particle types (the DEM engine's issue); the banner says so.
 #pragma once
 
 #include "vofdem/dem/Halo.hpp"
@@ -95,6 +95,7 @@ private:
   ParticleSwarm swarm_;
   Halo          halo_;
   NeighbourList list_;
+  std::vector<unsigned char> pairImage_;  // periodic image of each list pair (PeriodicImages.hpp)
   WallList      walls_;
   ContactHistory springs_;  // only during Rebuild()
   LocalStats    stats_;

@@ -10,7 +10,7 @@ namespace vofdem {
 
 class Grid {
 public:
-  PetscErrorCode SetFromOptions(MPI_Comm comm);  // -grid_cells, -grid_lower, -grid_upper, -grid_ranks
+  PetscErrorCode SetFromOptions(MPI_Comm comm);  // -grid_cells, -grid_lower, -grid_upper, -grid_ranks, -grid_periodic
   PetscErrorCode SetUp(PetscBool needVertexDM);
   PetscErrorCode View(PetscViewer viewer) const;
   PetscErrorCode Destroy();
@@ -22,6 +22,9 @@ public:
   const PetscReal *Spacing() const { return h_; }
   const PetscInt  *Cells() const { return cells_; }
   MPI_Comm         Comm() const { return comm_; }
+  // -grid_periodic: the two faces normal to direction d are one (the cell DMDA is periodic there;
+  // the particles' vertex DMDA is not: particles are wrapped by the DEM module, notes/petsc-3.18.md).
+  bool Periodic(int d) const { return periodic_[d]; }
 
   // The part of the box whose cells this rank owns: [lo, hi) (closed at the domain's upper end).
   void LocalBox(PetscReal lo[3], PetscReal hi[3]) const;
@@ -38,6 +41,7 @@ private:
   PetscReal h_[3]     = {0, 0, 0};
   PetscInt  start_[3] = {0, 0, 0}, count_[3] = {0, 0, 0};  // owned cells
   PetscInt  ranks_[3] = {0, 0, 0};                          // ranks per direction; 0: PETSc decides
+  bool      periodic_[3] = {false, false, false};
 };
 
 }  // namespace vofdem
