@@ -64,3 +64,5 @@ vofdem_bad_input(save_unwritable    "option -dem_save_particles: cannot write ./
 vofdem_bad_input(rolling_unknown    "option -dem_rolling: unknown name 'epsd3'"     ${_dem} -dem_rolling epsd3)
 vofdem_bad_input(rolling_two        "option -dem_rolling: give one model"          ${_dem} -dem_rolling cdt,epsd)
 vofdem_bad_input(grid_ranks         "option -grid_ranks: 3 x 1 x 1 does not fit the 2 ranks" ${_dem} -grid_ranks 3,1,1)
+vofdem_bad_input(periodic_short     "option -grid_periodic: the box is 0\\.01 m long in x, less than twice the contact cut-off" ${_dem} -grid_periodic x -dem_radius 3e-3)
+vofdem_bad_input(periodic_unknown   "option -grid_periodic: unknown name 'w'"      ${_dem} -grid_periodic x,w)
