@@ -66,3 +66,5 @@ vofdem_bad_input(rolling_two        "option -dem_rolling: give one model"       
 vofdem_bad_input(grid_ranks         "option -grid_ranks: 3 x 1 x 1 does not fit the 2 ranks" ${_dem} -grid_ranks 3,1,1)
 vofdem_bad_input(periodic_short     "option -grid_periodic: the box is 0\\.01 m long in x, less than twice the contact cut-off" ${_dem} -grid_periodic x -dem_radius 3e-3)
 vofdem_bad_input(periodic_unknown   "option -grid_periodic: unknown name 'w'"      ${_dem} -grid_periodic x,w)
+vofdem_bad_input(balance_unknown    "option -dem_balance: unknown name 'metis'"    ${_dem} -dem_balance metis)
+vofdem_bad_input(balance_threshold  "option -dem_balance_threshold: 0\\.5 is out of range" ${_dem} -dem_balance_threshold 0.5)

@@ -90,6 +90,7 @@ PetscErrorCode Dem::SetFromOptions(MPI_Comm comm) {
       VofdemInputError(comm, "option -dem_fill_mass_fractions: %d fractions for %d radii in -dem_fill_radii", (int)fillMassFractions_.size(), (int)fillRadii_.size());
     PetscCall(opt.Real("-fill_velocity_spread", "Random part of the initial velocity: each component uniform in [-spread, spread]", "m/s", &fillSpread_, RealRange::NonNegative()));
     PetscCall(opt.String("-save_particles", "Write all particles at the end of the run to this CSV (the format -dem_particles_file reads, with radius)", &savePath_));
+    PetscCall(SetBalanceFromOptions(PetscOptionsObject));
     PetscCall(opt.String("-particles_file", "CSV of particles to insert after the fill; the header names the columns: x,y,z required, vx,vy,vz,wx,wy,wz,radius optional (m, m/s, rad/s)", &particlesFile_));
   }
   PetscOptionsEnd();
@@ -101,7 +102,7 @@ PetscErrorCode Dem::SetFromOptions(MPI_Comm comm) {
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode Dem::SetUp(const Grid &grid, const PetscReal gravity[3], std::uint64_t seed) {
+PetscErrorCode Dem::SetUp(Grid &grid, const PetscReal gravity[3], std::uint64_t seed) {
   PetscFunctionBeginUser;
   grid_ = &grid;
   std::copy(gravity, gravity + 3, gravity_);

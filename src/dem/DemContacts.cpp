@@ -58,6 +58,8 @@ PetscErrorCode Dem::Rebuild() {
   // Periodic directions: positions back into the box before migration (PeriodicImages.hpp).
   if (halo_.Images().Any()) halo_.Images().Wrap(a.n, a.x);
   PetscCall(swarm_.RestoreArrays(&a));
+  PetscBool repartitioned;
+  PetscCall(Balance(&repartitioned));  // -dem_balance: new ownership ranges when the counts are uneven
   // 2. Particles to their owners; 3. ghosts within the cut-off.
   PetscCall(swarm_.Migrate());
   // A JKR bond may hold adhesionRange_ beyond touching: the cut-offs include it.
@@ -69,6 +71,7 @@ PetscErrorCode Dem::Rebuild() {
   PetscCall(swarm_.RestoreArrays(&a));
   // 4. Springs to the ranks that now hold one of the pair.
   PetscCall(ExchangeSprings(localIds));
+  if (repartitioned) PetscCall(GatherSprings());  // a particle may have moved beyond the halo's ranks
   // 5. The new list, its springs from the carried ones.
   PetscReal lo[3], hi[3];
   grid_->LocalBox(lo, hi);

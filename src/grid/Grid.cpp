@@ -52,9 +52,14 @@ PetscErrorCode Grid::SetUp(PetscBool needVertexDM) {
   PetscCallMPI(MPI_Comm_size(comm_, &size));
   const DMBoundaryType bc[3] = {periodic_[0] ? DM_BOUNDARY_PERIODIC : DM_BOUNDARY_NONE, periodic_[1] ? DM_BOUNDARY_PERIODIC : DM_BOUNDARY_NONE,
                                 periodic_[2] ? DM_BOUNDARY_PERIODIC : DM_BOUNDARY_NONE};
-  PetscCall(DMDACreate3d(comm_, bc[0], bc[1], bc[2], DMDA_STENCIL_STAR, cells_[0], cells_[1], cells_[2],
-                         ranks_[0] ? ranks_[0] : PETSC_DECIDE, ranks_[1] ? ranks_[1] : PETSC_DECIDE, ranks_[2] ? ranks_[2] : PETSC_DECIDE, 1, 1,
-                         nullptr, nullptr, nullptr, &cellDM_));
+  PetscInt        md[3];
+  const PetscInt *lc[3];
+  for (int d = 0; d < 3; ++d) {
+    md[d] = !ownership_[d].empty() ? (PetscInt)ownership_[d].size() : ranks_[d] ? ranks_[d] : PETSC_DECIDE;
+    lc[d] = ownership_[d].empty() ? nullptr : ownership_[d].data();
+  }
+  PetscCall(DMDACreate3d(comm_, bc[0], bc[1], bc[2], DMDA_STENCIL_STAR, cells_[0], cells_[1], cells_[2], md[0], md[1], md[2], 1, 1, lc[0], lc[1], lc[2],
+                         &cellDM_));
   PetscCall(DMSetOptionsPrefix(cellDM_, "grid_"));
   PetscCall(DMSetUp(cellDM_));
   PetscCall(DMDASetUniformCoordinates(cellDM_, lower_[0] + h_[0] / 2, upper_[0] - h_[0] / 2, lower_[1] + h_[1] / 2, upper_[1] - h_[1] / 2,

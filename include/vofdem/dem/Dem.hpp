@@ -44,7 +44,8 @@ class Dem {
 public:
   PetscErrorCode SetFromOptions(MPI_Comm comm);
   // Creates the swarm on the grid's vertex DMDA, fills the insertion region, evaluates forces.
-  PetscErrorCode SetUp(const Grid &grid, const PetscReal gravity[3], std::uint64_t seed);
+  // The grid is not const: -dem_balance may repartition it (DemBalance.cpp).
+  PetscErrorCode SetUp(Grid &grid, const PetscReal gravity[3], std::uint64_t seed);
   // Largest stable step: -dem_dt_factor times the Rayleigh time (P9).
   PetscReal StableTimeStep() const { return dtFactor_ * rayleighTime_; }
   PetscReal RayleighTime() const { return rayleighTime_; }
@@ -77,6 +78,15 @@ private:
   template <hertz::Rolling model, bool jkr, bool vdw, bool linear>
   PetscErrorCode ComputeForcesWith(PetscReal dt);
   PetscErrorCode ExchangeSprings(const std::vector<PetscInt64> &localIds);
+  // DemBalance.cpp: -dem_balance; Balance() repartitions the grid by particle counts at a rebuild
+  // when they are uneven and moves the particles, GatherSprings() then hands every rank all springs.
+  PetscErrorCode SetBalanceFromOptions(PetscOptionItems *PetscOptionsObject);
+  PetscErrorCode Balance(PetscBool *repartitioned);
+  PetscErrorCode GatherSprings();
+  PetscBool      balance_ = PETSC_FALSE;  // -dem_balance histogram
+  PetscReal      balanceThreshold_ = 1.2;
+  PetscBool      balanceMonitor_ = PETSC_TRUE;
+  PetscInt       repartitions_ = 0;
 
   // Per-evaluation contact statistics of this rank (summed over ranks by Summarize).
   struct LocalStats {
@@ -91,7 +101,7 @@ private:
   };
   std::vector<HotParticle> hot_;
 
-  const Grid   *grid_ = nullptr;
+  Grid         *grid_ = nullptr;
   ParticleSwarm swarm_;
   Halo          halo_;
   NeighbourList list_;

@@ -6,12 +6,18 @@
 
 #include <petscdmda.h>
 
+#include <vector>
+
 namespace vofdem {
 
 class Grid {
 public:
   PetscErrorCode SetFromOptions(MPI_Comm comm);  // -grid_cells, -grid_lower, -grid_upper, -grid_ranks, -grid_periodic
   PetscErrorCode SetUp(PetscBool needVertexDM);
+  // Collective: rebuilds both DMDAs with these cells per rank in x, y, z (as many entries as ranks
+  // in that direction), e.g. to balance particle counts (GridRepartition.cpp). Holders of the old
+  // DMs (a swarm's cell DM, a halo's rank boxes) must be given the new ones.
+  PetscErrorCode Repartition(const std::vector<PetscInt> cellsPerRank[3]);
   PetscErrorCode View(PetscViewer viewer) const;
   PetscErrorCode Destroy();
 
@@ -42,6 +48,7 @@ private:
   PetscInt  start_[3] = {0, 0, 0}, count_[3] = {0, 0, 0};  // owned cells
   PetscInt  ranks_[3] = {0, 0, 0};                          // ranks per direction; 0: PETSc decides
   bool      periodic_[3] = {false, false, false};
+  std::vector<PetscInt> ownership_[3];                      // cells per rank, once repartitioned; empty: PETSc decides
 };
 
 }  // namespace vofdem
