@@ -112,7 +112,8 @@ PetscErrorCode Dem::Balance(PetscBool *repartitioned) {
   PetscCall(swarm_.RestoreArrays(&a));
   PetscCallMPI(MPI_Allreduce(hist.data(), global.data(), (int)hist.size(), MPIU_INT, MPI_SUM, comm_));
   // A direction is cut anew only if that evens its slabs' counts (layers are whole cells, so a bed a
-  // few cells high may allow no better cut than the present one).
+  // few cells high may allow no better cut than the present one) by at least 2 %, so that a lattice
+  // plane crossing a layer boundary does not make the cut flip back and forth.
   auto unevenness = [&](const PetscInt *counts, PetscInt ranks, PetscInt off) {
     PetscInt64 most = 0, total = 0;
     for (PetscInt r = 0, c = 0; r < ranks; c += counts[r], ++r) {
@@ -128,7 +129,7 @@ PetscErrorCode Dem::Balance(PetscBool *repartitioned) {
     slabs[d].assign(l[d], l[d] + m[d]);
     if (m[d] == 1) continue;
     const auto cut = SplitHistogram(std::vector<PetscInt>(global.begin() + off, global.begin() + off + nc[d]), m[d]);
-    if (unevenness(cut.data(), m[d], off) < unevenness(l[d], m[d], off) * (1 - 1e-3)) slabs[d] = cut, changed = true;
+    if (unevenness(cut.data(), m[d], off) < unevenness(l[d], m[d], off) * (1 - 0.02)) slabs[d] = cut, changed = true;
   }
   if (!changed) PetscFunctionReturn(0);  // the layers allow no better cut
 
