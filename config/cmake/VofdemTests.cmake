@@ -82,3 +82,7 @@ vofdem_bad_input(insert_no_rate     "options -dem_insert_a_rate and -dem_insert_
 vofdem_bad_input(insert_outside     "options -dem_insert_a_lower/-dem_insert_a_upper: the region .* in z must be" ${_dem} -dem_inserts a -dem_insert_a_lower 0.002,0.002,0.002 -dem_insert_a_upper 0.008,0.008,0.0099 -dem_insert_a_rate 10)
 vofdem_bad_input(insert_bad_name    "option -dem_inserts: 'a-b' is not a name" ${_dem} -dem_inserts a-b)
 vofdem_bad_input(delete_boxes       "option -dem_delete_boxes: 4 numbers are not whole boxes of 6" ${_dem} -dem_delete_boxes 0,0,0,1)
+vofdem_bad_input(periodic_short     "option -grid_periodic: the box is 0\\.01 m long in x, less than twice the contact cut-off" ${_dem} -grid_periodic x -dem_radius 3e-3)
+vofdem_bad_input(periodic_unknown   "option -grid_periodic: unknown name 'w'"      ${_dem} -grid_periodic x,w)
+vofdem_bad_input(balance_unknown    "option -dem_balance: unknown name 'metis'"    ${_dem} -dem_balance metis)
+vofdem_bad_input(balance_threshold  "option -dem_balance_threshold: 0\\.5 is out of range" ${_dem} -dem_balance_threshold 0.5)

@@ -109,6 +109,7 @@ PetscErrorCode Dem::SetFromOptions(MPI_Comm comm) {
     PetscCall(opt.String("-save_particles", "Write all particles at the end of the run to this CSV (the format -dem_particles_file reads, with radius)", &savePath_));
     PetscCall(opt.String("-particles_file", "CSV of particles to insert after the fill; the header names the columns: x,y,z required, vx,vy,vz,wx,wy,wz,radius,type optional (m, m/s, rad/s, index into -dem_types)", &particlesFile_));
     PetscCall(TypesFromOptions(PetscOptionsObject));
+    PetscCall(SetBalanceFromOptions(PetscOptionsObject));
     {
       std::vector<PetscReal> densities;
       for (const auto &m : types_) densities.push_back(m.density);
@@ -140,7 +141,7 @@ PetscErrorCode Dem::SetFromOptions(MPI_Comm comm) {
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode Dem::SetUp(const Grid &grid, const PetscReal gravity[3], std::uint64_t seed) {
+PetscErrorCode Dem::SetUp(Grid &grid, const PetscReal gravity[3], std::uint64_t seed) {
   PetscFunctionBeginUser;
   grid_ = &grid;
   std::copy(gravity, gravity + 3, gravity_);
@@ -160,6 +161,7 @@ PetscErrorCode Dem::SetUp(const Grid &grid, const PetscReal gravity[3], std::uin
   if (!savePath_.empty()) PetscCall(CheckWritable(comm_, savePath_, "option -dem_save_particles"));
   PetscCall(swarm_.Create(grid));
   PetscCall(halo_.SetUp(grid));
+  PetscCall(halo_.Images().CheckRanks(grid));
   PetscCall(Fill(seed));
   PetscCall(ReadParticles());
   PetscCall(swarm_.GlobalCount(&inserted_));
@@ -363,7 +365,7 @@ PetscErrorCode Dem::View(PetscViewer viewer) const {
                                      (double)bond(rMin_), (double)rMin_, (double)bond(rMax_), (double)rMax_));
   }
   PetscCall(sources_.View(viewer));
-  PetscCall(PetscViewerASCIIPrintf(viewer, "dem: this build has no SJKR adhesion, STL or moving walls, periodic boundaries, (DEM engine issue)\n"));
+  PetscCall(PetscViewerASCIIPrintf(viewer, "dem: this build has no STL or moving walls (DEM engine issue)\n"));
   PetscFunctionReturn(0);
 }
 

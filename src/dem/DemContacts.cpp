@@ -57,25 +57,32 @@ PetscErrorCode Dem::Rebuild() {
     auto            &h = springs_[PairKey::Wall(a.id[walls_.particle[k]], walls_.wall[k])];
     std::copy(s, s + kSpringWidth, h.begin());
   }
+  // Periodic directions: positions back into the box before migration (PeriodicImages.hpp).
+  if (halo_.Images().Any()) halo_.Images().Wrap(a.n, a.x);
   PetscCall(swarm_.RestoreArrays(&a));
   // 1b. Deletion boxes and insertion sources (their springs go with deleted particles).
   if (sources_.Active()) PetscCall(sources_.Apply(time_, swarm_, &springs_, rMax_));
+  PetscBool repartitioned;
+  PetscCall(Balance(&repartitioned));  // -dem_balance: new ownership ranges when the counts are uneven
   // 2. Particles to their owners; 3. ghosts within the cut-off.
   PetscCall(swarm_.Migrate());
   // A JKR bond may hold adhesionRange_ beyond touching: the cut-offs include it.
   const PetscReal cutoff = 2 * rMax_ + skin_ + adhesionRange_;
+  if (halo_.Images().Any()) PetscCall(halo_.Images().Check(comm_, cutoff, "2 R_max + skin + adhesion range"));
   PetscCall(swarm_.GetArrays(&a));
   PetscCall(halo_.Build(a, a.omega, cutoff));
   localIds.assign(a.id, a.id + a.n);
   PetscCall(swarm_.RestoreArrays(&a));
   // 4. Springs to the ranks that now hold one of the pair.
   PetscCall(ExchangeSprings(localIds));
+  if (repartitioned) PetscCall(GatherSprings());  // a particle may have moved beyond the halo's ranks
   // 5. The new list, its springs from the carried ones.
   PetscReal lo[3], hi[3];
   grid_->LocalBox(lo, hi);
   PetscCall(swarm_.GetArrays(&a));
   PetscCall(list_.Build(a.n, a.x, a.radius, a.mass, a.id, halo_.Count(), halo_.x.data(), halo_.radius.data(), halo_.mass.data(), halo_.id.data(),
                         cutoff, skin_ + adhesionRange_, lo, hi, PairTags{a.type, halo_.type.data(), a.clump, halo_.clump.data(), table_.Count()}));
+  PeriodicImages::PairImages(list_, a.n, halo_.image.data(), &pairImage_);
   for (size_t k = 0; k < list_.Size() && !springs_.empty(); ++k) {
     const auto it = springs_.find({idOf(list_.first[k]), idOf(list_.second[k])});  // lower id first
     if (it != springs_.end()) {
@@ -90,6 +97,7 @@ PetscErrorCode Dem::Rebuild() {
   for (PetscInt p = 0; p < a.n; ++p)
     for (int face = 0; face < 6; ++face) {
       const int       d    = face / 2;
+      if (halo_.Images().Periodic(d)) continue;  // no walls across a periodic direction
       const PetscReal dist = face % 2 ? ghi[d] - a.x[3 * p + d] : a.x[3 * p + d] - glo[d];
       if (dist >= a.radius[p] + skin_ + adhesionRange_) continue;
       walls_.Add(p, face);
@@ -255,14 +263,16 @@ PetscErrorCode Dem::ComputeForcesWith(PetscReal dt) {
   }
   for (PetscInt g = 0; g < ng; ++g) {
     HotParticle &h = hot_[n + g];
-    for (int e = 0; e < 3; ++e) h.x[e] = halo_.x[3 * g + e], h.v[e] = halo_.v[3 * g + e], h.w[e] = halo_.omega[3 * g + e];
+    // The owner's position: periodic pairs add their image shift to the difference (PeriodicImages.hpp).
+    for (int e = 0; e < 3; ++e) h.x[e] = halo_.xOwner[3 * g + e], h.v[e] = halo_.v[3 * g + e], h.w[e] = halo_.omega[3 * g + e];
     h.r = halo_.radius[g], h.m = halo_.mass[g];
   }
   PetscReal *__restrict__ force = a.f, *__restrict__ torque = a.torque;
+  const PeriodicImages &images = halo_.Images();
   for (size_t k = 0; k < list_.Size(); ++k) {
     const PetscInt ia = list_.first[k], ib = list_.second[k];  // lower id first
-    const PetscReal *xa = hot_[ia].x, *xb = hot_[ib].x;
-    const PetscReal  dx[3] = {xa[0] - xb[0], xa[1] - xb[1], xa[2] - xb[2]};
+    const PetscReal *xa = hot_[ia].x, *xb = hot_[ib].x, *sh = images.Shift(pairImage_[k]);
+    const PetscReal  dx[3] = {(xa[0] - xb[0]) + sh[0], (xa[1] - xb[1]) + sh[1], (xa[2] - xb[2]) + sh[2]};
     const PetscReal  dist2 = dx[0] * dx[0] + dx[1] * dx[1] + dx[2] * dx[2], rsum = hot_[ia].r + hot_[ib].r;
     PetscReal       *stored = &list_.spring[kSpringWidth * k];
     const hertz::PairMaterial &pm = MULTI ? table_.Pair(list_.material[k]) : pair_;

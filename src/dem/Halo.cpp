@@ -27,6 +27,7 @@ inline PetscReal BoxDistance2(const std::array<PetscReal, 6> &a, const std::arra
   return s;
 }
 
+constexpr int kTagCount = 200, kTagData = 300;  // + the sender's image code (0..26)
 constexpr int kFull = 14;    // x3 v3 omega3 radius mass id(bits) type clump(bits)
 constexpr int kMoving = 9;   // x3 v3 omega3
 
@@ -39,6 +40,7 @@ PetscErrorCode Halo::SetUp(const Grid &grid) {
 
   PetscFunctionBeginUser;
   comm_ = grid.Comm();
+  periodic_.SetUp(grid);
   PetscCallMPI(MPI_Comm_rank(comm_, &rank_));
   PetscCallMPI(MPI_Comm_size(comm_, &size));
   PetscCall(DMDAGetInfo(grid.CellDM(), nullptr, nullptr, nullptr, nullptr, &m[0], &m[1], &m[2], nullptr, nullptr, nullptr, nullptr, nullptr, nullptr));
@@ -63,17 +65,29 @@ PetscErrorCode Halo::Build(const ParticleArrays &a, const PetscReal *om, PetscRe
   const PetscReal c2   = cutoff * cutoff;
   const auto     &mine = boxes_[rank_];
   ranks_.clear();
+  images_.clear();
+  // Entry (q, k): rank q is within the cut-off of this rank's box shifted by image k; with k the
+  // unshifted image, q must be another rank. Images in rank order, then image code.
   for (PetscMPIInt q = 0; q < (PetscMPIInt)boxes_.size(); ++q)
-    if (q != rank_ && BoxDistance2(mine, boxes_[q]) < c2) ranks_.push_back(q);
+    for (int k = 0; k < PeriodicImages::kCount; ++k) {
+      if (!periodic_.Valid(k) || (k == PeriodicImages::kNone && q == rank_)) continue;
+      std::array<PetscReal, 6> shifted = mine;
+      for (int d = 0; d < 3; ++d) shifted[d] += periodic_.Shift(k)[d], shifted[3 + d] += periodic_.Shift(k)[d];
+      if (BoxDistance2(shifted, boxes_[q]) < c2) ranks_.push_back(q), images_.push_back(k);
+    }
   send_.assign(ranks_.size(), {});
   for (PetscInt p = 0; p < a.n; ++p) {
     const PetscReal *x = &a.x[3 * p];
-    // Particles deeper inside than the cut-off go nowhere.
+    // Particles deeper inside than the cut-off go nowhere (nor do their images: the other boxes and
+    // this box's own images lie outside it).
     PetscReal inner = PETSC_MAX_REAL;
     for (int d = 0; d < 3; ++d) inner = std::min({inner, x[d] - mine[d], mine[3 + d] - x[d]});
     if (inner > cutoff) continue;
-    for (size_t q = 0; q < ranks_.size(); ++q)
-      if (Distance2(x, boxes_[ranks_[q]]) < c2) send_[q].push_back(p);
+    for (size_t q = 0; q < ranks_.size(); ++q) {
+      const PetscReal *s     = periodic_.Shift(images_[q]);
+      const PetscReal  xs[3] = {x[0] + s[0], x[1] + s[1], x[2] + s[2]};
+      if (Distance2(xs, boxes_[ranks_[q]]) < c2) send_[q].push_back(p);
+    }
   }
   PetscCall(Exchange(a, om, true));
   PetscFunctionReturn(0);
@@ -95,13 +109,13 @@ PetscErrorCode Halo::Exchange(const ParticleArrays &a, const PetscReal *om, bool
     recvCount_.assign(nq, 0);
     for (int q = 0; q < nq; ++q) {
       sendCount[q] = (PetscInt)send_[q].size();
-      PetscCallMPI(MPI_Irecv(&recvCount_[q], 1, MPIU_INT, ranks_[q], 71, comm_, &req[q]));
-      PetscCallMPI(MPI_Isend(&sendCount[q], 1, MPIU_INT, ranks_[q], 71, comm_, &req[nq + q]));
+      PetscCallMPI(MPI_Irecv(&recvCount_[q], 1, MPIU_INT, ranks_[q], kTagCount + PeriodicImages::Opposite(images_[q]), comm_, &req[q]));
+      PetscCallMPI(MPI_Isend(&sendCount[q], 1, MPIU_INT, ranks_[q], kTagCount + images_[q], comm_, &req[nq + q]));
     }
     PetscCallMPI(MPI_Waitall(2 * nq, req.data(), MPI_STATUSES_IGNORE));
     PetscInt total = 0;
     for (int q = 0; q < nq; ++q) total += recvCount_[q];
-    x.resize(3 * total), v.resize(3 * total), omega.resize(3 * total), radius.resize(total), mass.resize(total), id.resize(total);
+    x.resize(3 * total), xOwner.resize(3 * total), image.resize(total), v.resize(3 * total), omega.resize(3 * total), radius.resize(total), mass.resize(total), id.resize(total);
     type.resize(total), clump.resize(total);
   }
   size_t sendTotal = 0, recvTotal = 0;
@@ -122,15 +136,21 @@ PetscErrorCode Halo::Exchange(const ParticleArrays &a, const PetscReal *om, bool
       s += width;
     }
   for (int q = 0, so = 0, ro = 0; q < nq; ++q) {
-    PetscCallMPI(MPI_Irecv(recvBuf_.data() + (size_t)width * ro, width * (int)recvCount_[q], MPIU_REAL, ranks_[q], 72, comm_, &req[q]));
-    PetscCallMPI(MPI_Isend(sendBuf_.data() + (size_t)width * so, width * (int)send_[q].size(), MPIU_REAL, ranks_[q], 72, comm_, &req[nq + q]));
+    PetscCallMPI(MPI_Irecv(recvBuf_.data() + (size_t)width * ro, width * (int)recvCount_[q], MPIU_REAL, ranks_[q], kTagData + PeriodicImages::Opposite(images_[q]),
+                           comm_, &req[q]));
+    PetscCallMPI(MPI_Isend(sendBuf_.data() + (size_t)width * so, width * (int)send_[q].size(), MPIU_REAL, ranks_[q], kTagData + images_[q], comm_, &req[nq + q]));
     so += (int)send_[q].size(), ro += (int)recvCount_[q];
   }
   PetscCallMPI(MPI_Waitall(2 * nq, req.data(), MPI_STATUSES_IGNORE));
   const PetscReal *r = recvBuf_.data();
-  for (size_t g = 0; g < recvTotal; ++g, r += width) {
-    for (int d = 0; d < 3; ++d) x[3 * g + d] = r[d], v[3 * g + d] = r[3 + d], omega[3 * g + d] = r[6 + d];
-    if (full) {
+  for (int q = 0, g = 0; q < nq; ++q) {
+    // What q sends with this entry is its particles shifted by the opposite image.
+    const int        k = PeriodicImages::Opposite(images_[q]);
+    const PetscReal *sh = periodic_.Shift(k);
+    for (PetscInt i = 0; i < recvCount_[q]; ++i, ++g, r += width) {
+      for (int d = 0; d < 3; ++d) xOwner[3 * g + d] = r[d], x[3 * g + d] = r[d] + sh[d], v[3 * g + d] = r[3 + d], omega[3 * g + d] = r[6 + d];
+      if (!full) continue;
+      image[g]  = (unsigned char)k;
       radius[g] = r[9];
       mass[g]   = r[10];
       std::memcpy(&id[g], &r[11], sizeof(PetscInt64));

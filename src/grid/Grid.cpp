@@ -3,6 +3,7 @@
 #include "vofdem/core/Options.hpp"
 #include "vofdem/core/Runtime.hpp"
 
+#include <string>
 #include <vector>
 
 namespace vofdem {
@@ -17,6 +18,9 @@ PetscErrorCode Grid::SetFromOptions(MPI_Comm comm) {
     PetscCall(opt.RealVector("-lower", "Lower corner of the box x,y,z", "m", lower_, 3));
     PetscCall(opt.RealVector("-upper", "Upper corner of the box x,y,z", "m", upper_, 3));
     PetscCall(opt.IntVector("-ranks", "Ranks per direction x,y,z; 0: PETSc decides that direction (0,1,1: vertical slabs, as LIGGGHTS' processors * 1 1)", ranks_, 3, 0, 1 << 20));
+    std::vector<std::string> periodic;
+    PetscCall(opt.NameList("-periodic", "Periodic directions, comma-separated (default: none; the box faces are walls)", {"x", "y", "z"}, &periodic));
+    for (const auto &name : periodic) periodic_[name[0] - 'x'] = true;
   }
   PetscOptionsEnd();
   PetscMPIInt size;
@@ -46,9 +50,16 @@ PetscErrorCode Grid::SetUp(PetscBool needVertexDM) {
 
   PetscFunctionBeginUser;
   PetscCallMPI(MPI_Comm_size(comm_, &size));
-  PetscCall(DMDACreate3d(comm_, DM_BOUNDARY_NONE, DM_BOUNDARY_NONE, DM_BOUNDARY_NONE, DMDA_STENCIL_STAR, cells_[0], cells_[1], cells_[2],
-                         ranks_[0] ? ranks_[0] : PETSC_DECIDE, ranks_[1] ? ranks_[1] : PETSC_DECIDE, ranks_[2] ? ranks_[2] : PETSC_DECIDE, 1, 1,
-                         nullptr, nullptr, nullptr, &cellDM_));
+  const DMBoundaryType bc[3] = {periodic_[0] ? DM_BOUNDARY_PERIODIC : DM_BOUNDARY_NONE, periodic_[1] ? DM_BOUNDARY_PERIODIC : DM_BOUNDARY_NONE,
+                                periodic_[2] ? DM_BOUNDARY_PERIODIC : DM_BOUNDARY_NONE};
+  PetscInt        md[3];
+  const PetscInt *lc[3];
+  for (int d = 0; d < 3; ++d) {
+    md[d] = !ownership_[d].empty() ? (PetscInt)ownership_[d].size() : ranks_[d] ? ranks_[d] : PETSC_DECIDE;
+    lc[d] = ownership_[d].empty() ? nullptr : ownership_[d].data();
+  }
+  PetscCall(DMDACreate3d(comm_, bc[0], bc[1], bc[2], DMDA_STENCIL_STAR, cells_[0], cells_[1], cells_[2], md[0], md[1], md[2], 1, 1, lc[0], lc[1], lc[2],
+                         &cellDM_));
   PetscCall(DMSetOptionsPrefix(cellDM_, "grid_"));
   PetscCall(DMSetUp(cellDM_));
   PetscCall(DMDASetUniformCoordinates(cellDM_, lower_[0] + h_[0] / 2, upper_[0] - h_[0] / 2, lower_[1] + h_[1] / 2, upper_[1] - h_[1] / 2,
@@ -102,6 +113,8 @@ PetscErrorCode Grid::View(PetscViewer viewer) const {
   PetscCall(PetscViewerASCIIPrintf(viewer, "grid: %" PetscInt_FMT " x %" PetscInt_FMT " x %" PetscInt_FMT " cells of %g x %g x %g m, box [%g, %g] x [%g, %g] x [%g, %g] m, ranks %" PetscInt_FMT " x %" PetscInt_FMT " x %" PetscInt_FMT "\n",
                                    cells_[0], cells_[1], cells_[2], (double)h_[0], (double)h_[1], (double)h_[2], (double)lower_[0], (double)upper_[0],
                                    (double)lower_[1], (double)upper_[1], (double)lower_[2], (double)upper_[2], m[0], m[1], m[2]));
+  if (periodic_[0] || periodic_[1] || periodic_[2])
+    PetscCall(PetscViewerASCIIPrintf(viewer, "grid: periodic in%s%s%s\n", periodic_[0] ? " x" : "", periodic_[1] ? " y" : "", periodic_[2] ? " z" : ""));
   PetscFunctionReturn(0);
 }
 

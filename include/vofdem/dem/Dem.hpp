@@ -2,8 +2,8 @@
 // Hertz-Mindlin contacts with damping, tangential springs and Coulomb friction between particles
 // and against the six faces of the box (PHYSICS.md P3), rotation, velocity Verlet with a
 // Rayleigh-time step (P9), Verlet lists with a skin, ghost particles across ranks, migration with a
-// particle-count check. Not yet: rolling resistance, adhesion, STL walls, insertion streams,
-// periodic boundaries, several particle types (the DEM engine's issue); the banner says so.
+// particle-count check, periodic directions (-grid_periodic, PeriodicImages.hpp). Not yet: rolling
+// resistance, adhesion, STL walls, insertion streams, several particle types (the DEM engine's issue); the banner says so.
 #pragma once
 
 #include "vofdem/dem/Halo.hpp"
@@ -41,7 +41,8 @@ class Dem {
 public:
   PetscErrorCode SetFromOptions(MPI_Comm comm);
   // Creates the swarm on the grid's vertex DMDA, fills the insertion region, evaluates forces.
-  PetscErrorCode SetUp(const Grid &grid, const PetscReal gravity[3], std::uint64_t seed);
+  // The grid is not const: -dem_balance may repartition it (DemBalance.cpp).
+  PetscErrorCode SetUp(Grid &grid, const PetscReal gravity[3], std::uint64_t seed);
   // Largest stable step: -dem_dt_factor times the Rayleigh time (P9).
   PetscReal StableTimeStep() const { return dtFactor_ * rayleighTime_; }
   PetscReal RayleighTime() const { return rayleighTime_; }
@@ -85,6 +86,15 @@ private:
   PetscErrorCode TypesFromOptions(PetscOptionItems *items);  // Dem.cpp: -dem_types, -dem_type_*, -dem_pair_*
   PetscInt       TypeIndex(const std::string &name) const;    // -1 when unknown
   PetscErrorCode ExchangeSprings(const std::vector<PetscInt64> &localIds);
+  // DemBalance.cpp: -dem_balance; Balance() repartitions the grid by particle counts at a rebuild
+  // when they are uneven and moves the particles, GatherSprings() then hands every rank all springs.
+  PetscErrorCode SetBalanceFromOptions(PetscOptionItems *PetscOptionsObject);
+  PetscErrorCode Balance(PetscBool *repartitioned);
+  PetscErrorCode GatherSprings();
+  PetscBool      balance_ = PETSC_FALSE;  // -dem_balance histogram
+  PetscReal      balanceThreshold_ = 1.2;
+  PetscBool      balanceMonitor_ = PETSC_TRUE;
+  PetscInt       repartitions_ = 0;
 
   // Per-evaluation contact statistics of this rank (summed over ranks by Summarize).
   struct LocalStats {
@@ -100,10 +110,11 @@ private:
   // Rolling parameters of the single-type fast path; the pair table otherwise.
   std::vector<HotParticle> hot_;
 
-  const Grid   *grid_ = nullptr;
+  Grid         *grid_ = nullptr;
   ParticleSwarm swarm_;
   Halo          halo_;
   NeighbourList list_;
+  std::vector<unsigned char> pairImage_;  // periodic image of each list pair (PeriodicImages.hpp)
   WallList      walls_;
   ContactHistory springs_;  // only during Rebuild()
   LocalStats    stats_;

@@ -2,9 +2,13 @@
 // kept in our own arrays (not swarm points: notes/petsc-3.18.md). Build() chooses what to send to
 // whom (at neighbour-list rebuilds, after migration) and sends everything a contact needs;
 // Refresh() sends the moving state of the same particles in the same order on the other steps.
+// In periodic directions (-grid_periodic) a rank also receives the periodic images of particles
+// near the opposite face, from its neighbours and from itself (PeriodicImages.hpp): one exchange
+// entry per (rank, image), so a rank may appear several times in Ranks().
 #pragma once
 
 #include "vofdem/dem/ParticleSwarm.hpp"
+#include "vofdem/dem/PeriodicImages.hpp"
 
 #include <array>
 #include <vector>
@@ -19,15 +23,21 @@ public:
   PetscErrorCode Refresh(const ParticleArrays &a, const PetscReal *omega);
 
   PetscInt Count() const { return (PetscInt)id.size(); }
-  // Ranks this rank exchanges ghosts with, and the local indices sent to each (same order).
+  // Ranks this rank exchanges ghosts with (one entry per rank and image), and the local indices sent
+  // with each entry (same order).
   const std::vector<PetscMPIInt>           &Ranks() const { return ranks_; }
   const std::vector<std::vector<PetscInt>> &SendLists() const { return send_; }
   MPI_Comm                                  Comm() const { return comm_; }
 
-  // Ghost state, structure of arrays; vectors hold x,y,z per ghost.
-  std::vector<PetscReal>  x, v, omega, radius, mass;
+  const PeriodicImages                     &Images() const { return periodic_; }
+
+  // Ghost state, structure of arrays; vectors hold x,y,z per ghost. x is where the ghost is seen
+  // from this rank (its owner's position plus the shift of its image), xOwner the position exactly
+  // as its owner holds it, image the code of that shift (PeriodicImages::kNone if none).
+  std::vector<PetscReal>  x, xOwner, v, omega, radius, mass;
   std::vector<PetscInt64> id, clump;
   std::vector<PetscInt>   type;
+  std::vector<unsigned char> image;
 
 private:
   PetscErrorCode Exchange(const ParticleArrays &a, const PetscReal *omega, bool full);
@@ -35,7 +45,9 @@ private:
   MPI_Comm                            comm_ = MPI_COMM_NULL;
   PetscMPIInt                         rank_ = 0;
   std::vector<std::array<PetscReal, 6>> boxes_;  // lo x,y,z, hi x,y,z of every rank
-  std::vector<PetscMPIInt>            ranks_;    // neighbours within the cut-off
+  PeriodicImages                      periodic_;
+  std::vector<PetscMPIInt>            ranks_;    // neighbours within the cut-off, one entry per image
+  std::vector<int>                    images_;   // image code of what this rank sends with each entry
   std::vector<std::vector<PetscInt>>  send_;
   std::vector<PetscInt>               recvCount_;
   std::vector<PetscReal>              sendBuf_, recvBuf_;

@@ -6,12 +6,18 @@
 
 #include <petscdmda.h>
 
+#include <vector>
+
 namespace vofdem {
 
 class Grid {
 public:
-  PetscErrorCode SetFromOptions(MPI_Comm comm);  // -grid_cells, -grid_lower, -grid_upper, -grid_ranks
+  PetscErrorCode SetFromOptions(MPI_Comm comm);  // -grid_cells, -grid_lower, -grid_upper, -grid_ranks, -grid_periodic
   PetscErrorCode SetUp(PetscBool needVertexDM);
+  // Collective: rebuilds both DMDAs with these cells per rank in x, y, z (as many entries as ranks
+  // in that direction), e.g. to balance particle counts (GridRepartition.cpp). Holders of the old
+  // DMs (a swarm's cell DM, a halo's rank boxes) must be given the new ones.
+  PetscErrorCode Repartition(const std::vector<PetscInt> cellsPerRank[3]);
   PetscErrorCode View(PetscViewer viewer) const;
   PetscErrorCode Destroy();
 
@@ -22,6 +28,9 @@ public:
   const PetscReal *Spacing() const { return h_; }
   const PetscInt  *Cells() const { return cells_; }
   MPI_Comm         Comm() const { return comm_; }
+  // -grid_periodic: the two faces normal to direction d are one (the cell DMDA is periodic there;
+  // the particles' vertex DMDA is not: particles are wrapped by the DEM module, notes/petsc-3.18.md).
+  bool Periodic(int d) const { return periodic_[d]; }
 
   // The part of the box whose cells this rank owns: [lo, hi) (closed at the domain's upper end).
   void LocalBox(PetscReal lo[3], PetscReal hi[3]) const;
@@ -38,6 +47,8 @@ private:
   PetscReal h_[3]     = {0, 0, 0};
   PetscInt  start_[3] = {0, 0, 0}, count_[3] = {0, 0, 0};  // owned cells
   PetscInt  ranks_[3] = {0, 0, 0};                          // ranks per direction; 0: PETSc decides
+  bool      periodic_[3] = {false, false, false};
+  std::vector<PetscInt> ownership_[3];                      // cells per rank, once repartitioned; empty: PETSc decides
 };
 
 }  // namespace vofdem

@@ -1,0 +1,212 @@
+// Load balancing of DEM-only scenes (-dem_balance histogram): at a neighbour-list rebuild, when the
+// largest number of particles on a rank exceeds -dem_balance_threshold times the mean, the grid's
+// ownership ranges are recomputed from histograms of the particle counts per cell layer, one per
+// direction that is split over several ranks (a DMDA's ranges are a tensor product: each direction's
+// cuts equalise the counts of its slabs). The grid then rebuilds its DMDAs, the swarm takes the new
+// vertex DMDA, the halo the new rank boxes, and every particle goes straight to its new owner.
+// Coupled scenes must not do this: there the fluid cells decide the decomposition (ARCHITECTURE.md).
+#include "vofdem/dem/Dem.hpp"
+
+#include "vofdem/core/Options.hpp"
+#include "vofdem/core/Runtime.hpp"
+
+// DMSwarmSetMigrateType is not public in PETSc 3.18: the swarm's migration type is switched to
+// "basic" (send each point to the rank in its DMSwarm_rank field) through the private header.
+#include <petsc/private/dmswarmimpl.h>
+
+#include <algorithm>
+#include <cstring>
+#include <string>
+#include <vector>
+
+namespace vofdem {
+
+PetscErrorCode Dem::SetBalanceFromOptions(PetscOptionItems *PetscOptionsObject) {
+  OptionReader opt(PetscOptionsObject);
+
+  PetscFunctionBeginUser;
+  static const std::vector<std::string> kinds  = {"none", "histogram"};
+  std::vector<std::string>              chosen = {"none"};
+  PetscCall(opt.NameList("-balance", "Load balancing of DEM-only scenes: none, histogram (ownership ranges from particle counts per cell layer)", kinds, &chosen));
+  if (chosen.size() != 1) VofdemInputError(comm_, "option -dem_balance: give one method (none or histogram)");
+  balance_ = (PetscBool)(chosen[0] == "histogram");
+  PetscCall(opt.Real("-balance_threshold", "Repartition when the largest particle count of a rank exceeds this times the mean (checked at rebuilds)", "-",
+                     &balanceThreshold_, RealRange::Closed(1, PETSC_MAX_REAL)));
+  PetscCall(opt.Bool("-balance_monitor", "Print the particles per rank before and after each repartition", &balanceMonitor_));
+  PetscFunctionReturn(0);
+}
+
+namespace {
+
+// Cuts n cell layers with counts h into m slabs of at least one layer whose particle counts are as
+// even as the layers allow: slab r ends at the layer boundary closest to (r+1)/m of the total.
+std::vector<PetscInt> SplitHistogram(const std::vector<PetscInt> &h, PetscInt m) {
+  const PetscInt         n = (PetscInt)h.size();
+  std::vector<PetscInt64> cum(n + 1, 0);
+  for (PetscInt i = 0; i < n; ++i) cum[i + 1] = cum[i] + h[i];
+  std::vector<PetscInt> slabs(m);
+  PetscInt              start = 0;
+  for (PetscInt r = 0; r + 1 < m; ++r) {
+    const double target = (double)cum[n] * (r + 1) / m;
+    PetscInt     best = start + 1;
+    for (PetscInt e = start + 1; e <= n - (m - 1 - r); ++e)
+      if (std::abs((double)cum[e] - target) < std::abs((double)cum[best] - target)) best = e;
+    slabs[r] = best - start;
+    start    = best;
+  }
+  slabs[m - 1] = n - start;
+  return slabs;
+}
+
+// Largest / mean particles per rank, and the counts of all ranks.
+PetscErrorCode Imbalance(MPI_Comm comm, PetscInt n, PetscReal *ratio, std::vector<PetscInt> *counts) {
+  PetscMPIInt size;
+
+  PetscFunctionBeginUser;
+  PetscCallMPI(MPI_Comm_size(comm, &size));
+  counts->resize(size);
+  PetscCallMPI(MPI_Allgather(&n, 1, MPIU_INT, counts->data(), 1, MPIU_INT, comm));
+  PetscInt64 total = 0, most = 0;
+  for (PetscInt c : *counts) total += c, most = std::max<PetscInt64>(most, c);
+  *ratio = total ? (PetscReal)most * size / total : 1;
+  PetscFunctionReturn(0);
+}
+
+std::string Describe(const std::vector<PetscInt> &counts) {
+  if (counts.size() > 16) return "";
+  std::string s = " (";
+  for (size_t q = 0; q < counts.size(); ++q) s += (q ? ", " : "") + std::to_string(counts[q]);
+  return s + ")";
+}
+
+}  // namespace
+
+PetscErrorCode Dem::Balance(PetscBool *repartitioned) {
+  PetscMPIInt           size;
+  ParticleArrays        a;
+  PetscReal             before, after;
+  std::vector<PetscInt> countsBefore, countsAfter;
+
+  PetscFunctionBeginUser;
+  *repartitioned = PETSC_FALSE;
+  PetscCallMPI(MPI_Comm_size(comm_, &size));
+  if (!balance_ || size == 1) PetscFunctionReturn(0);
+  PetscInt n;
+  PetscCall(DMSwarmGetLocalSize(swarm_.Dm(), &n));
+  PetscCall(Imbalance(comm_, n, &before, &countsBefore));
+  if (before <= balanceThreshold_) PetscFunctionReturn(0);
+
+  // Histograms of the cell layers along every split direction, summed over ranks.
+  PetscInt        m[3];
+  const PetscInt *l[3];
+  PetscCall(DMDAGetInfo(grid_->CellDM(), nullptr, nullptr, nullptr, nullptr, &m[0], &m[1], &m[2], nullptr, nullptr, nullptr, nullptr, nullptr, nullptr));
+  PetscCall(DMDAGetOwnershipRanges(grid_->CellDM(), &l[0], &l[1], &l[2]));
+  const PetscInt *nc = grid_->Cells();
+  const PetscReal *lo = grid_->Lower(), *h = grid_->Spacing();
+  auto layer = [&](PetscReal x, int d) { return std::min(nc[d] - 1, std::max<PetscInt>(0, (PetscInt)((x - lo[d]) / h[d]))); };
+  std::vector<PetscInt> hist(nc[0] + nc[1] + nc[2], 0), global(hist.size());
+  PetscCall(swarm_.GetArrays(&a));
+  for (PetscInt p = 0; p < a.n; ++p)
+    for (int d = 0, off = 0; d < 3; off += nc[d], ++d)
+      if (m[d] > 1) ++hist[off + layer(a.x[3 * p + d], d)];
+  PetscCall(swarm_.RestoreArrays(&a));
+  PetscCallMPI(MPI_Allreduce(hist.data(), global.data(), (int)hist.size(), MPIU_INT, MPI_SUM, comm_));
+  // A direction is cut anew only if that evens its slabs' counts (layers are whole cells, so a bed a
+  // few cells high may allow no better cut than the present one) by at least 2 %, so that a lattice
+  // plane crossing a layer boundary does not make the cut flip back and forth.
+  auto unevenness = [&](const PetscInt *counts, PetscInt ranks, PetscInt off) {
+    PetscInt64 most = 0, total = 0;
+    for (PetscInt r = 0, c = 0; r < ranks; c += counts[r], ++r) {
+      PetscInt64 sum = 0;
+      for (PetscInt i = c; i < c + counts[r]; ++i) sum += global[off + i];
+      most = std::max(most, sum), total += sum;
+    }
+    return total ? (PetscReal)most * ranks / total : 1;
+  };
+  std::vector<PetscInt> slabs[3];
+  bool                  changed = false;
+  for (int d = 0, off = 0; d < 3; off += nc[d], ++d) {
+    slabs[d].assign(l[d], l[d] + m[d]);
+    if (m[d] == 1) continue;
+    const auto cut = SplitHistogram(std::vector<PetscInt>(global.begin() + off, global.begin() + off + nc[d]), m[d]);
+    if (unevenness(cut.data(), m[d], off) < unevenness(l[d], m[d], off) * (1 - 0.02)) slabs[d] = cut, changed = true;
+  }
+  if (!changed) PetscFunctionReturn(0);  // the layers allow no better cut
+
+  PetscCall(grid_->Repartition(slabs));
+  PetscCall(DMSwarmSetCellDM(swarm_.Dm(), grid_->VertexDM()));
+  PetscCall(halo_.SetUp(*grid_));
+  // Every particle straight to its new owner (rank = i + m0 (j + m1 k), as DMDA numbers them):
+  // DMSwarmMigrate of the PIC type reaches only neighbouring ranks.
+  {
+    PetscInt *rank;
+    PetscCall(swarm_.GetArrays(&a));
+    PetscCall(DMSwarmGetField(swarm_.Dm(), DMSwarmField_rank, nullptr, nullptr, (void **)&rank));
+    for (PetscInt p = 0; p < a.n; ++p) {
+      PetscInt r[3];
+      for (int d = 0; d < 3; ++d) {
+        const PetscInt c = layer(a.x[3 * p + d], d);
+        PetscInt       q = 0, end = slabs[d][0];
+        while (c >= end) end += slabs[d][++q];
+        r[d] = q;
+      }
+      rank[p] = r[0] + m[0] * (r[1] + m[1] * r[2]);
+    }
+    PetscCall(DMSwarmRestoreField(swarm_.Dm(), DMSwarmField_rank, nullptr, nullptr, (void **)&rank));
+    PetscCall(swarm_.RestoreArrays(&a));
+    DM_Swarm                *impl = (DM_Swarm *)swarm_.Dm()->data;
+    const DMSwarmMigrateType type = impl->migrate_type;
+    impl->migrate_type            = DMSWARM_MIGRATE_BASIC;
+    PetscInt total0, total1;
+    PetscCall(DMSwarmGetSize(swarm_.Dm(), &total0));
+    PetscCall(DMSwarmMigrate(swarm_.Dm(), PETSC_TRUE));
+    impl->migrate_type = type;
+    PetscCall(DMSwarmGetSize(swarm_.Dm(), &total1));
+    PetscCheck(total0 == total1, comm_, PETSC_ERR_PLIB, "repartition lost %" PetscInt_FMT " of %" PetscInt_FMT " particles", total0 - total1, total0);
+  }
+  PetscCall(DMSwarmGetLocalSize(swarm_.Dm(), &n));
+  PetscCall(Imbalance(comm_, n, &after, &countsAfter));
+  ++repartitions_;
+  if (balanceMonitor_)
+    PetscCall(PetscPrintf(comm_, "dem: repartition %" PetscInt_FMT " at rebuild %" PetscInt_FMT ": particles per rank, largest / mean, %.3f%s -> %.3f%s\n", repartitions_,
+                        rebuilds_, (double)before, Describe(countsBefore).c_str(), (double)after, Describe(countsAfter).c_str()));
+  *repartitioned = PETSC_TRUE;
+  PetscFunctionReturn(0);
+}
+
+// After a repartition a particle may have moved to a rank that is not among its old rank's halo
+// ranks, so ExchangeSprings may miss its springs: every rank gets all of them (rare, and the map is
+// small: touching pairs only). Keys as in ExchangeSprings: the two ids' bits, then the springs.
+PetscErrorCode Dem::GatherSprings() {
+  constexpr int width = 2 + kSpringWidth;
+  PetscMPIInt   size;
+
+  PetscFunctionBeginUser;
+  PetscCallMPI(MPI_Comm_size(comm_, &size));
+  std::vector<PetscReal> out;
+  out.reserve(springs_.size() * width);
+  for (const auto &[key, s] : springs_) {
+    PetscReal rec[width];
+    std::memcpy(&rec[0], &key.lo, sizeof(PetscInt64));
+    std::memcpy(&rec[1], &key.hi, sizeof(PetscInt64));
+    std::copy(s.begin(), s.end(), &rec[2]);
+    out.insert(out.end(), rec, rec + width);
+  }
+  int              count = (int)out.size();
+  std::vector<int> counts(size), offsets(size + 1, 0);
+  PetscCallMPI(MPI_Allgather(&count, 1, MPI_INT, counts.data(), 1, MPI_INT, comm_));
+  for (int q = 0; q < size; ++q) offsets[q + 1] = offsets[q] + counts[q];
+  std::vector<PetscReal> in(offsets[size]);
+  PetscCallMPI(MPI_Allgatherv(out.data(), count, MPIU_REAL, in.data(), counts.data(), offsets.data(), MPIU_REAL, comm_));
+  for (size_t r = 0; r + width <= in.size(); r += width) {
+    PairKey key;
+    std::memcpy(&key.lo, &in[r], sizeof(PetscInt64));
+    std::memcpy(&key.hi, &in[r + 1], sizeof(PetscInt64));
+    std::array<PetscReal, kSpringWidth> h;
+    std::copy(&in[r + 2], &in[r + 2] + kSpringWidth, h.begin());
+    springs_.emplace(key, h);
+  }
+  PetscFunctionReturn(0);
+}
+
+}  // namespace vofdem
