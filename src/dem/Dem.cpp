@@ -93,6 +93,7 @@ PetscErrorCode Dem::SetFromOptions(MPI_Comm comm) {
     PetscCall(opt.String("-particles_file", "CSV of particles to insert after the fill; the header names the columns: x,y,z required, vx,vy,vz,wx,wy,wz,radius optional (m, m/s, rad/s)", &particlesFile_));
   }
   PetscOptionsEnd();
+  PetscCall(wallSet_.SetFromOptions(comm));
   const PetscReal rFillMax = *std::max_element(fillRadii_.begin(), fillRadii_.end());
   if (fillSpacing_ == 0) fillSpacing_ = 2.2 * rFillMax;
   if (fillSpacing_ < 2 * rFillMax)
@@ -122,6 +123,7 @@ PetscErrorCode Dem::SetUp(const Grid &grid, const PetscReal gravity[3], std::uin
   if (!savePath_.empty()) PetscCall(CheckWritable(comm_, savePath_, "option -dem_save_particles"));
   PetscCall(swarm_.Create(grid));
   PetscCall(halo_.SetUp(grid));
+  PetscCall(wallSet_.SetUp(grid.Lower(), grid.Upper()));
   PetscCall(Fill(seed));
   PetscCall(ReadParticles());
   PetscCall(swarm_.GlobalCount(&inserted_));
@@ -172,6 +174,8 @@ PetscErrorCode Dem::Step(PetscReal dt) {
   for (PetscInt k = 0; k < 3 * a.n; ++k) a.x[k] += dt * a.v[k];
   PetscCall(swarm_.RestoreArrays(&a));
   PetscCall(swarm_.NeedsRebuild(0.5 * skin_, &rebuild));
+  wallSet_.Advance(dt);  // moving walls count in the rebuild rule too (Walls.hpp)
+  if (wallSet_.MovedBeyond(0.5 * skin_)) rebuild = PETSC_TRUE;
   PetscCall(PetscLogEventEnd(evIntegrate_, 0, 0, 0, 0));
   if (rebuild) {
     PetscCall(PetscLogEventBegin(evRebuild_, 0, 0, 0, 0));
@@ -225,6 +229,7 @@ PetscErrorCode Dem::Summarize(DemSummary *s) const {
   s->coordination = s->particles ? (PetscReal)gcounts[0] / s->particles : 0;
   for (int f = 0; f < 6; ++f)
     for (int d = 0; d < 3; ++d) s->wallForce[f][d] = global[3 + 3 * f + d];
+  PetscCall(wallSet_.Summarize(comm_, &s->walls));
   PetscFunctionReturn(0);
 }
 
@@ -281,7 +286,8 @@ PetscErrorCode Dem::View(PetscViewer viewer) const {
     PetscCall(PetscViewerASCIIPrintf(viewer, "dem: bond number (pull-off of two equal spheres / weight of one): %g for radius %g m, %g for radius %g m\n",
                                      (double)bond(rMin_), (double)rMin_, (double)bond(rMax_), (double)rMax_));
   }
-  PetscCall(PetscViewerASCIIPrintf(viewer, "dem: this build has no SJKR adhesion, STL or moving walls, periodic boundaries, several particle types (DEM engine issue)\n"));
+  PetscCall(wallSet_.View(viewer));
+  PetscCall(PetscViewerASCIIPrintf(viewer, "dem: this build has no SJKR adhesion, periodic boundaries, several particle types (DEM engine issue)\n"));
   PetscFunctionReturn(0);
 }
 

@@ -1,6 +1,7 @@
 // Contacts of the particle module: the rebuild sequence (springs by id -> migrate -> ghosts ->
 // exchange springs -> new list -> springs back onto pairs) and the force evaluation.
 #include "vofdem/dem/Dem.hpp"
+#include "vofdem/dem/WallContacts.hpp"
 
 #include <algorithm>
 #include <cstring>
@@ -55,6 +56,7 @@ PetscErrorCode Dem::Rebuild() {
     auto            &h = springs_[PairKey::Wall(a.id[walls_.particle[k]], walls_.wall[k])];
     std::copy(s, s + kSpringWidth, h.begin());
   }
+  wallSet_.SaveSprings(a, &springs_);
   PetscCall(swarm_.RestoreArrays(&a));
   // 2. Particles to their owners; 3. ghosts within the cut-off.
   PetscCall(swarm_.Migrate());
@@ -95,6 +97,7 @@ PetscErrorCode Dem::Rebuild() {
         walls_.touching.back() = 1;
       }
     }
+  wallSet_.BuildCandidates(a, skin_ + adhesionRange_, springs_);  // -dem_walls, same reach
   PetscCall(swarm_.RestoreArrays(&a));
   springs_.clear();
   ++rebuilds_;
@@ -227,6 +230,7 @@ PetscErrorCode Dem::ComputeForcesWith(PetscReal dt) {
     else if (!JKR) stats_.elastic += hertz::ElasticEnergy(Sn, delta);
     stats_.maxOverlap = std::max(stats_.maxOverlap, delta / (2 * r));
   }
+  wallSet_.Evaluate<RM, JKR, VDW, LIN>(a, {&wall_, linearKn_, &rollingParams_, &vdw_}, dt, &stats_.wallContacts, &stats_.elastic, &stats_.maxOverlap);
   const PetscInt n = a.n, ng = halo_.Count();
   hot_.resize(n + ng);
   for (PetscInt p = 0; p < n; ++p) {

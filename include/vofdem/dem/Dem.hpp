@@ -10,6 +10,7 @@
 #include "vofdem/dem/HertzMindlin.hpp"
 #include "vofdem/dem/NeighbourList.hpp"
 #include "vofdem/dem/ParticleSwarm.hpp"
+#include "vofdem/dem/Walls.hpp"
 #include "vofdem/grid/Grid.hpp"
 
 #include <cstdint>
@@ -38,6 +39,7 @@ struct DemSummary {
   PetscReal coordination = 0;  // mean number of particle contacts per particle
   PetscReal maxOverlap   = 0;  // largest overlap / diameter (particles and walls)
   PetscReal wallForce[6][3] = {};  // force of the particles on each face (x-, x+, y-, y+, z-, z+), N
+  std::vector<WallLoad> walls;     // force and torque on each wall of -dem_walls (Walls.hpp)
 };
 
 class Dem {
@@ -68,6 +70,8 @@ public:
   PetscReal          MinRadius() const { return rMin_; }
   PetscReal          MaxRadius() const { return rMax_; }
   DM                 Swarm() const { return swarm_.Dm(); }
+  // Monitor-table columns of the -dem_walls loads (",wall_<name>_fx_N,..."; empty without walls).
+  std::string WallLoadColumns() const { return wallSet_.CsvColumns(); }
 
 private:
   PetscErrorCode Fill(std::uint64_t seed);              // DemFill.cpp
@@ -96,6 +100,7 @@ private:
   Halo          halo_;
   NeighbourList list_;
   WallList      walls_;
+  WallSet       wallSet_;  // -dem_walls: planes, cylinders, STL meshes (Walls.hpp)
   ContactHistory springs_;  // only during Rebuild()
   LocalStats    stats_;
   DemMaterial   material_;
