@@ -93,6 +93,7 @@ PetscErrorCode WallSet::SetFromOptions(MPI_Comm comm) {
 
   PetscFunctionBeginUser;
   PetscCall(PetscOptionsHasHelp(nullptr, &help));
+  comm_ = comm;
   walls_.clear();
   PetscOptionsBegin(comm, "dem_", "Walls beyond the box faces", "Dem");
   {
@@ -123,7 +124,7 @@ PetscErrorCode WallSet::SetUp(const PetscReal boxLower[3], const PetscReal boxUp
   for (Wall &w : walls_) {
     if (w.kind != WallKind::Mesh) continue;
     const std::string option = "-dem_wall_" + w.name + "_file";
-    PetscCall(ReadStlMesh(PETSC_COMM_WORLD, w.file, w.scale, w.offset, option.c_str(), &w.mesh));
+    PetscCall(ReadStlMesh(comm_, w.file, w.scale, w.offset, option.c_str(), &w.mesh));
   }
   Prepare(boxLower, boxUpper);
   PetscFunctionReturn(0);

@@ -214,3 +214,41 @@ TEST(Walls, MovingPlaneDragsRestingSphere) {
   EXPECT_GT(F[0], 0);
   EXPECT_NEAR(set.LocalLoad(0)[0], -F[0], 1e-15);  // the belt feels the opposite force
 }
+
+// A roller: a rod (cylinder, particles outside) turning about its own axis drags a sphere resting on
+// it along its surface velocity, and feels the opposite torque about its axis.
+TEST(Walls, RotatingRollerDragsSphereAndFeelsTorque) {
+  const PetscReal R = 1e-3, Rc = 5e-3, point[3] = {0, 0, 0}, axis[3] = {0, 1, 0};
+  wall::Motion    m;
+  m.axis[0] = 0, m.axis[1] = 1, m.axis[2] = 0, m.omega = 10;  // about y: the top moves at w e_y x Rc e_z = +w Rc e_x
+  WallSet set;
+  set.AddCylinder("roller", point, axis, Rc, false, m);
+  OneParticle p(0, 0, Rc + R - 1e-5, R);
+  PetscReal   F[3];
+  PetscInt    n;
+  Evaluate(set, p, F, &n);
+  EXPECT_EQ(n, 1);
+  EXPECT_GT(F[2], 0);
+  EXPECT_GT(F[0], 0);
+  // The roller gets -F at the contact point z = Rc - 1e-5: a torque about y against its rotation.
+  EXPECT_NEAR(set.LocalLoad(0)[4], -(Rc - 1e-5) * F[0], 1e-12 * std::abs(F[0]) * Rc);
+  EXPECT_LT(set.LocalLoad(0)[4], 0);
+}
+
+// The rebuild rule: a wall moving at 0.1 m/s asks for a rebuild once it may have moved half the skin.
+TEST(Walls, MovingWallTriggersRebuild) {
+  const PetscReal point[3] = {0, 0, 0}, normal[3] = {0, 0, 1}, lo[3] = {-1, -1, -1}, hi[3] = {1, 1, 1};
+  wall::Motion    m;
+  m.velocity[2] = 0.1;
+  WallSet set;
+  set.AddPlane("lift", point, normal, m);
+  set.Prepare(lo, hi);
+  OneParticle p(0, 0, 0.5, 1e-3);
+  set.BuildCandidates(p.Arrays(), 1e-4, {});
+  set.Advance(4e-4);  // 40 um < 50 um
+  EXPECT_FALSE(set.MovedBeyond(5e-5));
+  set.Advance(2e-4);  // 60 um
+  EXPECT_TRUE(set.MovedBeyond(5e-5));
+  set.BuildCandidates(p.Arrays(), 1e-4, {});
+  EXPECT_FALSE(set.MovedBeyond(5e-5));
+}

@@ -1,8 +1,8 @@
 // The particle module (-physics dem): one type of spheres, lattice insertion, gravity,
 // Hertz-Mindlin contacts with damping, tangential springs and Coulomb friction between particles
-// and against the six faces of the box (PHYSICS.md P3), rotation, velocity Verlet with a
+// and against the six faces of the box and the walls of -dem_walls (Walls.hpp) (PHYSICS.md P3), rotation, velocity Verlet with a
 // Rayleigh-time step (P9), Verlet lists with a skin, ghost particles across ranks, migration with a
-// particle-count check. Not yet: rolling resistance, adhesion, STL walls, insertion streams,
+// particle-count check. Not yet: rolling resistance, adhesion, insertion streams,
 // periodic boundaries, several particle types (the DEM engine's issue); the banner says so.
 #pragma once
 

@@ -125,6 +125,7 @@ private:
   PetscReal      Travel(const Wall &w) const;  // bound on the surface displacement since the last rebuild
 
   std::vector<Wall> walls_;
+  MPI_Comm          comm_ = MPI_COMM_NULL;
   PetscReal         lower_[3] = {0, 0, 0}, upper_[3] = {0, 0, 0};
   PetscReal         time_ = 0, rebuildTime_ = 0;
   // Candidates, grouped: [group_[g], group_[g+1]) share one particle and one wall.
