@@ -75,7 +75,8 @@ PetscErrorCode Simulation::SetUp() {
       if (!ec) csv_ = std::fopen(path.c_str(), "w");
       ok = csv_ != nullptr;
       if (csv_)
-        std::fprintf(csv_, "step,time_s,dt_s,particles,kinetic_energy_J,rotational_energy_J,pair_contacts,coordination,wall_contacts,max_overlap_per_diameter,floor_force_z_N,inserted,deleted,wall_time_s\n");
+        std::fprintf(csv_, "step,time_s,dt_s,particles,kinetic_energy_J,rotational_energy_J,pair_contacts,coordination,wall_contacts,max_overlap_per_diameter,floor_force_z_N,inserted,deleted,wall_time_s%s\n",
+                     physics_.dem ? dem_->WallLoadColumns().c_str() : "");
     }
     PetscCallMPI(MPI_Allreduce(&ok, &allOk, 1, MPI_INT, MPI_MIN, comm_));
     if (!allOk) VofdemInputError(comm_, "option -output_dir: cannot create '%s' or write monitor.csv in it", outputDir_.c_str());
@@ -153,6 +154,10 @@ PetscErrorCode Simulation::Monitor() {
       std::snprintf(buf, sizeof buf, "  inserted %lld deleted %lld", (long long)s.inserted, (long long)s.deleted);
       line += buf;
     }
+    for (const WallLoad &L : s.walls) {  // -dem_walls: the force of the particles on each wall
+      std::snprintf(buf, sizeof buf, "  %s F (%.6e, %.6e, %.6e) N", L.name.c_str(), (double)L.force[0], (double)L.force[1], (double)L.force[2]);
+      line += buf;
+    }
   }
   if (monitorTiming_) {
     double fraction = maxSteps_ > 0 ? (double)step_ / maxSteps_ : 0;
@@ -162,9 +167,12 @@ PetscErrorCode Simulation::Monitor() {
   }
   PetscCall(PetscPrintf(comm_, "%s\n", line.c_str()));
   if (csv_) {
-    std::fprintf(csv_, "%d,%.10e,%.6e,%d,%.10e,%.10e,%d,%.6f,%d,%.6e,%.10e,%lld,%lld,%.3f\n", (int)step_, (double)time_, (double)dt_, (int)s.particles, (double)s.kinetic,
+    std::fprintf(csv_, "%d,%.10e,%.6e,%d,%.10e,%.10e,%d,%.6f,%d,%.6e,%.10e,%lld,%lld,%.3f", (int)step_, (double)time_, (double)dt_, (int)s.particles, (double)s.kinetic,
                  (double)s.rotational, (int)s.pairContacts, (double)s.coordination, (int)s.wallContacts, (double)s.maxOverlap, (double)s.wallForce[4][2],
                  (long long)s.inserted, (long long)s.deleted, wall);
+    for (const WallLoad &L : s.walls)
+      for (const PetscReal *q : {L.force, L.torque}) std::fprintf(csv_, ",%.10e,%.10e,%.10e", (double)q[0], (double)q[1], (double)q[2]);
+    std::fprintf(csv_, "\n");
     std::fflush(csv_);
   }
   PetscFunctionReturn(0);

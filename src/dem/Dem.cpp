@@ -134,6 +134,7 @@ PetscErrorCode Dem::SetFromOptions(MPI_Comm comm) {
       if (types_[t].surfaceEnergy == 0)
         VofdemInputError(comm, "option -dem_cohesion jkr needs a surface energy > 0 for every type (-dem_surface_energy or -dem_type_%s_surface_energy)", typeNames_[t].c_str());
   const PetscReal rFillMax = fillSizes_.MaxRadius();
+  PetscCall(wallSet_.SetFromOptions(comm));
   if (fillSpacing_ == 0) fillSpacing_ = 2.2 * rFillMax;
   if (fillSpacing_ < 2 * rFillMax)
     VofdemInputError(comm, "option -dem_fill_spacing: %g m is less than the largest particle diameter (%g m): particles would overlap", (double)fillSpacing_,
@@ -162,6 +163,7 @@ PetscErrorCode Dem::SetUp(Grid &grid, const PetscReal gravity[3], std::uint64_t 
   PetscCall(swarm_.Create(grid));
   PetscCall(halo_.SetUp(grid));
   PetscCall(halo_.Images().CheckRanks(grid));
+  PetscCall(wallSet_.SetUp(grid.Lower(), grid.Upper()));
   PetscCall(Fill(seed));
   PetscCall(ReadParticles());
   PetscCall(swarm_.GlobalCount(&inserted_));
@@ -227,6 +229,8 @@ PetscErrorCode Dem::Step(PetscReal dt) {
   time_ += dt;
   PetscCall(swarm_.NeedsRebuild(0.5 * skin_, &rebuild));
   if (!rebuild && sources_.Active()) PetscCall(sources_.NeedsChange(time_, swarm_, &rebuild));  // Rebuild() inserts and deletes
+  wallSet_.Advance(dt);  // moving walls count in the rebuild rule too (Walls.hpp)
+  if (wallSet_.MovedBeyond(0.5 * skin_)) rebuild = PETSC_TRUE;
   PetscCall(PetscLogEventEnd(evIntegrate_, 0, 0, 0, 0));
   if (rebuild) {
     PetscCall(PetscLogEventBegin(evRebuild_, 0, 0, 0, 0));
@@ -283,6 +287,7 @@ PetscErrorCode Dem::Summarize(DemSummary *s) const {
   s->sources = (PetscBool)sources_.Active();
   s->inserted = sources_.Inserted(), s->deleted = sources_.Deleted();
   s->massInserted = sources_.MassInserted(), s->massDeleted = sources_.MassDeleted();
+  PetscCall(wallSet_.Summarize(comm_, &s->walls));
   PetscFunctionReturn(0);
 }
 
@@ -365,7 +370,7 @@ PetscErrorCode Dem::View(PetscViewer viewer) const {
                                      (double)bond(rMin_), (double)rMin_, (double)bond(rMax_), (double)rMax_));
   }
   PetscCall(sources_.View(viewer));
-  PetscCall(PetscViewerASCIIPrintf(viewer, "dem: this build has no STL or moving walls (DEM engine issue)\n"));
+  PetscCall(wallSet_.View(viewer));
   PetscFunctionReturn(0);
 }
 

@@ -1,6 +1,8 @@
 // Contacts of the particle module: the rebuild sequence (springs by id -> migrate -> ghosts ->
 // exchange springs -> new list -> springs back onto pairs) and the force evaluation.
 #include "vofdem/dem/Dem.hpp"
+#include "vofdem/dem/ContactLaw.hpp"
+#include "vofdem/dem/WallContacts.hpp"
 
 #include <algorithm>
 #include <cstring>
@@ -13,20 +15,6 @@ namespace {
 
 // The normal law of the scene's contact model at overlap delta (P3, P4, P6); a JKR contact keeps
 // its contact radius and bond flag in the history.
-constexpr int kNoCohesion = 0, kJkr = 1, kSjkr = 2;
-
-template <int COH, bool LIN>
-inline hertz::NormalLaw NormalLawAt(const hertz::PairMaterial &c, PetscReal kLinear, PetscReal delta, PetscReal Rstar, PetscReal *history) {
-  if constexpr (COH == kJkr) {
-    history[kJkrBonded] = 1;
-    return hertz::JkrNormal(c, delta, Rstar, &history[kJkrRadius]);
-  } else if constexpr (LIN) {
-    return hertz::LinearNormal(kLinear, delta);
-  } else {
-    return hertz::HertzNormal(c, delta, Rstar);
-  }
-}
-
 inline void Cross(const PetscReal a[3], const PetscReal b[3], PetscReal c[3]) {
   c[0] = a[1] * b[2] - a[2] * b[1];
   c[1] = a[2] * b[0] - a[0] * b[2];
@@ -59,6 +47,7 @@ PetscErrorCode Dem::Rebuild() {
   }
   // Periodic directions: positions back into the box before migration (PeriodicImages.hpp).
   if (halo_.Images().Any()) halo_.Images().Wrap(a.n, a.x);
+  wallSet_.SaveSprings(a, &springs_);
   PetscCall(swarm_.RestoreArrays(&a));
   // 1b. Deletion boxes and insertion sources (their springs go with deleted particles).
   if (sources_.Active()) PetscCall(sources_.Apply(time_, swarm_, &springs_, rMax_));
@@ -107,6 +96,7 @@ PetscErrorCode Dem::Rebuild() {
         walls_.touching.back() = 1;
       }
     }
+  wallSet_.BuildCandidates(a, skin_ + adhesionRange_, springs_);  // -dem_walls, same reach
   PetscCall(swarm_.RestoreArrays(&a));
   springs_.clear();
   ++rebuilds_;
@@ -254,6 +244,8 @@ PetscErrorCode Dem::ComputeForcesWith(PetscReal dt) {
     else if (!JKR) stats_.elastic += hertz::ElasticEnergy(Sn, delta);
     stats_.maxOverlap = std::max(stats_.maxOverlap, delta / (2 * r));
   }
+  wallSet_.Evaluate<RM, COH, NEAR, LIN, MULTI>(a, {&wall_, linearKn_, &rollingParams_, &vdw_, &table_, sjkrDensity_, &lubrication_, adhesionRange_}, dt,
+                                               &stats_.wallContacts, &stats_.elastic, &stats_.maxOverlap);
   const PetscInt n = a.n, ng = halo_.Count();
   hot_.resize(n + ng);
   for (PetscInt p = 0; p < n; ++p) {

@@ -1,9 +1,9 @@
 // The particle module (-physics dem): one type of spheres, lattice insertion, gravity,
 // Hertz-Mindlin contacts with damping, tangential springs and Coulomb friction between particles
-// and against the six faces of the box (PHYSICS.md P3), rotation, velocity Verlet with a
+// and against the six faces of the box and the walls of -dem_walls (Walls.hpp) (PHYSICS.md P3), rotation, velocity Verlet with a
 // Rayleigh-time step (P9), Verlet lists with a skin, ghost particles across ranks, migration with a
-// particle-count check, periodic directions (-grid_periodic, PeriodicImages.hpp). Not yet: rolling
-// resistance, adhesion, STL walls, insertion streams, several particle types (the DEM engine's issue); the banner says so.
+// particle-count check, periodic directions (-grid_periodic, PeriodicImages.hpp), walls of any
+// shape (Walls.hpp), insertion and deletion (ParticleSources.hpp), particle types (Materials.hpp).
 #pragma once
 
 #include "vofdem/dem/Halo.hpp"
@@ -12,6 +12,7 @@
 #include "vofdem/dem/NeighbourList.hpp"
 #include "vofdem/dem/ParticleSources.hpp"
 #include "vofdem/dem/ParticleSwarm.hpp"
+#include "vofdem/dem/Walls.hpp"
 #include "vofdem/grid/Grid.hpp"
 
 #include <cstdint>
@@ -35,6 +36,7 @@ struct DemSummary {
   PetscBool  sources  = PETSC_FALSE;  // insertion sources or deletion boxes exist (ParticleSources)
   PetscInt64 inserted = 0, deleted = 0;  // particles inserted by the sources and deleted so far
   PetscReal  massInserted = 0, massDeleted = 0;  // kg
+  std::vector<WallLoad> walls;     // force and torque on each wall of -dem_walls (Walls.hpp)
 };
 
 class Dem {
@@ -73,6 +75,8 @@ public:
   DM                 Swarm() const { return swarm_.Dm(); }
   const ParticleSources &Sources() const { return sources_; }  // insertion and deletion books
   PetscReal          FillVolumeFraction() const { return fillReached_; }  // reached by the random fill (0: none)
+  // Monitor-table columns of the -dem_walls loads (",wall_<name>_fx_N,..."; empty without walls).
+  std::string WallLoadColumns() const { return wallSet_.CsvColumns(); }
 
 private:
   PetscErrorCode Fill(std::uint64_t seed);              // DemFill.cpp
@@ -116,6 +120,7 @@ private:
   NeighbourList list_;
   std::vector<unsigned char> pairImage_;  // periodic image of each list pair (PeriodicImages.hpp)
   WallList      walls_;
+  WallSet       wallSet_;  // -dem_walls: planes, cylinders, STL meshes (Walls.hpp)
   ContactHistory springs_;  // only during Rebuild()
   LocalStats    stats_;
   DemMaterial   material_;  // -dem_density etc.: the default type, and what -dem_types start from
