@@ -38,8 +38,8 @@ PetscErrorCode Dem::Rebuild() {
   std::vector<PetscInt64> localIds;
 
   PetscFunctionBeginUser;
-  // 1. Springs of touching pairs, by the pair's global ids (local indices change below).
-  springs_.clear();
+  // 1. Springs of touching pairs, by the pair's global ids (local indices change below). springs_
+  // is empty here, except after Load() on another rank count, which puts the saved springs in.
   PetscCall(swarm_.GetArrays(&a));
   // Either index of a pair may be a ghost (pairs are stored lower id first).
   auto idOf = [&](PetscInt j) { return j < a.n ? a.id[j] : halo_.id[j - a.n]; };

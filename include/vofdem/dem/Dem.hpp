@@ -18,6 +18,8 @@
 
 namespace vofdem {
 
+class RankArchive;
+
 struct DemMaterial {
   PetscReal density     = 2500;  // kg/m^3
   PetscReal youngs      = 1e8;   // Pa
@@ -58,6 +60,10 @@ public:
   const std::string &SaveParticlesPath() const { return savePath_; }
   PetscErrorCode View(PetscViewer viewer) const;
   PetscErrorCode Destroy();
+  // Collective, HDF5 viewer (DemSaveLoad.cpp): all DEM state, under the group "dem". Load after
+  // SetUp() with the saving run's options; bitwise continuation on the same rank count.
+  PetscErrorCode Save(PetscViewer viewer);
+  PetscErrorCode Load(PetscViewer viewer);
 
   // Collective: position, velocity and angular velocity of the particle with global id `id`;
   // found is false on all ranks when no rank has it.
@@ -77,6 +83,8 @@ private:
   template <hertz::Rolling model, bool jkr, bool vdw, bool linear>
   PetscErrorCode ComputeForcesWith(PetscReal dt);
   PetscErrorCode ExchangeSprings(const std::vector<PetscInt64> &localIds);
+  struct SavedState;  // DemSaveLoad.cpp: what is archived besides members
+  PetscErrorCode ArchiveState(RankArchive &ar, SavedState &st);
 
   // Per-evaluation contact statistics of this rank (summed over ranks by Summarize).
   struct LocalStats {
