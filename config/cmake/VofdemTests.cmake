@@ -64,3 +64,4 @@ vofdem_bad_input(save_unwritable    "option -dem_save_particles: cannot write ./
 vofdem_bad_input(rolling_unknown    "option -dem_rolling: unknown name 'epsd3'"     ${_dem} -dem_rolling epsd3)
 vofdem_bad_input(rolling_two        "option -dem_rolling: give one model"          ${_dem} -dem_rolling cdt,epsd)
 vofdem_bad_input(grid_ranks         "option -grid_ranks: 3 x 1 x 1 does not fit the 2 ranks" ${_dem} -grid_ranks 3,1,1)
+include(VofdemOutputTests)  # DEM output and analysis

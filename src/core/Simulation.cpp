@@ -75,11 +75,13 @@ PetscErrorCode Simulation::SetUp() {
       if (!ec) csv_ = std::fopen(path.c_str(), "w");
       ok = csv_ != nullptr;
       if (csv_)
-        std::fprintf(csv_, "step,time_s,dt_s,particles,kinetic_energy_J,rotational_energy_J,pair_contacts,coordination,wall_contacts,max_overlap_per_diameter,floor_force_z_N,wall_time_s\n");
+        std::fprintf(csv_, "step,time_s,dt_s,particles,kinetic_energy_J,rotational_energy_J,pair_contacts,coordination,wall_contacts,max_overlap_per_diameter,floor_force_z_N,wall_time_s%s\n",
+                     physics_.dem ? dem_->MonitorHeader().c_str() : "");
     }
     PetscCallMPI(MPI_Allreduce(&ok, &allOk, 1, MPI_INT, MPI_MIN, comm_));
     if (!allOk) VofdemInputError(comm_, "option -output_dir: cannot create '%s' or write monitor.csv in it", outputDir_.c_str());
   }
+  if (physics_.dem) PetscCall(dem_->SetOutputDir(outputDir_));
   PetscFunctionReturn(0);
 }
 
@@ -114,12 +116,14 @@ PetscErrorCode Simulation::Step() {
   }
   time_ += dt;
   ++step_;
+  if (physics_.dem) PetscCall(dem_->WriteOutput(time_));
   PetscFunctionReturn(0);
 }
 
 PetscErrorCode Simulation::Run() {
   PetscFunctionBeginUser;
   PetscCall(PetscTime(&wallStart_));
+  if (physics_.dem) PetscCall(dem_->WriteOutput(time_));
   PetscCall(Monitor());
   while (step_ < maxSteps_ && time_ < finalTime_ * (1 - 1e-12)) {
     PetscCall(Step());
@@ -139,7 +143,9 @@ PetscErrorCode Simulation::Monitor() {
   PetscFunctionBeginUser;
   PetscCall(PetscTime(&now));
   const double wall = now - wallStart_;
+  std::string extraCsv, extraScreen;
   if (physics_.dem) PetscCall(dem_->Summarize(&s));
+  if (physics_.dem) PetscCall(dem_->MonitorValues(&extraCsv, &extraScreen));
   std::string line;
   char        buf[512];
   std::snprintf(buf, sizeof buf, "step %6d  t %.6e s  dt %.3e s", (int)step_, (double)time_, (double)dt_);
@@ -148,7 +154,7 @@ PetscErrorCode Simulation::Monitor() {
     std::snprintf(buf, sizeof buf, "  | particles %d  KE %.6e J  rot %.3e J  contacts %d  Z %.3f  wall %d  overlap %.3e d  floor %.6e N", (int)s.particles,
                   (double)s.kinetic, (double)s.rotational, (int)s.pairContacts, (double)s.coordination, (int)s.wallContacts, (double)s.maxOverlap,
                   (double)s.wallForce[4][2]);
-    line += buf;
+    line += buf + extraScreen;
   }
   if (monitorTiming_) {
     double fraction = maxSteps_ > 0 ? (double)step_ / maxSteps_ : 0;
@@ -158,8 +164,9 @@ PetscErrorCode Simulation::Monitor() {
   }
   PetscCall(PetscPrintf(comm_, "%s\n", line.c_str()));
   if (csv_) {
-    std::fprintf(csv_, "%d,%.10e,%.6e,%d,%.10e,%.10e,%d,%.6f,%d,%.6e,%.10e,%.3f\n", (int)step_, (double)time_, (double)dt_, (int)s.particles, (double)s.kinetic,
-                 (double)s.rotational, (int)s.pairContacts, (double)s.coordination, (int)s.wallContacts, (double)s.maxOverlap, (double)s.wallForce[4][2], wall);
+    std::fprintf(csv_, "%d,%.10e,%.6e,%d,%.10e,%.10e,%d,%.6f,%d,%.6e,%.10e,%.3f%s\n", (int)step_, (double)time_, (double)dt_, (int)s.particles, (double)s.kinetic,
+                 (double)s.rotational, (int)s.pairContacts, (double)s.coordination, (int)s.wallContacts, (double)s.maxOverlap, (double)s.wallForce[4][2], wall,
+                 extraCsv.c_str());
     std::fflush(csv_);
   }
   PetscFunctionReturn(0);

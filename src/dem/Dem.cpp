@@ -93,6 +93,7 @@ PetscErrorCode Dem::SetFromOptions(MPI_Comm comm) {
     PetscCall(opt.String("-particles_file", "CSV of particles to insert after the fill; the header names the columns: x,y,z required, vx,vy,vz,wx,wy,wz,radius optional (m, m/s, rad/s)", &particlesFile_));
   }
   PetscOptionsEnd();
+  PetscCall(out_.SetFromOptions(comm));
   const PetscReal rFillMax = *std::max_element(fillRadii_.begin(), fillRadii_.end());
   if (fillSpacing_ == 0) fillSpacing_ = 2.2 * rFillMax;
   if (fillSpacing_ < 2 * rFillMax)
@@ -144,6 +145,7 @@ PetscErrorCode Dem::SetUp(const Grid &grid, const PetscReal gravity[3], std::uin
   if (jkr_) adhesionRange_ = -std::min(hertz::JkrBreakOverlap(pair_, rMax_ / 2), hertz::JkrBreakOverlap(wall_, rMax_));
   if (vdw_.hamaker > 0) adhesionRange_ = vdw_.range;
   PetscCall(Rebuild());
+  record_.on = out_.NeedsContacts(steps_);
   PetscCall(ComputeForces(0));
   PetscFunctionReturn(0);
 }
@@ -166,6 +168,7 @@ PetscErrorCode Dem::Step(PetscReal dt) {
   PetscBool      rebuild;
 
   PetscFunctionBeginUser;
+  record_.on = out_.NeedsContacts(++steps_);
   PetscCall(PetscLogEventBegin(evIntegrate_, 0, 0, 0, 0));
   PetscCall(swarm_.GetArrays(&a));
   HalfKick(a, dt);

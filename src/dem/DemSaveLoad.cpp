@@ -71,6 +71,7 @@ PetscErrorCode Dem::ArchiveState(RankArchive &ar, SavedState &st) {
   PetscFunctionBeginUser;
   PetscCall(ar.Scalar(&rebuilds_));
   PetscCall(ar.Scalar(&inserted_));
+  PetscCall(ar.Scalar(&steps_));
   PetscCall(ar.Scalar(&rMin_));
   PetscCall(ar.Scalar(&rMax_));
   PetscCall(ar.Scalar(&rayleighTime_));
