@@ -169,6 +169,7 @@ int main(int argc, char **argv) {
   atol: 1e-11
   args: -physics dem -grid_cells 4,4,4 -grid_upper 0.01,0.01,0.01 -dem_radius 5e-4 -dem_fill_count 200
         -dem_fill_jitter 0.5 -dem_fill_velocity_spread 0.3 -dem_friction 0.4 -dem_rolling epsd -dem_rolling_friction 0.1
+        -output_dir ex09-output -dem_output_every 75 -dem_contacts_every 75
   test:
     suffix: 1
     nsize: 1

@@ -55,6 +55,27 @@ std::string StepFile(const char *kind, PetscInt step) {
 
 }  // namespace
 
+// The index entries of one output: particles (N points) or contacts (M segments, 2M points).
+XdmfEntry DemOutputSettings::ParticleEntry(PetscInt step, PetscReal time, PetscInt N) {
+  XdmfEntry e;
+  e.time = time, e.step = step, e.file = StepFile("particles", step), e.nodes = N;
+  e.attributes = {{"radius", "/radius"},     {"velocity", "/velocity", 3}, {"angular_velocity", "/angular_velocity", 3}, {"id", "/id"},
+                  {"type", "/type"},         {"contacts", "/contacts"},    {"contact_force", "/contact_force"}};
+  return e;
+}
+
+XdmfEntry DemOutputSettings::ContactEntry(PetscInt step, PetscReal time, PetscInt M) {
+  XdmfEntry e;
+  e.time = time, e.step = step, e.file = StepFile("contacts", step), e.nodes = 2 * M, e.segments = M;
+  e.attributes = {{"ids", "/ids", 2, true}, {"normal_force", "/normal_force", 3, true}, {"tangential_force", "/tangential_force", 3, true},
+                  {"force_magnitude", "/force_magnitude", 1, true}};
+  return e;
+}
+
+namespace {
+
+}  // namespace
+
 PetscErrorCode DemOutputSettings::SetFromOptions(MPI_Comm comm) {
   PetscBool lowerSet = PETSC_FALSE, upperSet = PETSC_FALSE;
 
@@ -66,6 +87,7 @@ PetscErrorCode DemOutputSettings::SetFromOptions(MPI_Comm comm) {
     PetscCall(opt.Int("-contacts_every", "Write the contact network (XDMF + HDF5, contacts.xmf in -output_dir) every this many steps (0: never)", &contactsEvery, 0));
     PetscCall(opt.RealVector("-stress_lower", "Lower corner of the region whose Love-Weber stress is monitored", "m", stressLower, 3, RealRange::Any(), &lowerSet));
     PetscCall(opt.RealVector("-stress_upper", "Upper corner of the region whose Love-Weber stress is monitored", "m", stressUpper, 3, RealRange::Any(), &upperSet));
+    PetscCall(opt.Bool("-stress_kinetic", "Add the kinetic part sum m v (x) v / V of the particles whose centre is in the region to the stress", &stressKinetic));
   }
   PetscOptionsEnd();
   if (lowerSet != upperSet) VofdemInputError(comm, "option %s: give both -dem_stress_lower and -dem_stress_upper", lowerSet ? "-dem_stress_lower" : "-dem_stress_upper");
@@ -150,11 +172,7 @@ PetscErrorCode Dem::WriteParticles(PetscReal time) {
   PetscCall(PetscViewerDestroy(&viewer));
   PetscCall(swarm_.RestoreArrays(&a));
 
-  XdmfEntry e;
-  e.time = time, e.step = steps_, e.file = file, e.nodes = N;
-  e.attributes = {{"radius", "/radius"},     {"velocity", "/velocity", 3}, {"angular_velocity", "/angular_velocity", 3}, {"id", "/id"},
-                  {"type", "/type"},         {"contacts", "/contacts"},    {"contact_force", "/contact_force"}};
-  out_.particleEntries.push_back(e);
+  out_.particleEntries.push_back(DemOutputSettings::ParticleEntry(steps_, time, N));
   PetscCall(WriteTextFile(comm_, out_.dir + "/particles.xmf", XdmfIndexText("particles", out_.particleEntries), "option -dem_output_every"));
   PetscFunctionReturn(0);
 }
@@ -196,11 +214,7 @@ PetscErrorCode Dem::WriteContacts(PetscReal time) {
   PetscCall(WriteItems(viewer, comm_, "tangential_force", 3, M, tangential, nullptr));
   PetscCall(WriteItems(viewer, comm_, "force_magnitude", 1, M, magnitude, nullptr));
   PetscCall(PetscViewerDestroy(&viewer));
-  XdmfEntry e;
-  e.time = time, e.step = steps_, e.file = file, e.nodes = 2 * M, e.segments = M;
-  e.attributes = {{"ids", "/ids", 2, true}, {"normal_force", "/normal_force", 3, true}, {"tangential_force", "/tangential_force", 3, true},
-                  {"force_magnitude", "/force_magnitude", 1, true}};
-  out_.contactEntries.push_back(e);
+  out_.contactEntries.push_back(DemOutputSettings::ContactEntry(steps_, time, M));
   PetscCall(WriteTextFile(comm_, out_.dir + "/contacts.xmf", XdmfIndexText("contacts", out_.contactEntries), "option -dem_contacts_every"));
   PetscFunctionReturn(0);
 }
@@ -210,7 +224,8 @@ PetscErrorCode Dem::WriteContacts(PetscReal time) {
 //                 + sum over wall contacts with contact point in R of F (x) (x_p - x_c) ],
 // F the force on a (the lower id) or on the particle, x_c the point of the face under the particle.
 // Reported: the symmetric part (xx, yy, zz, xy, xz, yz), Pa. Each pair is counted by the rank that
-// holds its lower id; the sum is over ranks. The kinetic part sum m v (x) v is not included.
+// holds its lower id; the sum is over ranks. With -dem_stress_kinetic the kinetic part
+// (1/V) sum m v (x) v over the particles whose centre is in R is added (positive, like a pressure).
 PetscErrorCode Dem::Stress(PetscReal sigma[6]) const {
   ParticleArrays a;
   PetscReal      s[9] = {0}, g[9];
@@ -245,6 +260,12 @@ PetscErrorCode Dem::Stress(PetscReal sigma[6]) const {
     const PetscReal *F = &record_.wall[ContactRecord::kWidth * k];
     for (int i = 0; i < 3; ++i)
       for (int j = 0; j < 3; ++j) s[3 * i + j] += F[i] * (x[j] - xc[j]);
+  }
+  for (PetscInt p = 0; p < n && out_.stressKinetic; ++p) {
+    if (!inside(&a.x[3 * p])) continue;
+    const PetscReal *v = &a.v[3 * p];
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j) s[3 * i + j] += a.mass[p] * v[i] * v[j];
   }
   PetscCall(swarm_.RestoreArrays(&a));
   PetscCallMPI(MPI_Allreduce(s, g, 9, MPIU_REAL, MPIU_SUM, comm_));

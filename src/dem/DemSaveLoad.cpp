@@ -63,6 +63,7 @@ struct Dem::SavedState {
   std::vector<std::vector<PetscReal>> fields;  // swarm fields, kSwarmFields order
   std::vector<PetscInt>               fieldBs;
   std::vector<PetscReal> pairIds, wallIds, haloRanks, sendCounts, send, stats;
+  std::vector<PetscReal> particleOutputs, contactOutputs;  // the XDMF index entries, on rank 0
 };
 
 // The archived state, in order; Save and Load both run this, so a new piece of state is one line.
@@ -93,6 +94,8 @@ PetscErrorCode Dem::ArchiveState(RankArchive &ar, SavedState &st) {
   PetscCall(ar.Array("halo_send_counts", &st.sendCounts));
   PetscCall(ar.Array("halo_send", &st.send));
   PetscCall(ar.Array("stats", &st.stats, kStatsWidth));
+  PetscCall(ar.Array("output_particles", &st.particleOutputs, 3));  // step, time, count of each output so far (rank 0)
+  PetscCall(ar.Array("output_contacts", &st.contactOutputs, 3));
   PetscFunctionReturn(0);
 }
 
@@ -119,6 +122,12 @@ PetscErrorCode Dem::Save(PetscViewer viewer) {
   for (const auto &s : halo_.SendLists()) st.sendCounts.push_back((PetscReal)s.size()), st.send.insert(st.send.end(), s.begin(), s.end());
   st.stats = {(PetscReal)stats_.pairContacts, (PetscReal)stats_.wallContacts, stats_.maxOverlap, stats_.elastic};
   for (int f = 0; f < 6; ++f) st.stats.insert(st.stats.end(), stats_.wallForce[f], stats_.wallForce[f] + 3);
+  PetscMPIInt rank;
+  PetscCallMPI(MPI_Comm_rank(comm_, &rank));
+  for (const XdmfEntry &e : rank == 0 ? out_.particleEntries : std::vector<XdmfEntry>{})
+    st.particleOutputs.insert(st.particleOutputs.end(), {(PetscReal)e.step, e.time, (PetscReal)e.nodes});
+  for (const XdmfEntry &e : rank == 0 ? out_.contactEntries : std::vector<XdmfEntry>{})
+    st.contactOutputs.insert(st.contactOutputs.end(), {(PetscReal)e.step, e.time, (PetscReal)e.segments});
   PetscCall(PetscViewerHDF5PushGroup(viewer, "dem"));
   PetscCall(ar.Begin(viewer, comm_, false, "Dem::Save"));
   PetscCall(ArchiveState(ar, st));
@@ -207,6 +216,12 @@ PetscErrorCode Dem::Load(PetscViewer viewer) {
     if (rank == 0) st.stats = sum;
     else std::fill(st.stats.begin(), st.stats.end(), 0.0);
   }
+  // The output indices so far (only rank 0 writes them).
+  out_.particleEntries.clear(), out_.contactEntries.clear();
+  for (size_t k = 0; k + 2 < st.particleOutputs.size(); k += 3)
+    out_.particleEntries.push_back(DemOutputSettings::ParticleEntry((PetscInt)st.particleOutputs[k], st.particleOutputs[k + 1], (PetscInt)st.particleOutputs[k + 2]));
+  for (size_t k = 0; k + 2 < st.contactOutputs.size(); k += 3)
+    out_.contactEntries.push_back(DemOutputSettings::ContactEntry((PetscInt)st.contactOutputs[k], st.contactOutputs[k + 1], (PetscInt)st.contactOutputs[k + 2]));
   stats_.pairContacts = (PetscInt)st.stats[0];
   stats_.wallContacts = (PetscInt)st.stats[1];
   stats_.maxOverlap   = st.stats[2];

@@ -17,10 +17,13 @@ struct DemOutputSettings {
   PetscInt    particlesEvery = 0, contactsEvery = 0;  // steps; 0 = never
   PetscReal   stressLower[3] = {0, 0, 0}, stressUpper[3] = {0, 0, 0};
   PetscBool   stress = PETSC_FALSE;                   // a stress region was given
+  PetscBool   stressKinetic = PETSC_FALSE;            // add the kinetic part sum m v (x) v
   std::string dir;                                     // -output_dir
   std::vector<XdmfEntry> particleEntries, contactEntries;
 
   PetscErrorCode SetFromOptions(MPI_Comm comm);
+  static XdmfEntry ParticleEntry(PetscInt step, PetscReal time, PetscInt N);
+  static XdmfEntry ContactEntry(PetscInt step, PetscReal time, PetscInt M);
   // Whether the contact forces of the evaluation at step `step` are needed.
   bool NeedsContacts(PetscInt step) const {
     return stress || (particlesEvery > 0 && step % particlesEvery == 0) || (contactsEvery > 0 && step % contactsEvery == 0);
