@@ -128,8 +128,8 @@ static PetscErrorCode Main() {
   // The scene must exercise what is saved: contacts with springs, wall contacts.
   PetscCall(PetscPrintf(PETSC_COMM_WORLD, "%d particles, %d + %d steps; at the end %d pair and %d wall contacts\n", (int)n, (int)N, (int)N, (int)s.pairContacts,
                         (int)s.wallContacts));
-  PetscCall(Run(PETSC_COMM_WORLD, N, "", "ex09-world.h5", &half));
-  PetscCall(Run(PETSC_COMM_WORLD, N, "ex09-world.h5", "", &resumed));
+  PetscCall(Run(PETSC_COMM_WORLD, N, "", "ex12-world.h5", &half));
+  PetscCall(Run(PETSC_COMM_WORLD, N, "ex12-world.h5", "", &resumed));
   // Unsorted: equal rows mean the same particles in the same memory order on each rank as well.
   PetscCall(report("save at N, load, N more steps vs 2N steps, every field in memory order", MaxDiff(reference, resumed, 0, kWidth), 0, true));
 
@@ -137,10 +137,10 @@ static PetscErrorCode Main() {
     // 1-rank runs on rank 0's PETSC_COMM_SELF; the other ranks wait.
     const PetscReal        L = 0.01, tol = 1e-10;
     std::vector<PetscReal> fromWorld, fromSelf;
-    if (rank == 0) PetscCall(Run(PETSC_COMM_SELF, N, "ex09-world.h5", "", &fromWorld));
-    if (rank == 0) PetscCall(Run(PETSC_COMM_SELF, N, "", "ex09-self.h5", &half));
+    if (rank == 0) PetscCall(Run(PETSC_COMM_SELF, N, "ex12-world.h5", "", &fromWorld));
+    if (rank == 0) PetscCall(Run(PETSC_COMM_SELF, N, "", "ex12-self.h5", &half));
     PetscCallMPI(MPI_Barrier(PETSC_COMM_WORLD));
-    PetscCall(Run(PETSC_COMM_WORLD, N, "ex09-self.h5", "", &fromSelf));
+    PetscCall(Run(PETSC_COMM_WORLD, N, "ex12-self.h5", "", &fromSelf));
     PetscReal d[6] = {0};
     if (rank == 0) {
       const auto ref = ById(reference), a = ById(fromWorld), b = ById(fromSelf);
@@ -169,7 +169,7 @@ int main(int argc, char **argv) {
   atol: 1e-11
   args: -physics dem -grid_cells 4,4,4 -grid_upper 0.01,0.01,0.01 -dem_radius 5e-4 -dem_fill_count 200
         -dem_fill_jitter 0.5 -dem_fill_velocity_spread 0.3 -dem_friction 0.4 -dem_rolling epsd -dem_rolling_friction 0.1
-        -output_dir ex09-output -dem_output_every 75 -dem_contacts_every 75
+        -output_dir ex12-output -dem_output_every 75 -dem_contacts_every 75
   test:
     suffix: 1
     nsize: 1
@@ -179,5 +179,5 @@ int main(int argc, char **argv) {
   test:
     suffix: 4
     nsize: 4
-    output_file: output/ex09_save_load_2.out
+    output_file: output/ex12_save_load_2.out
 TEST*/

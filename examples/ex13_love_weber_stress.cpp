@@ -54,13 +54,13 @@ static PetscErrorCode Lattice() {
   for (PetscInt k = 0; k < n; ++k)
     for (PetscInt j = 0; j < n; ++j)
       for (PetscInt i = 0; i < n; ++i) csv += Num(R - deltaWall + i * s) + "," + Num(R - deltaWall + j * s) + "," + Num(R - deltaWall + k * s) + "\n";
-  PetscCall(vofdem::WriteTextFile(PETSC_COMM_WORLD, "ex10-lattice.csv", csv, "ex10 lattice"));
+  PetscCall(vofdem::WriteTextFile(PETSC_COMM_WORLD, "ex13-lattice.csv", csv, "ex13 lattice"));
   PetscCall(Set("-grid_upper", Num(L) + "," + Num(L) + "," + Num(L)));
   PetscCall(Set("-gravity", "0,0,0"));
   PetscCall(Set("-dem_radius", Num(R)));
   PetscCall(Set("-dem_youngs_modulus", Num(E)));
   PetscCall(Set("-dem_poisson_ratio", Num(nu)));
-  PetscCall(Set("-dem_particles_file", "ex10-lattice.csv"));
+  PetscCall(Set("-dem_particles_file", "ex13-lattice.csv"));
   // Hertz (P3): pairs R* = R/2, walls R* = R (same material).
   const PetscReal Es = vofdem::hertz::EffectiveModulus(E, nu, E, nu);
   const PetscReal Fp = 4.0 / 3.0 * Es * std::sqrt(R / 2) * std::pow(delta, 1.5), Fw = 4.0 / 3.0 * Es * std::sqrt(R) * std::pow(deltaWall, 1.5);
@@ -180,9 +180,9 @@ int main(int argc, char **argv) {
   test:
     suffix: 2
     nsize: 2
-    output_file: output/ex10_love_weber_stress_1.out
+    output_file: output/ex13_love_weber_stress_1.out
   test:
     suffix: 4
     nsize: 4
-    output_file: output/ex10_love_weber_stress_1.out
+    output_file: output/ex13_love_weber_stress_1.out
 TEST*/
