@@ -1,7 +1,8 @@
 static const char help[] = "Dem::Save / Dem::Load: a run that saves at step N, is destroyed, re-created from the same options, loads\n"
                            "and runs N more steps must equal the uninterrupted 2N-step run bit for bit on the same rank count (every\n"
                            "swarm field, in memory order). On several ranks also: that save loaded on 1 rank and a 1-rank save loaded\n"
-                           "on all ranks agree with the uninterrupted run to 1e-10 (relative) after N steps. Exits non-zero on failure.\n\n";
+                           "on all ranks, and that save loaded on as many ranks decomposed another way, agree with the uninterrupted run\n"
+                           "to 1e-10 (relative) after N steps. Exits non-zero on failure.\n\n";
 
 // The scene: spheres with random velocities under gravity in a small box, so that the first N
 // steps contain contacts, wall contacts, list rebuilds and particles crossing between ranks.
@@ -64,13 +65,21 @@ static std::vector<PetscReal> ById(const std::vector<PetscReal> &all) {
   return out;
 }
 
+// Ranks per direction of the runs on several ranks (-grid_ranks), so that the particles at the
+// bottom of the box lie on every rank; "" lets PETSc choose (1 rank).
+static std::string decomposition;
+
 // One run on `comm`: `steps` steps, after loading `loadFrom` if given; saved to `saveTo` if given.
 static PetscErrorCode Run(MPI_Comm comm, PetscInt steps, const std::string &loadFrom, const std::string &saveTo, std::vector<PetscReal> *all,
                           vofdem::DemSummary *summary = nullptr) {
   vofdem::Simulation sim;
   PetscViewer        viewer;
+  PetscMPIInt        size;
 
   PetscFunctionBeginUser;
+  PetscCallMPI(MPI_Comm_size(comm, &size));
+  if (size > 1 && !decomposition.empty()) PetscCall(PetscOptionsSetValue(nullptr, "-grid_ranks", decomposition.c_str()));
+  else PetscCall(PetscOptionsClearValue(nullptr, "-grid_ranks"));
   PetscCall(sim.Create(comm));
   PetscCall(sim.SetFromOptions());
   PetscCall(sim.SetUp());
@@ -110,6 +119,7 @@ static PetscErrorCode Main() {
   PetscCall(PetscOptionsGetInt(nullptr, nullptr, "-half_steps", &N, nullptr));
   PetscCallMPI(MPI_Comm_size(PETSC_COMM_WORLD, &size));
   PetscCallMPI(MPI_Comm_rank(PETSC_COMM_WORLD, &rank));
+  decomposition = size == 2 ? "2,1,1" : size == 4 ? "2,2,1" : "";
   auto report = [&](const char *what, PetscReal err, PetscReal tol, bool exact) -> PetscErrorCode {
     PetscFunctionBeginUser;
     const bool bad = exact ? err != 0 : !(err <= tol);
@@ -141,18 +151,23 @@ static PetscErrorCode Main() {
     if (rank == 0) PetscCall(Run(PETSC_COMM_SELF, N, "", "ex12-self.h5", &half));
     PetscCallMPI(MPI_Barrier(PETSC_COMM_WORLD));
     PetscCall(Run(PETSC_COMM_WORLD, N, "ex12-self.h5", "", &fromSelf));
-    PetscReal d[6] = {0};
+    // As many ranks, cut the other way: Load must notice and migrate and rebuild.
+    std::vector<PetscReal> turned;
+    decomposition = size == 2 ? "1,2,1" : "1,2,2";
+    PetscCall(Run(PETSC_COMM_WORLD, N, "ex12-world.h5", "", &turned));
+    PetscReal d[9] = {0};
     if (rank == 0) {
-      const auto ref = ById(reference), a = ById(fromWorld), b = ById(fromSelf);
+      const auto ref = ById(reference), a = ById(fromWorld), b = ById(fromSelf), c = ById(turned);
       d[0] = MaxDiff(ref, a, 1, 4) / L, d[1] = MaxDiff(ref, a, 4, 7) / vmax, d[2] = MaxDiff(ref, a, 7, kMoving) / wmax;
       d[3] = MaxDiff(ref, b, 1, 4) / L, d[4] = MaxDiff(ref, b, 4, 7) / vmax, d[5] = MaxDiff(ref, b, 7, kMoving) / wmax;
+      d[6] = MaxDiff(ref, c, 1, 4) / L, d[7] = MaxDiff(ref, c, 4, 7) / vmax, d[8] = MaxDiff(ref, c, 7, kMoving) / wmax;
     }
-    PetscCallMPI(MPI_Bcast(d, 6, MPIU_REAL, 0, PETSC_COMM_WORLD));
+    PetscCallMPI(MPI_Bcast(d, 9, MPIU_REAL, 0, PETSC_COMM_WORLD));
     const char *what[3] = {"positions / box size", "velocities / max speed", "angular velocities / max spin"};
+    const char *how[3]  = {"multi-rank save loaded on 1 rank", "1-rank save loaded on all ranks", "save loaded on as many ranks cut another way"};
     char        line[160];
-    for (int k = 0; k < 6; ++k) {
-      if (k < 3) std::snprintf(line, sizeof line, "multi-rank save loaded on 1 rank, %s", what[k]);
-      else std::snprintf(line, sizeof line, "1-rank save loaded on all ranks, %s", what[k - 3]);
+    for (int k = 0; k < 9; ++k) {
+      std::snprintf(line, sizeof line, "%s, %s", how[k / 3], what[k % 3]);
       PetscCall(report(line, d[k], tol, false));
     }
   }

@@ -133,6 +133,16 @@ PetscErrorCode Dem::Save(PetscViewer viewer) {
   PetscCall(ArchiveState(ar, st));
   PetscCall(ar.Finish());
   PetscCall(PetscViewerHDF5PopGroup(viewer));
+  {  // Each rank's box: a load on as many ranks but another decomposition must not reuse the halo.
+    RankArchive            dec;
+    std::vector<PetscReal> box(6);
+    grid_->LocalBox(&box[0], &box[3]);
+    PetscCall(PetscViewerHDF5PushGroup(viewer, "dem/decomposition"));
+    PetscCall(dec.Begin(viewer, comm_, false, "Dem::Save"));
+    PetscCall(dec.Array("box", &box, 6));
+    PetscCall(dec.Finish());
+    PetscCall(PetscViewerHDF5PopGroup(viewer));
+  }
   PetscFunctionReturn(0);
 }
 
@@ -154,8 +164,21 @@ PetscErrorCode Dem::Load(PetscViewer viewer) {
     PetscCall(DMSwarmGetField(dm, kSwarmFields[f], &st.fieldBs[f], &type, &data));
     PetscCall(DMSwarmRestoreField(dm, kSwarmFields[f], &st.fieldBs[f], &type, &data));
   }
+  bool sameDecomposition;
+  {  // As many ranks, each with the box it had: then the bitwise path (halo and lists as saved).
+    RankArchive            dec;
+    std::vector<PetscReal> saved, box(6);
+    grid_->LocalBox(&box[0], &box[3]);
+    PetscCall(PetscViewerHDF5PushGroup(viewer, "dem/decomposition"));
+    PetscCall(dec.Begin(viewer, comm_, true, "Dem::Load"));
+    PetscCall(dec.Array("box", &saved, 6));
+    PetscCall(PetscViewerHDF5PopGroup(viewer));
+    int same = dec.SameRanks() && saved == box, all;
+    PetscCallMPI(MPI_Allreduce(&same, &all, 1, MPI_INT, MPI_MIN, comm_));
+    sameDecomposition = all;
+  }
   PetscCall(PetscViewerHDF5PushGroup(viewer, "dem"));
-  PetscCall(ar.Begin(viewer, comm_, true, "Dem::Load"));
+  PetscCall(ar.Begin(viewer, comm_, true, "Dem::Load", !sameDecomposition));
   PetscCall(ArchiveState(ar, st));
   PetscCall(PetscViewerHDF5PopGroup(viewer));
   const int    iPos = 0, iId = 5;

@@ -39,13 +39,14 @@ PetscErrorCode ReadAll(PetscViewer viewer, MPI_Comm comm, const char *name, Pets
 
 }  // namespace
 
-PetscErrorCode RankArchive::Begin(PetscViewer viewer, MPI_Comm comm, bool loading, const char *what) {
+PetscErrorCode RankArchive::Begin(PetscViewer viewer, MPI_Comm comm, bool loading, const char *what, bool gatherAll) {
   PetscMPIInt size, rank;
 
   PetscFunctionBeginUser;
   viewer_  = viewer;
   comm_    = comm;
   loading_ = loading;
+  gatherAll_ = gatherAll;
   what_    = what;
   PetscCallMPI(MPI_Comm_size(comm, &size));
   PetscCallMPI(MPI_Comm_rank(comm, &rank));

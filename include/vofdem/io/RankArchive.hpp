@@ -19,13 +19,14 @@ namespace vofdem {
 class RankArchive {
 public:
   // Collective. Saving: opens nothing, writes under the viewer's current group. Loading: reads
-  // "layout" first (an input error naming `what` if it is missing).
-  PetscErrorCode Begin(PetscViewer viewer, MPI_Comm comm, bool loading, const char *what);
+  // "layout" first (an input error naming `what` if it is missing); `gatherAll` asks for every
+  // rank's segments even on the saving rank count (e.g. when the decomposition differs).
+  PetscErrorCode Begin(PetscViewer viewer, MPI_Comm comm, bool loading, const char *what, bool gatherAll = false);
   PetscErrorCode Finish();  // saving: writes "layout"
 
   bool Loading() const { return loading_; }
   // True when loading on the rank count that saved: segments come back per rank.
-  bool SameRanks() const { return savedRanks_ == ranks_; }
+  bool SameRanks() const { return savedRanks_ == ranks_ && !gatherAll_; }
   int  SavedRanks() const { return savedRanks_; }
 
   // One value per rank (loading on another rank count: the value of saved rank 0).
@@ -58,7 +59,7 @@ private:
 
   PetscViewer            viewer_ = nullptr;
   MPI_Comm               comm_   = MPI_COMM_NULL;
-  bool                   loading_ = false;
+  bool                   loading_ = false, gatherAll_ = false;
   int                    ranks_ = 1, rank_ = 0, savedRanks_ = 1;
   std::string            what_;
   // Saving: this rank's layout row; loading: all saved rows. A row starts with its own length.
