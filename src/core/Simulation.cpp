@@ -75,12 +75,13 @@ PetscErrorCode Simulation::SetUp() {
       if (!ec) csv_ = std::fopen(path.c_str(), "w");
       ok = csv_ != nullptr;
       if (csv_)
-        std::fprintf(csv_, "step,time_s,dt_s,particles,kinetic_energy_J,rotational_energy_J,pair_contacts,coordination,wall_contacts,max_overlap_per_diameter,floor_force_z_N,inserted,deleted,wall_time_s%s\n",
-                     physics_.dem ? dem_->WallLoadColumns().c_str() : "");
+        std::fprintf(csv_, "step,time_s,dt_s,particles,kinetic_energy_J,rotational_energy_J,pair_contacts,coordination,wall_contacts,max_overlap_per_diameter,floor_force_z_N,inserted,deleted,wall_time_s%s%s\n",
+                     physics_.dem ? dem_->WallLoadColumns().c_str() : "", physics_.dem ? dem_->MonitorHeader().c_str() : "");
     }
     PetscCallMPI(MPI_Allreduce(&ok, &allOk, 1, MPI_INT, MPI_MIN, comm_));
     if (!allOk) VofdemInputError(comm_, "option -output_dir: cannot create '%s' or write monitor.csv in it", outputDir_.c_str());
   }
+  if (physics_.dem) PetscCall(dem_->SetOutputDir(outputDir_));
   PetscFunctionReturn(0);
 }
 
@@ -115,12 +116,14 @@ PetscErrorCode Simulation::Step() {
   }
   time_ += dt;
   ++step_;
+  if (physics_.dem) PetscCall(dem_->WriteOutput(time_));
   PetscFunctionReturn(0);
 }
 
 PetscErrorCode Simulation::Run() {
   PetscFunctionBeginUser;
   PetscCall(PetscTime(&wallStart_));
+  if (physics_.dem) PetscCall(dem_->WriteOutput(time_));
   PetscCall(Monitor());
   while (step_ < maxSteps_ && time_ < finalTime_ * (1 - 1e-12)) {
     PetscCall(Step());
@@ -140,7 +143,9 @@ PetscErrorCode Simulation::Monitor() {
   PetscFunctionBeginUser;
   PetscCall(PetscTime(&now));
   const double wall = now - wallStart_;
+  std::string extraCsv, extraScreen;
   if (physics_.dem) PetscCall(dem_->Summarize(&s));
+  if (physics_.dem) PetscCall(dem_->MonitorValues(&extraCsv, &extraScreen));
   std::string line;
   char        buf[512];
   std::snprintf(buf, sizeof buf, "step %6d  t %.6e s  dt %.3e s", (int)step_, (double)time_, (double)dt_);
@@ -154,6 +159,7 @@ PetscErrorCode Simulation::Monitor() {
       std::snprintf(buf, sizeof buf, "  inserted %lld deleted %lld", (long long)s.inserted, (long long)s.deleted);
       line += buf;
     }
+    line += extraScreen;
     for (const WallLoad &L : s.walls) {  // -dem_walls: the force of the particles on each wall
       std::snprintf(buf, sizeof buf, "  %s F (%.6e, %.6e, %.6e) N", L.name.c_str(), (double)L.force[0], (double)L.force[1], (double)L.force[2]);
       line += buf;
@@ -172,7 +178,7 @@ PetscErrorCode Simulation::Monitor() {
                  (long long)s.inserted, (long long)s.deleted, wall);
     for (const WallLoad &L : s.walls)
       for (const PetscReal *q : {L.force, L.torque}) std::fprintf(csv_, ",%.10e,%.10e,%.10e", (double)q[0], (double)q[1], (double)q[2]);
-    std::fprintf(csv_, "\n");
+    std::fprintf(csv_, "%s\n", extraCsv.c_str());
     std::fflush(csv_);
   }
   PetscFunctionReturn(0);

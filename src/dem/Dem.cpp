@@ -135,6 +135,7 @@ PetscErrorCode Dem::SetFromOptions(MPI_Comm comm) {
         VofdemInputError(comm, "option -dem_cohesion jkr needs a surface energy > 0 for every type (-dem_surface_energy or -dem_type_%s_surface_energy)", typeNames_[t].c_str());
   const PetscReal rFillMax = fillSizes_.MaxRadius();
   PetscCall(wallSet_.SetFromOptions(comm));
+  PetscCall(out_.SetFromOptions(comm));
   if (fillSpacing_ == 0) fillSpacing_ = 2.2 * rFillMax;
   if (fillSpacing_ < 2 * rFillMax)
     VofdemInputError(comm, "option -dem_fill_spacing: %g m is less than the largest particle diameter (%g m): particles would overlap", (double)fillSpacing_,
@@ -199,6 +200,7 @@ PetscErrorCode Dem::SetUp(Grid &grid, const PetscReal gravity[3], std::uint64_t 
   if (vdw_.hamaker > 0) adhesionRange_ = vdw_.range;
   if (lubrication_.viscosity > 0) adhesionRange_ = std::max(adhesionRange_, lubrication_.maxGap);
   PetscCall(Rebuild());
+  record_.on = out_.NeedsContacts(steps_);
   PetscCall(ComputeForces(0));
   PetscFunctionReturn(0);
 }
@@ -221,6 +223,7 @@ PetscErrorCode Dem::Step(PetscReal dt) {
   PetscBool      rebuild;
 
   PetscFunctionBeginUser;
+  record_.on = out_.NeedsContacts(++steps_);
   PetscCall(PetscLogEventBegin(evIntegrate_, 0, 0, 0, 0));
   PetscCall(swarm_.GetArrays(&a));
   HalfKick(a, dt);

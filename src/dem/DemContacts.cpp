@@ -28,8 +28,8 @@ PetscErrorCode Dem::Rebuild() {
   std::vector<PetscInt64> localIds;
 
   PetscFunctionBeginUser;
-  // 1. Springs of touching pairs, by the pair's global ids (local indices change below).
-  springs_.clear();
+  // 1. Springs of touching pairs, by the pair's global ids (local indices change below). springs_
+  // is empty here, except after Load() on another rank count, which puts the saved springs in.
   PetscCall(swarm_.GetArrays(&a));
   // Either index of a pair may be a ghost (pairs are stored lower id first).
   auto idOf = [&](PetscInt j) { return j < a.n ? a.id[j] : halo_.id[j - a.n]; };
@@ -206,6 +206,7 @@ PetscErrorCode Dem::ComputeForcesWith(PetscReal dt) {
     for (int d = 0; d < 3; ++d) a.f[3 * p + d] = a.mass[p] * gravity_[d], a.torque[3 * p + d] = 0;
   // Box faces: spheres of infinite radius and mass (P3), R* = R, m* = m; only the candidates.
   const PetscReal *lo = grid_->Lower(), *hi = grid_->Upper();
+  if (record_.on) record_.Reset(list_.Size(), walls_.Size());
   for (size_t k = 0; k < walls_.Size(); ++k) {
     const PetscInt  p = walls_.particle[k];
     const int       face = walls_.wall[k], d = face / 2;
@@ -239,6 +240,7 @@ PetscErrorCode Dem::ComputeForcesWith(PetscReal dt) {
     // secant normal stiffness F_n,elastic / delta is (2/3) S_n.
     hertz::RollingTorque<RM>(MULTI ? table_.WallRolling(a.type[p]) : rollingParams_, Fn, 2.0 / 3.0 * Sn, r, 1.4 * a.mass[p] * r * r, n, w, dt, xi + 3, M);
     for (int e = 0; e < 3; ++e) a.f[3 * p + e] += F[e], a.torque[3 * p + e] += tq[e] + M[e], stats_.wallForce[face][e] -= F[e];
+    if (record_.on) ContactRecord::Store(&record_.wall[ContactRecord::kWidth * k], F, Ft);
     ++stats_.wallContacts;
     if (LIN) stats_.elastic += 0.5 * linearKn_ * delta * delta;
     else if (!JKR) stats_.elastic += hertz::ElasticEnergy(Sn, delta);
@@ -312,6 +314,7 @@ PetscErrorCode Dem::ComputeForcesWith(PetscReal dt) {
       M[0] = M[1] = M[2] = 0;
     }
     std::copy(xi, xi + kSpringWidth, stored);
+    if (record_.on) ContactRecord::Store(&record_.pair[ContactRecord::kWidth * k], F, Ft);
     // Torques: -R n x F_t on both, +M on A and -M on B; forces +F on A, -F on B; only local
     // particles are written.
     if (ia < n)

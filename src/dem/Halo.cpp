@@ -99,6 +99,16 @@ PetscErrorCode Halo::Refresh(const ParticleArrays &a, const PetscReal *om) {
   PetscFunctionReturn(0);
 }
 
+PetscErrorCode Halo::Restore(const ParticleArrays &a, const PetscReal *om, const std::vector<PetscMPIInt> &ranks, const std::vector<int> &images,
+                             const std::vector<std::vector<PetscInt>> &send) {
+  PetscFunctionBeginUser;
+  ranks_  = ranks;
+  images_ = images;
+  send_  = send;
+  PetscCall(Exchange(a, om, true));
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode Halo::Exchange(const ParticleArrays &a, const PetscReal *om, bool full) {
   const int                nq = (int)ranks_.size(), width = full ? kFull : kMoving;
   std::vector<MPI_Request> req(2 * nq);

@@ -6,6 +6,8 @@
 // shape (Walls.hpp), insertion and deletion (ParticleSources.hpp), particle types (Materials.hpp).
 #pragma once
 
+#include "vofdem/dem/ContactRecord.hpp"
+#include "vofdem/dem/DemOutput.hpp"
 #include "vofdem/dem/Halo.hpp"
 #include "vofdem/dem/HertzMindlin.hpp"
 #include "vofdem/dem/Materials.hpp"
@@ -20,6 +22,8 @@
 #include <vector>
 
 namespace vofdem {
+
+class RankArchive;
 
 // Global totals over all ranks, for monitors and tests.
 struct DemSummary {
@@ -58,6 +62,19 @@ public:
   const std::string &SaveParticlesPath() const { return savePath_; }
   PetscErrorCode View(PetscViewer viewer) const;
   PetscErrorCode Destroy();
+  // Collective, HDF5 viewer (DemSaveLoad.cpp): all DEM state, under the group "dem". Load after
+  // SetUp() with the saving run's options; bitwise continuation on the same rank count.
+  PetscErrorCode Save(PetscViewer viewer);
+  PetscErrorCode Load(PetscViewer viewer);
+  // Output and analysis (DemOutput.cpp). SetOutputDir: after SetUp, with -output_dir (may be
+  // empty); WriteOutput: after SetUp and after each step, writes what is due at this step.
+  PetscErrorCode SetOutputDir(const std::string &dir);
+  PetscErrorCode WriteOutput(PetscReal time);
+  // Love-Weber stress of the -dem_stress_* region, compression positive: xx yy zz xy xz yz, Pa.
+  PetscErrorCode Stress(PetscReal sigma[6]) const;
+  // Extra monitor columns (empty unless a stress region is set): CSV header, then values.
+  std::string    MonitorHeader() const;
+  PetscErrorCode MonitorValues(std::string *csv, std::string *screen) const;
 
   // Collective: position, velocity and angular velocity of the particle with global id `id`;
   // found is false on all ranks when no rank has it.
@@ -99,6 +116,10 @@ private:
   PetscReal      balanceThreshold_ = 1.2;
   PetscBool      balanceMonitor_ = PETSC_TRUE;
   PetscInt       repartitions_ = 0;
+  struct SavedState;  // DemSaveLoad.cpp: what is archived besides members
+  PetscErrorCode ArchiveState(RankArchive &ar, SavedState &st);
+  PetscErrorCode WriteParticles(PetscReal time);  // DemOutput.cpp
+  PetscErrorCode WriteContacts(PetscReal time);
 
   // Per-evaluation contact statistics of this rank (summed over ranks by Summarize).
   struct LocalStats {
@@ -152,6 +173,9 @@ private:
   PetscReal     gravity_[3] = {0, 0, 0};
   PetscReal     rayleighTime_ = 0;
   PetscInt      rebuilds_   = 0;
+  PetscInt      steps_      = 0;  // steps begun since SetUp (output schedule)
+  DemOutputSettings out_;
+  ContactRecord     record_;  // contact forces, on evaluations whose output needs them
   // -log_view events: where a DEM step spends its time.
   PetscLogEvent evRebuild_ = 0, evHalo_ = 0, evForces_ = 0, evIntegrate_ = 0;
 

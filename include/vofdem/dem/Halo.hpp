@@ -21,6 +21,11 @@ public:
   PetscErrorCode SetUp(const Grid &grid);
   PetscErrorCode Build(const ParticleArrays &a, const PetscReal *omega, PetscReal cutoff);
   PetscErrorCode Refresh(const ParticleArrays &a, const PetscReal *omega);
+  // After a restart on the same rank count: the saved neighbour ranks and send lists, then a full
+  // exchange, so the ghosts come back in the order the saved neighbour list refers to.
+  PetscErrorCode Restore(const ParticleArrays &a, const PetscReal *omega, const std::vector<PetscMPIInt> &ranks, const std::vector<int> &images,
+                         const std::vector<std::vector<PetscInt>> &send);
+  const std::vector<int> &ImageCodes() const { return images_; }
 
   PetscInt Count() const { return (PetscInt)id.size(); }
   // Ranks this rank exchanges ghosts with (one entry per rank and image), and the local indices sent

@@ -63,6 +63,24 @@ public:
   PetscReal  MassInserted() const { return massInserted_; }
   PetscReal  MassDeleted() const { return massDeleted_; }
   const std::vector<InsertionSource> &Sources() const { return sources_; }
+  // The counters and per-source state (the same on every rank); Dem::Save/Load.
+  template <class Archive>
+  PetscErrorCode ArchiveState(Archive &ar) {
+    PetscFunctionBeginUser;
+    PetscCall(ar.Scalar(&nextId_));
+    PetscCall(ar.Scalar(&inserted_));
+    PetscCall(ar.Scalar(&deleted_));
+    PetscCall(ar.Scalar(&massInserted_));
+    PetscCall(ar.Scalar(&massDeleted_));
+    for (InsertionSource &s : sources_) {
+      PetscCall(ar.Scalar(&s.count));
+      PetscCall(ar.Scalar(&s.mass));
+      PetscCall(ar.Scalar(&s.tries));
+      PetscCall(ar.Scalar(&s.retryAt));
+      PetscCall(ar.Scalar(&s.blocked));
+    }
+    PetscFunctionReturn(0);
+  }
 
 private:
   bool           Due(const InsertionSource &s, PetscReal t) const;

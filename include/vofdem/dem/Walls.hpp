@@ -97,6 +97,24 @@ public:
   PetscErrorCode View(PetscViewer viewer) const;
 
   size_t Candidates() const { return part_.size(); }
+  // The state a bitwise restart needs (clock, candidates with springs, loads); Dem::Save/Load.
+  template <class Archive>
+  PetscErrorCode ArchiveState(Archive &ar) {
+    PetscFunctionBeginUser;
+    PetscCall(ar.Scalar(&time_));
+    PetscCall(ar.Scalar(&rebuildTime_));
+    PetscCall(ar.Array("walls_part", &part_));
+    PetscCall(ar.Array("walls_elem", &elem_));
+    PetscCall(ar.Array("walls_group", &group_));
+    PetscCall(ar.Array("walls_wall", &wallOf_));
+    PetscCall(ar.Array("walls_touching", &touching_));
+    PetscCall(ar.Array("walls_spring", &spring_, kSpringWidth));
+    PetscCall(ar.Array("walls_load", &load_, 6));
+    PetscCall(ar.Array("walls_load_contacts", &loadContacts_));
+    PetscFunctionReturn(0);
+  }
+  // Forgets the candidates (their particle indices belong to another decomposition).
+  void ClearCandidates() { part_.clear(), elem_.clear(), group_.clear(), wallOf_.clear(), touching_.clear(), spring_.clear(); }
   // This rank's force (0..2) and torque (3..5) on wall w from the last evaluation.
   const PetscReal *LocalLoad(size_t w) const { return &load_[6 * w]; }
   // Monitor-table columns: ",wall_<name>_fx_N,...,wall_<name>_tz_Nm" per wall, in Summarize's order.

@@ -1,0 +1,266 @@
+// Dem::Save / Dem::Load: all DEM state in an HDF5 viewer, under the group "dem" of the viewer's
+// current group, through RankArchive (one dataset per array, rank segments in rank order).
+//
+// On the rank count that saved, Load puts back each rank's particles in memory order, the neighbour
+// pairs in their order with springs and touching flags, the wall candidates, the halo's neighbour
+// ranks and send lists (so ghosts return in the same order), the per-rank contact statistics and the
+// counters: the continued run is bitwise the uninterrupted one (notes/petsc-3.18.md, "Determinism
+// and restart"). On another rank count each rank keeps the saved particles it owns, the springs of
+// touching contacts are carried by id pair, and one rebuild makes the lists and ghosts anew;
+// trajectories then agree to round-off over short horizons.
+#include "vofdem/dem/Dem.hpp"
+
+#include "vofdem/core/Runtime.hpp"
+#include "vofdem/io/RankArchive.hpp"
+
+#include <petscviewerhdf5.h>
+
+#include <algorithm>
+#include <string>
+
+namespace vofdem {
+
+namespace {
+
+// Every swarm field, saved in memory order. A new swarm field is one more name here.
+const char *const kSwarmFields[] = {field::position, field::velocity, field::force,  field::radius,   field::mass,
+                                    field::id,       field::reference, field::omega, field::torque, field::type, field::clump,
+                                    DMSwarmField_pid, DMSwarmField_rank, DMSwarmPICField_cellid};
+constexpr int kNumSwarmFields = sizeof(kSwarmFields) / sizeof(kSwarmFields[0]);
+constexpr int kStatsWidth     = 4 + 18;  // pair and wall contacts, max overlap, elastic energy, wall forces
+
+// Copies swarm field `name` of local particles into `out` (toSwarm false) or back (true), as doubles.
+PetscErrorCode CopyField(DM swarm, const char *name, std::vector<PetscReal> *out, PetscInt *bs, bool toSwarm) {
+  PetscDataType type;
+  void         *data;
+  PetscInt      n;
+
+  PetscFunctionBeginUser;
+  PetscCall(DMSwarmGetLocalSize(swarm, &n));
+  PetscCall(DMSwarmGetField(swarm, name, bs, &type, &data));
+  const size_t len = (size_t)n * *bs;
+  if (!toSwarm) out->resize(len);
+  PetscCheck(out->size() >= len, PETSC_COMM_SELF, PETSC_ERR_PLIB, "field %s: %zu saved values for %zu", name, out->size(), len);
+  auto copy = [&](auto *p) {
+    for (size_t k = 0; k < len; ++k) {
+      if (toSwarm) p[k] = (std::remove_pointer_t<decltype(p)>)(*out)[k];
+      else (*out)[k] = (PetscReal)p[k];
+    }
+  };
+  switch (type) {
+  case PETSC_REAL: copy((PetscReal *)data); break;
+  case PETSC_INT64: copy((PetscInt64 *)data); break;
+  case PETSC_INT: copy((PetscInt *)data); break;
+  default: SETERRQ(PETSC_COMM_SELF, PETSC_ERR_SUP, "swarm field %s: unsupported type for Save/Load", name);
+  }
+  PetscCall(DMSwarmRestoreField(swarm, name, bs, &type, &data));
+  PetscFunctionReturn(0);
+}
+
+}  // namespace
+
+struct Dem::SavedState {
+  std::vector<std::vector<PetscReal>> fields;  // swarm fields, kSwarmFields order
+  std::vector<PetscInt>               fieldBs;
+  std::vector<PetscReal> pairIds, wallIds, haloRanks, haloImages, sendCounts, send, stats;
+  std::vector<PetscReal> particleOutputs, contactOutputs;  // the XDMF index entries, on rank 0
+};
+
+// The archived state, in order; Save and Load both run this, so a new piece of state is one line.
+// Arrays that are not members are staged in `st` (filled before saving, used after loading).
+PetscErrorCode Dem::ArchiveState(RankArchive &ar, SavedState &st) {
+  PetscFunctionBeginUser;
+  PetscCall(ar.Scalar(&rebuilds_));
+  PetscCall(ar.Scalar(&inserted_));
+  PetscCall(ar.Scalar(&steps_));
+  PetscCall(ar.Scalar(&rMin_));
+  PetscCall(ar.Scalar(&rMax_));
+  PetscCall(ar.Scalar(&rayleighTime_));
+  PetscCall(ar.Scalar(&adhesionRange_));
+  PetscCall(ar.Scalar(&time_));
+  PetscCall(sources_.ArchiveState(ar));   // insertion counters (ParticleSources.hpp)
+  PetscCall(wallSet_.ArchiveState(ar));   // -dem_walls: clock, candidates, springs (Walls.hpp)
+  for (int f = 0; f < kNumSwarmFields; ++f) PetscCall(ar.Array((std::string("swarm_") + kSwarmFields[f]).c_str(), &st.fields[f], st.fieldBs[f]));
+  PetscCall(ar.Array("pair_first", &list_.first));
+  PetscCall(ar.Array("pair_second", &list_.second));
+  PetscCall(ar.Array("pair_ids", &st.pairIds, 2));
+  PetscCall(ar.Array("pair_spring", &list_.spring, kSpringWidth));
+  PetscCall(ar.Array("pair_touching", &list_.touching));
+  PetscCall(ar.Array("pair_rstar", &list_.rstar));
+  PetscCall(ar.Array("pair_sqrt_mstar", &list_.sqrtMstar));
+  PetscCall(ar.Array("pair_material", &list_.material));
+  PetscCall(ar.Array("wall_particle", &walls_.particle));
+  PetscCall(ar.Array("wall_ids", &st.wallIds));
+  PetscCall(ar.Array("wall_face", &walls_.wall));
+  PetscCall(ar.Array("wall_touching", &walls_.touching));
+  PetscCall(ar.Array("wall_spring", &walls_.spring, kSpringWidth));
+  PetscCall(ar.Array("halo_ranks", &st.haloRanks));
+  PetscCall(ar.Array("halo_images", &st.haloImages));
+  PetscCall(ar.Array("halo_send_counts", &st.sendCounts));
+  PetscCall(ar.Array("halo_send", &st.send));
+  PetscCall(ar.Array("stats", &st.stats, kStatsWidth));
+  PetscCall(ar.Array("output_particles", &st.particleOutputs, 3));  // step, time, count of each output so far (rank 0)
+  PetscCall(ar.Array("output_contacts", &st.contactOutputs, 3));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode Dem::Save(PetscViewer viewer) {
+  RankArchive ar;
+  SavedState  st;
+  PetscBool   hdf5;
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscObjectTypeCompare((PetscObject)viewer, PETSCVIEWERHDF5, &hdf5));
+  PetscCheck(hdf5, comm_, PETSC_ERR_SUP, "Dem::Save needs an HDF5 viewer");
+  st.fields.resize(kNumSwarmFields);
+  st.fieldBs.resize(kNumSwarmFields);
+  for (int f = 0; f < kNumSwarmFields; ++f) PetscCall(CopyField(swarm_.Dm(), kSwarmFields[f], &st.fields[f], &st.fieldBs[f], false));
+  {  // ids of the pairs (lower first) and of the wall candidates: the keys of a rank-count change
+    ParticleArrays a;
+    PetscCall(swarm_.GetArrays(&a));
+    auto idOf = [&](PetscInt j) { return j < a.n ? a.id[j] : halo_.id[j - a.n]; };
+    for (size_t k = 0; k < list_.Size(); ++k) st.pairIds.push_back((PetscReal)idOf(list_.first[k])), st.pairIds.push_back((PetscReal)idOf(list_.second[k]));
+    for (size_t k = 0; k < walls_.Size(); ++k) st.wallIds.push_back((PetscReal)a.id[walls_.particle[k]]);
+    PetscCall(swarm_.RestoreArrays(&a));
+  }
+  st.haloRanks.assign(halo_.Ranks().begin(), halo_.Ranks().end());
+  st.haloImages.assign(halo_.ImageCodes().begin(), halo_.ImageCodes().end());
+  for (const auto &s : halo_.SendLists()) st.sendCounts.push_back((PetscReal)s.size()), st.send.insert(st.send.end(), s.begin(), s.end());
+  st.stats = {(PetscReal)stats_.pairContacts, (PetscReal)stats_.wallContacts, stats_.maxOverlap, stats_.elastic};
+  for (int f = 0; f < 6; ++f) st.stats.insert(st.stats.end(), stats_.wallForce[f], stats_.wallForce[f] + 3);
+  PetscMPIInt rank;
+  PetscCallMPI(MPI_Comm_rank(comm_, &rank));
+  for (const XdmfEntry &e : rank == 0 ? out_.particleEntries : std::vector<XdmfEntry>{})
+    st.particleOutputs.insert(st.particleOutputs.end(), {(PetscReal)e.step, e.time, (PetscReal)e.nodes});
+  for (const XdmfEntry &e : rank == 0 ? out_.contactEntries : std::vector<XdmfEntry>{})
+    st.contactOutputs.insert(st.contactOutputs.end(), {(PetscReal)e.step, e.time, (PetscReal)e.segments});
+  PetscCall(PetscViewerHDF5PushGroup(viewer, "dem"));
+  PetscCall(ar.Begin(viewer, comm_, false, "Dem::Save"));
+  PetscCall(ArchiveState(ar, st));
+  PetscCall(ar.Finish());
+  PetscCall(PetscViewerHDF5PopGroup(viewer));
+  {  // Each rank's box: a load on as many ranks but another decomposition must not reuse the halo.
+    RankArchive            dec;
+    std::vector<PetscReal> box(6);
+    grid_->LocalBox(&box[0], &box[3]);
+    PetscCall(PetscViewerHDF5PushGroup(viewer, "dem/decomposition"));
+    PetscCall(dec.Begin(viewer, comm_, false, "Dem::Save"));
+    PetscCall(dec.Array("box", &box, 6));
+    PetscCall(dec.Finish());
+    PetscCall(PetscViewerHDF5PopGroup(viewer));
+  }
+  PetscFunctionReturn(0);
+}
+
+// Call after SetUp() with the options of the run that saved: the loaded state replaces the inserted one.
+PetscErrorCode Dem::Load(PetscViewer viewer) {
+  RankArchive ar;
+  SavedState  st;
+  PetscBool   hdf5;
+  DM          dm = swarm_.Dm();
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscObjectTypeCompare((PetscObject)viewer, PETSCVIEWERHDF5, &hdf5));
+  PetscCheck(hdf5, comm_, PETSC_ERR_SUP, "Dem::Load needs an HDF5 viewer");
+  st.fields.resize(kNumSwarmFields);
+  st.fieldBs.resize(kNumSwarmFields);
+  for (int f = 0; f < kNumSwarmFields; ++f) {  // block sizes from the swarm itself
+    PetscDataType type;
+    void         *data;
+    PetscCall(DMSwarmGetField(dm, kSwarmFields[f], &st.fieldBs[f], &type, &data));
+    PetscCall(DMSwarmRestoreField(dm, kSwarmFields[f], &st.fieldBs[f], &type, &data));
+  }
+  bool sameDecomposition;
+  {  // As many ranks, each with the box it had: then the bitwise path (halo and lists as saved).
+    RankArchive            dec;
+    std::vector<PetscReal> saved, box(6);
+    grid_->LocalBox(&box[0], &box[3]);
+    PetscCall(PetscViewerHDF5PushGroup(viewer, "dem/decomposition"));
+    PetscCall(dec.Begin(viewer, comm_, true, "Dem::Load"));
+    PetscCall(dec.Array("box", &saved, 6));
+    PetscCall(PetscViewerHDF5PopGroup(viewer));
+    int same = dec.SameRanks() && saved == box, all;
+    PetscCallMPI(MPI_Allreduce(&same, &all, 1, MPI_INT, MPI_MIN, comm_));
+    sameDecomposition = all;
+  }
+  PetscCall(PetscViewerHDF5PushGroup(viewer, "dem"));
+  PetscCall(ar.Begin(viewer, comm_, true, "Dem::Load", !sameDecomposition));
+  PetscCall(ArchiveState(ar, st));
+  PetscCall(PetscViewerHDF5PopGroup(viewer));
+  const int    iPos = 0, iId = 5;
+  const size_t saved = st.fields[iId].size();
+  std::vector<size_t> keep;  // saved particles this rank holds, in saved order
+  if (ar.SameRanks()) {
+    for (size_t k = 0; k < saved; ++k) keep.push_back(k);
+  } else {
+    for (size_t k = 0; k < saved; ++k)
+      if (grid_->OwnsPoint(&st.fields[iPos][3 * k])) keep.push_back(k);
+  }
+  PetscCall(DMSwarmSetLocalSizes(dm, (PetscInt)keep.size(), 64));
+  for (int f = 0; f < kNumSwarmFields; ++f) {
+    const PetscInt bs = st.fieldBs[f];
+    for (size_t j = 0; j < keep.size(); ++j)  // in place: j <= keep[j]
+      std::copy_n(&st.fields[f][bs * keep[j]], bs, &st.fields[f][bs * j]);
+    PetscInt bsOut;
+    PetscCall(CopyField(dm, kSwarmFields[f], &st.fields[f], &bsOut, true));
+  }
+  ParticleArrays a;
+  if (ar.SameRanks()) {
+    std::vector<PetscMPIInt>           ranks(st.haloRanks.begin(), st.haloRanks.end());
+    std::vector<std::vector<PetscInt>> send(ranks.size());
+    for (size_t q = 0, o = 0; q < ranks.size(); o += (size_t)st.sendCounts[q], ++q)
+      send[q].assign(st.send.begin() + o, st.send.begin() + o + (size_t)st.sendCounts[q]);
+    const std::vector<int> images(st.haloImages.begin(), st.haloImages.end());
+    PetscCall(swarm_.GetArrays(&a));
+    PetscCall(halo_.Restore(a, a.omega, ranks, images, send));
+    PeriodicImages::PairImages(list_, a.n, halo_.image.data(), &pairImage_);  // the seam shifts of the pairs
+    PetscCall(swarm_.RestoreArrays(&a));
+  } else {
+    // Springs of touching contacts by id pair, for the contacts of particles this rank now holds;
+    // Rebuild() passes them on to the ranks that hold the partner as a ghost.
+    std::vector<PetscInt64> ids(st.fields[iId].size());
+    for (size_t k = 0; k < ids.size(); ++k) ids[k] = (PetscInt64)st.fields[iId][k];
+    std::sort(ids.begin(), ids.end());
+    auto local = [&](PetscReal id) { return std::binary_search(ids.begin(), ids.end(), (PetscInt64)id); };
+    auto zero  = [](const PetscReal *s) { return std::all_of(s, s + kSpringWidth, [](PetscReal v) { return v == 0; }); };
+    springs_.clear();
+    for (size_t k = 0; k < list_.touching.size(); ++k) {
+      const PetscReal *s = &list_.spring[kSpringWidth * k], lo = st.pairIds[2 * k], hi = st.pairIds[2 * k + 1];
+      if (!list_.touching[k] || zero(s) || !(local(lo) || local(hi))) continue;
+      std::copy(s, s + kSpringWidth, springs_[{(PetscInt64)lo, (PetscInt64)hi}].begin());
+    }
+    for (size_t k = 0; k < walls_.touching.size(); ++k)
+      if (walls_.touching[k] && local(st.wallIds[k]))
+        std::copy(&walls_.spring[kSpringWidth * k], &walls_.spring[kSpringWidth * (k + 1)], springs_[PairKey::Wall((PetscInt64)st.wallIds[k], walls_.wall[k])].begin());
+    // The loaded lists are all ranks' concatenated: Rebuild() makes this rank's from the particles.
+    list_.first.clear(), list_.second.clear(), list_.spring.clear(), list_.touching.clear(), list_.rstar.clear(), list_.sqrtMstar.clear();
+    walls_.Clear();
+    list_.material.clear();
+    wallSet_.ClearCandidates();  // their indices are the saving ranks' (their springs are not carried: a limitation)
+    const PetscInt rebuilds = rebuilds_;
+    PetscCall(Rebuild());
+    rebuilds_ = rebuilds;
+    // The statistics of the last evaluation, as totals on rank 0 (Summarize sums over ranks).
+    std::vector<PetscReal> sum(kStatsWidth, 0);
+    for (size_t r = 0; r < st.stats.size() / kStatsWidth; ++r)
+      for (int j = 0; j < kStatsWidth; ++j) sum[j] = j == 2 ? std::max(sum[j], st.stats[kStatsWidth * r + j]) : sum[j] + st.stats[kStatsWidth * r + j];
+    PetscMPIInt rank;
+    PetscCallMPI(MPI_Comm_rank(comm_, &rank));
+    if (rank == 0) st.stats = sum;
+    else std::fill(st.stats.begin(), st.stats.end(), 0.0);
+  }
+  // The output indices so far (only rank 0 writes them).
+  out_.particleEntries.clear(), out_.contactEntries.clear();
+  for (size_t k = 0; k + 2 < st.particleOutputs.size(); k += 3)
+    out_.particleEntries.push_back(DemOutputSettings::ParticleEntry((PetscInt)st.particleOutputs[k], st.particleOutputs[k + 1], (PetscInt)st.particleOutputs[k + 2]));
+  for (size_t k = 0; k + 2 < st.contactOutputs.size(); k += 3)
+    out_.contactEntries.push_back(DemOutputSettings::ContactEntry((PetscInt)st.contactOutputs[k], st.contactOutputs[k + 1], (PetscInt)st.contactOutputs[k + 2]));
+  stats_.pairContacts = (PetscInt)st.stats[0];
+  stats_.wallContacts = (PetscInt)st.stats[1];
+  stats_.maxOverlap   = st.stats[2];
+  stats_.elastic      = st.stats[3];
+  for (int f = 0; f < 6; ++f) std::copy_n(&st.stats[4 + 3 * f], 3, stats_.wallForce[f]);
+  PetscFunctionReturn(0);
+}
+
+}  // namespace vofdem
