@@ -198,13 +198,13 @@ int main(int argc, char **argv) {
   test:
     suffix: features_1
     nsize: 1
-    args: -dem_types a,b -dem_type_b_density 5000 -dem_type_b_restitution 0.8 -grid_periodic x
+    args: -dem_types a,b -dem_type_a_material glass -dem_type_b_density 5000 -dem_type_b_restitution 0.8 -grid_periodic x
           -dem_walls lid -dem_wall_lid_type plane -dem_wall_lid_point 0,0,0.009 -dem_wall_lid_normal 0,0,-1 -dem_wall_lid_velocity 0,0,-0.02
           -dem_inserts s -dem_insert_s_lower 0.002,0.002,0.006 -dem_insert_s_upper 0.008,0.008,0.007 -dem_insert_s_rate 100000 -dem_insert_s_type b
   test:
     suffix: features_2
     nsize: 2
-    args: -dem_types a,b -dem_type_b_density 5000 -dem_type_b_restitution 0.8 -grid_periodic x
+    args: -dem_types a,b -dem_type_a_material glass -dem_type_b_density 5000 -dem_type_b_restitution 0.8 -grid_periodic x
           -dem_walls lid -dem_wall_lid_type plane -dem_wall_lid_point 0,0,0.009 -dem_wall_lid_normal 0,0,-1 -dem_wall_lid_velocity 0,0,-0.02
           -dem_inserts s -dem_insert_s_lower 0.002,0.002,0.006 -dem_insert_s_upper 0.008,0.008,0.007 -dem_insert_s_rate 100000 -dem_insert_s_type b
 TEST*/

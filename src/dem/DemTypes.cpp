@@ -48,13 +48,22 @@ PetscErrorCode Dem::TypesFromOptions(PetscOptionItems *items) {
       if (path.empty()) VofdemInputError(comm_, "option %s: no material file '%s' (nor %s.yaml in config/materials)", opt.FullName((pre + "material").c_str()).c_str(), file.c_str(), file.c_str());
       if (!ReadMaterialFile(path, &m, &message)) VofdemInputError(comm_, "option %s: %s", opt.FullName((pre + "material").c_str()).c_str(), message.c_str());
     }
-    PetscCall(opt.Real((pre + "density").c_str(), "Density of the type", "kg/m^3", &m.density, RealRange::Positive()));
-    PetscCall(opt.Real((pre + "youngs_modulus").c_str(), "Young's modulus of the type", "Pa", &m.youngs, RealRange::Positive()));
-    PetscCall(opt.Real((pre + "poisson_ratio").c_str(), "Poisson ratio of the type", "-", &m.poisson, RealRange::LeftOpen(-1, 0.5)));
-    PetscCall(opt.Real((pre + "restitution").c_str(), "Restitution of two particles of the type (P3)", "-", &m.restitution, RealRange::LeftOpen(0, 1)));
-    PetscCall(opt.Real((pre + "friction").c_str(), "Sliding friction of the type (P3)", "-", &m.friction, RealRange::NonNegative()));
-    PetscCall(opt.Real((pre + "rolling_friction").c_str(), "Rolling friction of the type (P5)", "-", &m.rollingFriction, RealRange::NonNegative()));
-    PetscCall(opt.Real((pre + "surface_energy").c_str(), "Surface energy gamma of the type (P6)", "J/m^2", &m.surfaceEnergy, RealRange::NonNegative()));
+    PetscBool given[7] = {PETSC_FALSE};
+    int       k        = 0;
+    PetscCall(opt.Real((pre + "density").c_str(), "Density of the type", "kg/m^3", &m.density, RealRange::Positive(), &given[k++]));
+    PetscCall(opt.Real((pre + "youngs_modulus").c_str(), "Young's modulus of the type", "Pa", &m.youngs, RealRange::Positive(), &given[k++]));
+    PetscCall(opt.Real((pre + "poisson_ratio").c_str(), "Poisson ratio of the type", "-", &m.poisson, RealRange::LeftOpen(-1, 0.5), &given[k++]));
+    PetscCall(opt.Real((pre + "restitution").c_str(), "Restitution of two particles of the type (P3)", "-", &m.restitution, RealRange::LeftOpen(0, 1), &given[k++]));
+    PetscCall(opt.Real((pre + "friction").c_str(), "Sliding friction of the type (P3)", "-", &m.friction, RealRange::NonNegative(), &given[k++]));
+    PetscCall(opt.Real((pre + "rolling_friction").c_str(), "Rolling friction of the type (P5)", "-", &m.rollingFriction, RealRange::NonNegative(), &given[k++]));
+    PetscCall(opt.Real((pre + "surface_energy").c_str(), "Surface energy gamma of the type (P6)", "J/m^2", &m.surfaceEnergy, RealRange::NonNegative(), &given[k++]));
+    bool any = !file.empty();
+    for (PetscBool g : given) any = any || g;
+    // A type without any material of its own would silently be the -dem_* default: almost always a
+    // forgotten line in the scene.
+    if (!any)
+      VofdemInputError(comm_, "option -dem_types: type '%s' has no material (give -dem_type_%s_material NAME, or its properties -dem_type_%s_density etc.)",
+                       typeNames_[t].c_str(), typeNames_[t].c_str(), typeNames_[t].c_str());
   }
   pairValues_.assign(nt * nt, {});
   for (size_t i = 0; i < nt && nt > 1; ++i)
