@@ -60,7 +60,7 @@ static PetscErrorCode Run() {
   // above the floor (less than a diameter: no particle fits under it) to above the box.
   {
     const PetscReal lo[3] = {0, -0.5, 0.4}, hi[3] = {thick, 3.5, 6.5};
-    PetscCall(vofdem::WriteTextFile(PETSC_COMM_WORLD, "ex09_blade.stl", vofdem::BinaryStl(BoxTriangles(lo, hi)), "blade STL"));
+    PetscCall(vofdem::WriteTextFile(PETSC_COMM_WORLD, "ex16_blade.stl", vofdem::BinaryStl(BoxTriangles(lo, hi)), "blade STL"));
     char buf[128];
     std::snprintf(buf, sizeof buf, "%.17g,0,0", (double)(start - thick * 1e-3));
     PetscCall(PetscOptionsSetValue(nullptr, "-dem_wall_blade_offset", buf));
@@ -119,8 +119,8 @@ int main(int argc, char **argv) {
 /*TEST
   args: -physics dem -grid_cells 5,2,3 -grid_upper 0.01,0.003,0.006 -gravity 0,0,-9.81 -dem_radius 3e-4 -dem_youngs_modulus 1e7
         -dem_restitution 0.3 -dem_friction 0.5 -dem_fill_count -1 -dem_fill_lower 0.003,0,0 -dem_fill_upper 0.01,0.003,0.0045
-        -dem_fill_jitter 0.5 -seed 3 -dem_walls blade -dem_wall_blade_type stl -dem_wall_blade_file ex09_blade.stl
-        -dem_wall_blade_scale 1e-3 -dem_save_particles ex09_bed.csv
+        -dem_fill_jitter 0.5 -seed 3 -dem_walls blade -dem_wall_blade_type stl -dem_wall_blade_file ex16_blade.stl
+        -dem_wall_blade_scale 1e-3 -dem_save_particles ex16_bed.csv
   rtol: 1e-10
   atol: 1e-20
   test:

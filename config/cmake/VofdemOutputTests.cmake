@@ -7,3 +7,8 @@ vofdem_bad_input(output_without_dir "option -dem_output_every needs -output_dir"
 vofdem_bad_input(contacts_without_dir "option -dem_contacts_every needs -output_dir" ${_dem} -dem_contacts_every 10)
 vofdem_bad_input(stress_one_corner  "option -dem_stress_lower: give both"          ${_dem} -dem_stress_lower 0,0,0)
 vofdem_bad_input(stress_inverted    "option -dem_stress_upper: must exceed -dem_stress_lower in y" ${_dem} -dem_stress_lower 0,0.005,0 -dem_stress_upper 0.01,0.004,0.01)
+
+# The STL-blade example's output (particles with their fields, contact network) opens in ParaView.
+add_test(NAME output/stl_blade_paraview COMMAND sh ${CMAKE_CURRENT_SOURCE_DIR}/test/output/stl_blade_output.sh $<TARGET_FILE:ex16_stl_blade>
+         ${CMAKE_CURRENT_BINARY_DIR}/stl-blade-output)
+set_tests_properties(output/stl_blade_paraview PROPERTIES LABELS "quick;output" PROCESSORS 2 TIMEOUT 600 SKIP_RETURN_CODE 77)
