@@ -107,7 +107,7 @@ PetscErrorCode Dem::SetFromOptions(MPI_Comm comm) {
     }
     PetscCall(opt.Real("-fill_velocity_spread", "Random part of the initial velocity: each component uniform in [-spread, spread]", "m/s", &fillSpread_, RealRange::NonNegative()));
     PetscCall(opt.String("-save_particles", "Write all particles at the end of the run to this CSV (the format -dem_particles_file reads, with radius)", &savePath_));
-    PetscCall(opt.String("-particles_file", "CSV of particles to insert after the fill; the header names the columns: x,y,z required, vx,vy,vz,wx,wy,wz,radius,type optional (m, m/s, rad/s, index into -dem_types)", &particlesFile_));
+    PetscCall(opt.String("-particles_file", "CSV of particles to insert after the fill; the header names the columns: x,y,z required, vx,vy,vz,wx,wy,wz,radius,type,clump optional (m, m/s, rad/s, index into -dem_types, clump id or -1)", &particlesFile_));
     PetscCall(TypesFromOptions(PetscOptionsObject));
     PetscCall(SetBalanceFromOptions(PetscOptionsObject));
     {

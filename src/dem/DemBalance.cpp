@@ -17,6 +17,7 @@
 #include <algorithm>
 #include <cstring>
 #include <string>
+#include <unordered_map>
 #include <vector>
 
 namespace vofdem {
@@ -151,6 +152,17 @@ PetscErrorCode Dem::Balance(PetscBool *repartitioned) {
         r[d] = q;
       }
       rank[p] = r[0] + m[0] * (r[1] + m[1] * r[2]);
+    }
+    {  // a rigid clump goes whole, to the owner of its lowest-id member (P10; see ParticleSwarm::Migrate)
+      std::unordered_map<PetscInt64, PetscInt> lead;
+      for (PetscInt p = 0; p < a.n; ++p) {
+        if (a.clump[p] < 0) continue;
+        auto it = lead.find(a.clump[p]);
+        if (it == lead.end()) lead.emplace(a.clump[p], p);
+        else if (a.id[p] < a.id[it->second]) it->second = p;
+      }
+      for (PetscInt p = 0; p < a.n && !lead.empty(); ++p)
+        if (a.clump[p] >= 0) rank[p] = rank[lead[a.clump[p]]];
     }
     PetscCall(DMSwarmRestoreField(swarm_.Dm(), DMSwarmField_rank, nullptr, nullptr, (void **)&rank));
     PetscCall(swarm_.RestoreArrays(&a));

@@ -11,6 +11,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
+#include <map>
 #include <sstream>
 #include <vector>
 
@@ -162,8 +163,8 @@ PetscErrorCode Dem::FillRandom(std::uint64_t seed) {
 // owns, so the result does not depend on the rank count. A bad file is an input error naming file
 // and line; so is a particle outside the box or cut deeply by a face.
 PetscErrorCode Dem::ReadParticles() {
-  static const char *const names[] = {"x", "y", "z", "vx", "vy", "vz", "wx", "wy", "wz", "radius", "type"};
-  constexpr int            kCols   = 11;
+  static const char *const names[] = {"x", "y", "z", "vx", "vy", "vz", "wx", "wy", "wz", "radius", "type", "clump"};
+  constexpr int            kCols   = 12;
 
   PetscFunctionBeginUser;
   if (particlesFile_.empty()) PetscFunctionReturn(0);
@@ -185,7 +186,7 @@ PetscErrorCode Dem::ReadParticles() {
     int q = -1;
     for (int i = 0; i < kCols; ++i)
       if (c == names[i]) q = i;
-    if (q < 0) VofdemInputError(comm_, "%s:1: unknown column '%s' (known: x,y,z,vx,vy,vz,wx,wy,wz,radius,type)", particlesFile_.c_str(), c.c_str());
+    if (q < 0) VofdemInputError(comm_, "%s:1: unknown column '%s' (known: x,y,z,vx,vy,vz,wx,wy,wz,radius,type,clump)", particlesFile_.c_str(), c.c_str());
     column.push_back(q);
   }
   for (int q = 0; q < 3; ++q)
@@ -195,6 +196,7 @@ PetscErrorCode Dem::ReadParticles() {
   for (int lineNo = 2; std::getline(in, line); ++lineNo) {
     if (line.find_first_not_of(" \t\r") == std::string::npos) continue;
     std::array<PetscReal, kCols> r{};
+    r[11] = -1;  // no clump
     r[9]            = radius_;
     const auto vals = cells(line);
     bool       ok   = vals.size() == column.size();
@@ -205,6 +207,7 @@ PetscErrorCode Dem::ReadParticles() {
     }
     if (!ok) VofdemInputError(comm_, "%s:%d: expected %d comma-separated numbers, as the header names", particlesFile_.c_str(), lineNo, (int)column.size());
     if (!(r[9] > 0)) VofdemInputError(comm_, "%s:%d: the radius must be positive", particlesFile_.c_str(), lineNo);
+    if (!(r[11] >= -1 && r[11] == std::floor(r[11]))) VofdemInputError(comm_, "%s:%d: the clump must be an integer id >= 0 (or -1: none)", particlesFile_.c_str(), lineNo);
     if (!(r[10] >= 0 && r[10] < (PetscReal)types_.size() && r[10] == std::floor(r[10])))
       VofdemInputError(comm_, "%s:%d: the type must be an index into -dem_types, 0 to %d", particlesFile_.c_str(), lineNo, (int)types_.size() - 1);
     // A settled particle rests with a small overlap on a wall: accept up to 5 % of the radius.
@@ -216,14 +219,19 @@ PetscErrorCode Dem::ReadParticles() {
     rows.push_back(r);
   }
   PetscInt first, local = 0, start;
-  for (const auto &r : rows) local += grid_->OwnsPoint(r.data());
+  // The spheres of a clump (P10) start on one rank: the owner of its first sphere (lowest id).
+  std::map<PetscReal, size_t> firstOfClump;
+  for (size_t k = 0; k < rows.size(); ++k)
+    if (rows[k][11] >= 0) firstOfClump.emplace(rows[k][11], k);
+  auto owned = [&](const std::array<PetscReal, kCols> &r) { return grid_->OwnsPoint(r[11] >= 0 ? rows[firstOfClump[r[11]]].data() : r.data()); };
+  for (const auto &r : rows) local += owned(r);
   PetscCall(swarm_.GlobalCount(&start));
   PetscCall(swarm_.AddLocal(local, &first));
   ParticleArrays a;
   PetscCall(swarm_.GetArrays(&a));
   for (size_t k = 0, p = first; k < rows.size(); ++k) {
     const auto &r = rows[k];
-    if (!grid_->OwnsPoint(r.data())) continue;
+    if (!owned(r)) continue;
     for (int d = 0; d < 3; ++d) {
       a.x[3 * p + d]     = r[d];
       a.v[3 * p + d]     = r[3 + d];
@@ -234,7 +242,7 @@ PetscErrorCode Dem::ReadParticles() {
     a.type[p]   = (PetscInt)r[10];
     a.mass[p]   = types_[a.type[p]].density * 4.0 / 3.0 * PETSC_PI * r[9] * r[9] * r[9];
     a.id[p]     = start + (PetscInt64)k;
-    a.clump[p]  = -1;
+    a.clump[p]  = (PetscInt64)r[11];
     ++p;
   }
   PetscCall(swarm_.RestoreArrays(&a));
@@ -248,7 +256,7 @@ PetscErrorCode Dem::SaveParticles(const std::string &path) const {
   std::vector<PetscReal>    mine;
   std::vector<PetscReal>    all;
   std::vector<PetscMPIInt>  counts, displs;
-  constexpr int             W = 12;  // id (as a real: exact below 2^53) + 9 values + radius + type
+  constexpr int             W = 13;  // id (as a real: exact below 2^53) + 9 values + radius + type + clump
 
   PetscFunctionBeginUser;
   PetscCallMPI(MPI_Comm_rank(comm_, &rank));
@@ -260,6 +268,7 @@ PetscErrorCode Dem::SaveParticles(const std::string &path) const {
     for (int d = 0; d < 3; ++d) mine[W * p + 1 + d] = a.x[3 * p + d], mine[W * p + 4 + d] = a.v[3 * p + d], mine[W * p + 7 + d] = a.omega[3 * p + d];
     mine[W * p + 10] = a.radius[p];
     mine[W * p + 11] = (PetscReal)a.type[p];
+    mine[W * p + 12] = (PetscReal)a.clump[p];
   }
   PetscCall(swarm_.RestoreArrays(&a));
   PetscMPIInt n = (PetscMPIInt)mine.size();
@@ -275,10 +284,10 @@ PetscErrorCode Dem::SaveParticles(const std::string &path) const {
     std::vector<std::array<PetscReal, W>> rows(total / W);
     for (size_t r = 0; r < rows.size(); ++r) std::copy(&all[W * r], &all[W * r] + W, rows[r].begin());
     std::sort(rows.begin(), rows.end(), [](const auto &x, const auto &y) { return x[0] < y[0]; });
-    text = "x,y,z,vx,vy,vz,wx,wy,wz,radius,type\n";
+    text = "x,y,z,vx,vy,vz,wx,wy,wz,radius,type,clump\n";
     char line[512];
     for (const auto &r : rows) {
-      std::snprintf(line, sizeof line, "%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%d\n", r[1], r[2], r[3], r[4], r[5], r[6], r[7], r[8], r[9], r[10], (int)r[11]);
+      std::snprintf(line, sizeof line, "%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%d,%lld\n", r[1], r[2], r[3], r[4], r[5], r[6], r[7], r[8], r[9], r[10], (int)r[11], (long long)r[12]);
       text += line;
     }
   }

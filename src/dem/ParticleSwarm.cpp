@@ -1,5 +1,7 @@
 #include "vofdem/dem/ParticleSwarm.hpp"
 
+#include <unordered_map>
+
 namespace vofdem {
 
 PetscErrorCode ParticleSwarm::Create(const Grid &grid) {
@@ -105,13 +107,31 @@ PetscErrorCode ParticleSwarm::Migrate() {
 
   PetscFunctionBeginUser;
   PetscCall(DMSwarmGetSize(swarm_, &before));
+  // The spheres of one rigid clump (P10) go to one rank together: each is located by the position of
+  // the clump's member with the lowest id (all members are on one rank, so it is known here), and its
+  // own position rides in `reference` meanwhile (which is reset below anyway).
+  PetscCall(GetArrays(&a));
+  {
+    std::unordered_map<PetscInt64, PetscInt> lead;  // clump -> local index of its lowest-id member
+    for (PetscInt p = 0; p < a.n; ++p) {
+      for (int d = 0; d < 3; ++d) a.reference[3 * p + d] = a.x[3 * p + d];
+      if (a.clump[p] < 0) continue;
+      auto it = lead.find(a.clump[p]);
+      if (it == lead.end()) lead.emplace(a.clump[p], p);
+      else if (a.id[p] < a.id[it->second]) it->second = p;
+    }
+    for (PetscInt p = 0; p < a.n && !lead.empty(); ++p)
+      if (a.clump[p] >= 0)
+        for (int d = 0; d < 3; ++d) a.x[3 * p + d] = a.reference[3 * lead[a.clump[p]] + d];
+  }
+  PetscCall(RestoreArrays(&a));
   PetscCall(DMSwarmMigrate(swarm_, PETSC_TRUE));
   PetscCall(DMSwarmGetSize(swarm_, &after));
   PetscCheck(after == before, grid_->Comm(), PETSC_ERR_PLIB,
              "migration lost %" PetscInt_FMT " of %" PetscInt_FMT " particles (a particle left the box or jumped past a neighbouring rank)",
              before - after, before);
   PetscCall(GetArrays(&a));
-  for (PetscInt p = 0; p < 3 * a.n; ++p) a.reference[p] = a.x[p];
+  for (PetscInt p = 0; p < 3 * a.n; ++p) a.x[p] = a.reference[p];  // each sphere's own position back
   PetscCall(RestoreArrays(&a));
   PetscFunctionReturn(0);
 }
