@@ -17,6 +17,21 @@
 
 namespace vofdem {
 
+// A particle of a fill at local index p: centre x, radius r, the fill's type, velocity and spread
+// (the random part keyed by id and seed), at rest in rotation, in no clump.
+void Dem::StoreFilled(const ParticleArrays &a, PetscInt p, PetscInt64 id, const PetscReal x[3], PetscReal r, std::uint64_t seed) const {
+  for (int d = 0; d < 3; ++d) {
+    a.x[3 * p + d] = x[d];
+    a.v[3 * p + d] = fillVelocity_[d] + fillSpread_ * (2 * random::Uniform(seed, (std::uint64_t)id, 3 + d) - 1);
+    a.f[3 * p + d] = a.omega[3 * p + d] = a.torque[3 * p + d] = 0;
+  }
+  a.radius[p] = r;
+  a.mass[p]   = types_[fillType_].density * 4.0 / 3.0 * PETSC_PI * r * r * r;
+  a.id[p]     = id;
+  a.type[p]   = fillType_;
+  a.clump[p]  = -1;
+}
+
 // Lattice fill: centres at lower + R + j + i*s, R the largest fill radius and j the jitter
 // amplitude, so that jittered particles neither overlap each other nor leave the region. Every rank
 // walks the same lattice and keeps the points it owns; ids, jitter and each particle's radius
@@ -76,19 +91,7 @@ PetscErrorCode Dem::Fill(std::uint64_t seed) {
     PetscReal x[3];
     centre(id, x);
     if (!grid_->OwnsPoint(x)) continue;
-    for (int d = 0; d < 3; ++d) {
-      a.x[3 * p + d] = x[d];
-      a.v[3 * p + d] = fillVelocity_[d] + fillSpread_ * (2 * random::Uniform(seed, (std::uint64_t)id, 3 + d) - 1);
-      a.f[3 * p + d] = 0;
-    }
-    for (int d = 0; d < 3; ++d) a.omega[3 * p + d] = a.torque[3 * p + d] = 0;
-    const PetscReal r = radiusOf(id);
-    a.radius[p]       = r;
-    a.mass[p]         = types_[fillType_].density * 4.0 / 3.0 * PETSC_PI * r * r * r;
-    a.id[p]           = id;
-    a.type[p]         = fillType_;
-    a.clump[p]        = -1;
-    ++p;
+    StoreFilled(a, p++, id, x, radiusOf(id), seed);
   }
   PetscCall(swarm_.RestoreArrays(&a));
   PetscCall(swarm_.GlobalCount(&inserted_));
@@ -136,18 +139,7 @@ PetscErrorCode Dem::FillRandom(std::uint64_t seed) {
   PetscCall(swarm_.GetArrays(&a));
   for (PetscInt64 id = 0, p = first; id < placed; ++id) {
     if (!grid_->OwnsPoint(&res.x[3 * id])) continue;
-    for (int d = 0; d < 3; ++d) {
-      a.x[3 * p + d] = res.x[3 * id + d];
-      a.v[3 * p + d] = fillVelocity_[d] + fillSpread_ * (2 * random::Uniform(seed, (std::uint64_t)id, 3 + d) - 1);
-      a.f[3 * p + d] = a.omega[3 * p + d] = a.torque[3 * p + d] = 0;
-    }
-    const PetscReal r = res.radius[id];
-    a.radius[p]       = r;
-    a.mass[p]         = types_[fillType_].density * 4.0 / 3.0 * PETSC_PI * r * r * r;
-    a.id[p]           = id;
-    a.type[p]         = fillType_;
-    a.clump[p]        = -1;
-    ++p;
+    StoreFilled(a, (PetscInt)p++, id, &res.x[3 * id], res.radius[id], seed);
   }
   PetscCall(swarm_.RestoreArrays(&a));
   PetscCall(swarm_.GlobalCount(&inserted_));

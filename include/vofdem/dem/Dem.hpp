@@ -99,6 +99,7 @@ private:
   PetscErrorCode Fill(std::uint64_t seed);              // DemFill.cpp
   PetscErrorCode FillRandom(std::uint64_t seed);        // DemFill.cpp: -dem_fill_mode random
   PetscErrorCode ReadParticles();                       // DemFill.cpp: -dem_particles_file
+  void           StoreFilled(const ParticleArrays &a, PetscInt p, PetscInt64 id, const PetscReal x[3], PetscReal r, std::uint64_t seed) const;
   PetscErrorCode Rebuild();                             // DemContacts.cpp: migrate, halo, list, springs
   PetscErrorCode ComputeForces(PetscReal dt);           // DemContacts.cpp
   // cohesion: 0 none, 1 JKR, 2 SJKR; near: forces across a gap (van der Waals and/or lubrication)
