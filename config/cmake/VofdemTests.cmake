@@ -96,3 +96,4 @@ vofdem_bad_input(wall_stl_missing   "option -dem_wall_blade_file: cannot read '.
 vofdem_bad_input(wall_stl_malformed "option -dem_wall_blade_file: '.*malformed\\.stl': ASCII STL line 5: expected 'vertex x y z'" ${_dem} -dem_walls blade -dem_wall_blade_type stl -dem_wall_blade_file ${_bad}/malformed.stl)
 vofdem_bad_input(wall_stl_truncated "truncated\\.stl': binary STL: the header announces 2 triangles \\(184 bytes\\), the file has 134 bytes" ${_dem} -dem_walls blade -dem_wall_blade_type stl -dem_wall_blade_file ${_bad}/truncated.stl)
 include(VofdemOutputTests)  # DEM output and analysis
+include(VofdemStatisticsTests)  # D6 long horizon: rank counts against a 1-rank ensemble of seeds
