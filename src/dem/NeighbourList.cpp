@@ -13,10 +13,19 @@ PetscErrorCode NeighbourList::Build(PetscInt nLocal, const PetscReal *xLocal, co
   const PetscInt n = nLocal + nGhost;
   PetscInt       nc[3];
   PetscReal      origin[3], inv[3];
+  // Cells as wide as the reach of the smallest pair, 2 r_min + skin, but not below a quarter of the
+  // cut-off 2 r_max + skin: with one size they are the cut-off wide and the stencil is 3x3x3; in a
+  // polydisperse bed a small sphere then searches only the cells it can reach (r_i + r_max + skin)
+  // instead of 27 cells sized for the largest pair, which hold many small spheres each.
+  PetscReal rMin = PETSC_MAX_REAL;
+  for (PetscInt p = 0; p < nLocal; ++p) rMin = std::min(rMin, rLocal[p]);
+  for (PetscInt g = 0; g < nGhost; ++g) rMin = std::min(rMin, rGhost[g]);
+  const PetscReal rMax  = 0.5 * (cutoff - skin);
+  const PetscReal width = n ? std::min(cutoff, std::max(2 * rMin + skin, 0.25 * cutoff)) : cutoff;
   for (int d = 0; d < 3; ++d) {
     origin[d]           = lo[d] - cutoff;
     const PetscReal len = hi[d] - lo[d] + 2 * cutoff;
-    nc[d]               = std::max<PetscInt>(1, std::min<PetscInt>((PetscInt)(len / cutoff), 1024));  // cells at least the cut-off wide
+    nc[d]               = std::max<PetscInt>(1, std::min<PetscInt>((PetscInt)(len / width), 1024));  // cells at least `width` wide
     inv[d]              = nc[d] / len;
   }
   auto pos = [&](PetscInt p) { return p < nLocal ? &xLocal[3 * p] : &xGhost[3 * (p - nLocal)]; };
@@ -46,11 +55,13 @@ PetscErrorCode NeighbourList::Build(PetscInt nLocal, const PetscReal *xLocal, co
   for (PetscInt i = 0; i < nLocal; ++i) {
     const PetscReal *xi = pos(i), ri = rLocal[i] + skin;
     const PetscInt64 clumpI = clumped ? tags.clumpLocal[i] : -1;
-    PetscInt         c[3];
+    PetscInt         c[3], span[3];
     cellOf(xi, c);
-    for (PetscInt dz = -1; dz <= 1; ++dz)
-      for (PetscInt dy = -1; dy <= 1; ++dy)
-        for (PetscInt dx = -1; dx <= 1; ++dx) {
+    // Stencil half-width in cells: a partner within r_i + r_max + skin lies at most ceil(reach / width) cells away.
+    for (int d = 0; d < 3; ++d) span[d] = std::max<PetscInt>(1, (PetscInt)std::ceil((ri + rMax) * inv[d]));
+    for (PetscInt dz = -span[2]; dz <= span[2]; ++dz)
+      for (PetscInt dy = -span[1]; dy <= span[1]; ++dy)
+        for (PetscInt dx = -span[0]; dx <= span[0]; ++dx) {
           const PetscInt cx = c[0] + dx, cy = c[1] + dy, cz = c[2] + dz;
           if (cx < 0 || cy < 0 || cz < 0 || cx >= nc[0] || cy >= nc[1] || cz >= nc[2]) continue;
           const PetscInt cell = cx + nc[0] * (cy + nc[1] * cz);
