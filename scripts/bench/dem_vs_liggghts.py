@@ -5,10 +5,11 @@ The bed: equal spheres d = 100 um, E = 1e8 Pa, nu = 0.28, e = 0.5, mu = 0.27, ro
 with walls. It is made once by vofdem (a jittered lattice dropped and settled), cached under
 build/bench/, and given to both codes as the same particle list with zero velocities. Each timed
 run first takes --warmup steps, then --steps timed steps, with the same dt in both codes.
---mix makes the bed a 2:1 mix (d = 100 and 50 um, equal mass fractions), with a smaller dt for the
-smaller spheres' Rayleigh time.
+--mix makes the bed a 2:1 mix (d = 100 and 50 um, equal mass fractions), --ratio R an R:1 mix (d = 100
+and 100/R um), with a smaller dt for the smaller spheres' Rayleigh time.
 """
 import argparse
+import math
 import os
 import re
 import statistics
@@ -45,7 +46,7 @@ def box_height(layers):
 
 def settled_bed(layers):
     """Drops a jittered lattice of `layers` layers (26 x 26 spheres each) and lets it settle."""
-    path = os.path.join(WORK, "settled-%s%d.csv" % ("mix-" if MIX else "", layers))
+    path = os.path.join(WORK, "settled-%s%d.csv" % ("mix%s-" % MIX[1].split(",")[1] if MIX else "", layers))
     if os.path.exists(path):
         return path
     h = box_height(layers)
@@ -135,8 +136,10 @@ def time_vofdem(ranks, csv, h, steps, warmup):
     run(mpi(ranks) + [VOFDEM] + MODEL + ["-grid_upper", "%g,%g,%g" % (L, L, h), "-grid_cells", "12,12,%d" % max(2, round(h / 2.5e-4)),
                                           "-grid_ranks", "%d,1,1" % ranks, "-dem_particles_file", csv, "-dt", "%g" % DT,
                                           "-max_steps", str(warmup + steps), "-monitor_every", str(warmup), "-output_dir", outdir])
-    rows = [l.split(",") for l in open(os.path.join(outdir, "monitor.csv")).read().splitlines()[1:]]
-    wall = {int(r[0]): float(r[-1]) for r in rows}
+    lines = open(os.path.join(outdir, "monitor.csv")).read().splitlines()
+    col = lines[0].split(",").index("wall_time_s")
+    rows = [l.split(",") for l in lines[1:]]
+    wall = {int(r[0]): float(r[col]) for r in rows}
     n = int(rows[-1][3])
     return wall[warmup + steps] - wall[warmup], n
 
@@ -156,12 +159,18 @@ def main():
     ap.add_argument("--warmup", type=int, default=500)
     ap.add_argument("--layers", type=int, default=31, help="lattice layers of 26 x 26 spheres before settling (31: 20,956 spheres)")
     ap.add_argument("--mix", action="store_true", help="a 2:1 size mix (d = 100 and 50 um, equal mass fractions)")
+    ap.add_argument("--ratio", type=float, default=0, help="an R:1 size mix (d = 100 and 100/R um, equal mass fractions)")
     ap.add_argument("--no-memory", action="store_true", help="skip the memory measurement")
     a = ap.parse_args()
     global DT
     if a.mix:
-        MIX.extend(["-dem_fill_radii", "5e-5,2.5e-5", "-dem_fill_mass_fractions", "0.5,0.5"])
-        DT = 3e-7  # below 0.3 of the 25 um spheres' Rayleigh time (3.7e-7 s)
+        a.ratio = 2
+    if a.ratio:
+        MIX.extend(["-dem_fill_radii", "5e-5,%g" % (5e-5 / a.ratio), "-dem_fill_mass_fractions", "0.5,0.5"])
+        # 0.8 of 0.3 of the small spheres' Rayleigh time (P9), to 2 digits (2:1: 3e-7 s)
+        G = 1e8 / (2 * 1.28)
+        tr = math.pi * (5e-5 / a.ratio) * math.sqrt(RHO / G) / (0.1631 * 0.28 + 0.8766)
+        DT = float("%.1g" % (0.8 * 0.3 * tr))
     os.makedirs(WORK, exist_ok=True)
     h = box_height(a.layers)
     bed = settled_bed(a.layers)
@@ -171,7 +180,7 @@ def main():
     lig = liggghts_input(csv, h, a.steps, a.warmup, "N")
     small = sum(1 for r in read_bed(csv) if float(r[3]) < 0.75 * D / 2)
     print("bed: %d spheres, %s, settled height %.3f mm in a %g x %g x %.2f mm box; dt %g s; %d timed steps after %d" %
-          (n, "d = 100 um" if not a.mix else "2:1 mix, %d of d = 50 um and %d of d = 100 um" % (small, n - small), 1e3 * (top + D / 2), 1e3 * L, 1e3 * L,
+          (n, "d = 100 um" if not a.ratio else "%g:1 mix, %d of d = %g um and %d of d = 100 um" % (a.ratio, small, 100 / a.ratio, n - small), 1e3 * (top + D / 2), 1e3 * L, 1e3 * L,
            1e3 * h, DT, a.steps, a.warmup), flush=True)
     ns = {("liggghts", 1): [], ("liggghts", 2): [], ("vofdem", 1): [], ("vofdem", 2): []}
     whitelisted = True
