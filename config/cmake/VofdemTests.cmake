@@ -97,3 +97,4 @@ vofdem_bad_input(wall_stl_malformed "option -dem_wall_blade_file: '.*malformed\\
 vofdem_bad_input(wall_stl_truncated "truncated\\.stl': binary STL: the header announces 2 triangles \\(184 bytes\\), the file has 134 bytes" ${_dem} -dem_walls blade -dem_wall_blade_type stl -dem_wall_blade_file ${_bad}/truncated.stl)
 include(VofdemOutputTests)  # DEM output and analysis
 include(VofdemStatisticsTests)  # D6 long horizon: rank counts against a 1-rank ensemble of seeds
+include(VofdemFlowTests)  # the pressure solve (src/flow)

@@ -1,0 +1,314 @@
+#include "vofdem/flow/PressureSolver.hpp"
+
+#include "vofdem/core/Options.hpp"
+#include "vofdem/core/Runtime.hpp"
+
+#include <string>
+#include <vector>
+
+namespace vofdem {
+
+namespace {
+
+const char *BoundaryName(PressureBoundary b) {
+  return b == PressureBoundary::Dirichlet ? "dirichlet" : b == PressureBoundary::Periodic ? "periodic" : "neumann";
+}
+
+// Sets -flow_pressure_<name> <value> unless the user gave that option: defaults the user can override.
+PetscErrorCode DefaultOption(const char *name, const char *value) {
+  PetscBool given;
+
+  PetscFunctionBeginUser;
+  const std::string full = std::string("-flow_pressure_") + name;
+  PetscCall(PetscOptionsHasName(nullptr, nullptr, full.c_str(), &given));
+  if (!given) PetscCall(PetscOptionsSetValue(nullptr, full.c_str(), value));
+  PetscFunctionReturn(0);
+}
+
+}  // namespace
+
+const char *PressureSolver::FaceName(int face) {
+  static const char *names[6] = {"xlo", "xhi", "ylo", "yhi", "zlo", "zhi"};
+  return names[face];
+}
+
+PetscErrorCode PressureSolver::Create(const Grid &grid) {
+  PetscFunctionBeginUser;
+  comm_ = grid.Comm();
+  dm_   = grid.CellDM();
+  PetscCall(PetscObjectReference((PetscObject)dm_));
+  for (int d = 0; d < 3; ++d) {
+    h_[d]     = grid.Spacing()[d];
+    cells_[d] = grid.Cells()[d];
+    if (grid.Periodic(d)) bc_[2 * d] = bc_[2 * d + 1] = PressureBoundary::Periodic;
+  }
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode PressureSolver::SetBoundary(int face, PressureBoundary type, PetscReal value) {
+  PetscFunctionBeginUser;
+  bc_[face]      = type;
+  bcValue_[face] = value;
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode PressureSolver::SetFromOptions() {
+  PetscFunctionBeginUser;
+  PetscOptionsBegin(comm_, "flow_pressure_", "Flow: pressure Poisson solve -div(beta grad p) = rhs (KSP options under -flow_pressure_ too)", "Flow");
+  {
+    OptionReader opt(PetscOptionsObject);
+    std::vector<std::string> pc = {pc_ == PressurePreconditioner::PFMG ? "pfmg" : "boomeramg"};
+    PetscCall(opt.NameList("-pc", "Preconditioner: boomeramg (hypre, tuned defaults) or pfmg (hypre structured multigrid, matrix type hyprestruct; wants even cell counts in periodic directions)",
+                           {"boomeramg", "pfmg"}, &pc));
+    if (pc.size() != 1) VofdemInputError(comm_, "option -flow_pressure_pc: give one preconditioner (boomeramg or pfmg)");
+    pc_ = pc[0] == "pfmg" ? PressurePreconditioner::PFMG : PressurePreconditioner::BoomerAMG;
+    PetscCall(opt.Real("-reuse_threshold", "Keep the preconditioner while no cell's coefficient has changed by more than this fraction since it was built (0: rebuild every time)",
+                       "-", &reuseThreshold_, RealRange::NonNegative()));
+    for (int f = 0; f < 6; ++f) {
+      const std::string        bcName = std::string("-bc_") + FaceName(f), valueName = bcName + "_value";
+      std::vector<std::string> chosen = {BoundaryName(bc_[f])};
+      PetscBool                given  = PETSC_FALSE;
+      PetscCall(opt.NameList(bcName.c_str(), "Pressure boundary of this box face: neumann (wall, inflow), dirichlet (pressure outflow), periodic (only with -grid_periodic)",
+                             {"neumann", "dirichlet", "periodic"}, &chosen, &given));
+      if (chosen.size() != 1) VofdemInputError(comm_, "option -flow_pressure_bc_%s: give one boundary type", FaceName(f));
+      const PressureBoundary b = chosen[0] == "dirichlet" ? PressureBoundary::Dirichlet : chosen[0] == "periodic" ? PressureBoundary::Periodic : PressureBoundary::Neumann;
+      const bool             periodicGrid = bc_[f] == PressureBoundary::Periodic;
+      if (given && periodicGrid != (b == PressureBoundary::Periodic))
+        VofdemInputError(comm_, "option -flow_pressure_bc_%s: '%s' on a face that is %speriodic (-grid_periodic)", FaceName(f), chosen[0].c_str(),
+                         periodicGrid ? "" : "not ");
+      bc_[f] = b;
+      PetscCall(opt.Real(valueName.c_str(), "Pressure on this face when it is dirichlet", "Pa", &bcValue_[f]));
+    }
+  }
+  PetscOptionsEnd();
+  for (int d = 0; d < 3; ++d)
+    if (bc_[2 * d] == PressureBoundary::Periodic && cells_[d] < 3)
+      // With 2 cells both neighbours are the same cell: the stencil would need to add, not insert.
+      VofdemInputError(comm_, "option -grid_cells: the pressure solve needs at least 3 cells in the periodic direction %c", "xyz"[d]);
+  // Odd counts cost PFMG only in periodic directions (ex23 at 33^3 periodic: 42-75 iterations against
+  // 11-16 at 32^3; 13 at 33^3 with walls), as the notes measured (56-72 against 13-15).
+  if (pc_ == PressurePreconditioner::PFMG)
+    for (int d = 0; d < 3; ++d)
+      if (cells_[d] % 2 && bc_[2 * d] == PressureBoundary::Periodic)
+        PetscCall(PetscPrintf(comm_, "flow pressure: warning: PFMG with an odd cell count in a periodic direction (%" PetscInt_FMT " in %c) takes 4-5x more iterations; use an even count or -flow_pressure_pc boomeramg\n",
+                              cells_[d], "xyz"[d]));
+  PetscFunctionReturn(0);
+}
+
+// notes/petsc-3.18.md: tuned BoomerAMG (2-3x faster than hypre's defaults, 12-17 CG iterations for
+// a 1e-8 reduction at density ratios 1 to 8000); only where the user chose BoomerAMG and gave none.
+PetscErrorCode PressureSolver::InsertBoomerAMGDefaults() {
+  char      type[64] = "";
+  PetscBool set;
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscOptionsGetString(nullptr, "flow_pressure_", "-pc_type", type, sizeof type, &set));
+  if (set && std::string(type) != PCHYPRE) PetscFunctionReturn(0);
+  PetscCall(PetscOptionsGetString(nullptr, "flow_pressure_", "-pc_hypre_type", type, sizeof type, &set));
+  if (set && std::string(type) != "boomeramg") PetscFunctionReturn(0);
+  PetscCall(DefaultOption("pc_hypre_boomeramg_coarsen_type", "HMIS"));
+  PetscCall(DefaultOption("pc_hypre_boomeramg_interp_type", "ext+i"));
+  PetscCall(DefaultOption("pc_hypre_boomeramg_P_max", "4"));
+  PetscCall(DefaultOption("pc_hypre_boomeramg_strong_threshold", "0.5"));
+  PetscCall(DefaultOption("pc_hypre_boomeramg_agg_nl", "1"));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode PressureSolver::SetUp() {
+  PC pc;
+
+  PetscFunctionBeginUser;
+  if (pc_ == PressurePreconditioner::PFMG) {
+    // The grid's DM is shared: set the matrix type only for this matrix.
+    MatType old;
+    PetscCall(DMGetMatType(dm_, &old));
+    const std::string keep = old ? old : MATAIJ;
+    PetscCall(DMSetMatType(dm_, MATHYPRESTRUCT));
+    PetscCall(DMCreateMatrix(dm_, &A_));
+    PetscCall(DMSetMatType(dm_, keep.c_str()));
+  } else {
+    PetscCall(DMCreateMatrix(dm_, &A_));
+  }
+  PetscCall(PetscObjectSetName((PetscObject)A_, "flow_pressure_operator"));
+  PetscCall(DMCreateLocalVector(dm_, &betaLocal_));
+  PetscCall(DMCreateGlobalVector(dm_, &betaRef_));
+  PetscCall(PetscObjectSetName((PetscObject)betaRef_, "flow_pressure_reference_coefficient"));
+  PetscCall(VecDuplicate(betaRef_, &bDirichlet_));
+  PetscCall(VecDuplicate(betaRef_, &work_));
+
+  bool dirichlet = false;
+  for (int f = 0; f < 6; ++f) dirichlet = dirichlet || bc_[f] == PressureBoundary::Dirichlet;
+  if (!dirichlet) {
+    // Pure Neumann/periodic: p is defined up to a constant (notes: attach the null space).
+    PetscCall(MatNullSpaceCreate(comm_, PETSC_TRUE, 0, nullptr, &nullSpace_));
+    PetscCall(MatSetNullSpace(A_, nullSpace_));
+  }
+
+  PetscCall(KSPCreate(comm_, &ksp_));
+  PetscCall(KSPSetOptionsPrefix(ksp_, "flow_pressure_"));
+  PetscCall(KSPSetOperators(ksp_, A_, A_));
+  PetscCall(KSPSetType(ksp_, KSPCG));
+  PetscCall(KSPSetNormType(ksp_, KSP_NORM_UNPRECONDITIONED));  // the residual the projection cares about
+  PetscCall(KSPSetTolerances(ksp_, 1e-8, PETSC_DEFAULT, PETSC_DEFAULT, 200));
+  PetscCall(KSPSetInitialGuessNonzero(ksp_, PETSC_TRUE));  // the previous pressure
+  PetscCall(KSPGetPC(ksp_, &pc));
+  if (pc_ == PressurePreconditioner::PFMG) {
+    PetscCall(PCSetType(pc, PCPFMG));
+    PetscCall(DefaultOption("pc_pfmg_rap_type", "Galerkin"));
+  } else {
+    PetscCall(PCSetType(pc, PCHYPRE));
+    PetscCall(PCHYPRESetType(pc, "boomeramg"));
+    PetscCall(InsertBoomerAMGDefaults());
+  }
+  PetscCall(KSPSetFromOptions(ksp_));
+  PetscFunctionReturn(0);
+}
+
+// -div(beta grad p) by finite volumes, divided by the cell volume: per face the flux
+// beta_f (p_C - p_N)/h^2 (PHYSICS.md F1: the projection's div(eps U) = ... with U = -(eps/rho) grad p dt).
+PetscErrorCode PressureSolver::Assemble(Vec beta) {
+  const PetscScalar ***b;
+  PetscScalar       ***bd;
+  PetscInt             xs, ys, zs, xm, ym, zm;
+
+  PetscFunctionBeginUser;
+  PetscCall(DMGlobalToLocal(dm_, beta, INSERT_VALUES, betaLocal_));
+  PetscCall(VecSet(bDirichlet_, 0));
+  PetscCall(DMDAVecGetArrayRead(dm_, betaLocal_, &b));
+  PetscCall(DMDAVecGetArray(dm_, bDirichlet_, &bd));
+  PetscCall(DMDAGetCorners(dm_, &xs, &ys, &zs, &xm, &ym, &zm));
+  const PetscReal ih2[3] = {1 / (h_[0] * h_[0]), 1 / (h_[1] * h_[1]), 1 / (h_[2] * h_[2])};
+  for (PetscInt k = zs; k < zs + zm; ++k)
+    for (PetscInt j = ys; j < ys + ym; ++j)
+      for (PetscInt i = xs; i < xs + xm; ++i) {
+        MatStencil      row = {k, j, i, 0}, col[7];
+        PetscScalar     val[7], diag = 0;
+        PetscInt        n = 1;
+        const PetscInt  c[3] = {i, j, k};
+        const PetscReal bc   = PetscRealPart(b[k][j][i]);
+        for (int d = 0; d < 3; ++d)
+          for (int s = 0; s < 2; ++s) {
+            const PetscInt nb = c[d] + (s ? 1 : -1);
+            const int      f  = 2 * d + s;
+            if (bc_[f] == PressureBoundary::Periodic || (nb >= 0 && nb < cells_[d])) {
+              PetscInt q[3] = {i, j, k};
+              q[d]          = nb;  // DMDA wraps -1 and N in periodic directions
+              const PetscReal bn = PetscRealPart(b[q[2]][q[1]][q[0]]);
+              const PetscReal w  = 2 * bc * bn / (bc + bn) * ih2[d];  // harmonic mean at the face
+              col[n]             = {q[2], q[1], q[0], 0};
+              val[n++]           = -w;
+              diag += w;
+            } else if (bc_[f] == PressureBoundary::Dirichlet) {
+              // p = value at the face, half a cell from the centre: flux 2 beta_C (p_C - value)/h.
+              const PetscReal w = 2 * bc * ih2[d];
+              diag += w;
+              bd[k][j][i] += w * bcValue_[f];
+            }  // Neumann: no flux
+          }
+        col[0] = row;
+        val[0] = diag;
+        PetscCall(MatSetValuesStencil(A_, 1, &row, n, col, val, INSERT_VALUES));
+      }
+  PetscCall(DMDAVecRestoreArray(dm_, bDirichlet_, &bd));
+  PetscCall(DMDAVecRestoreArrayRead(dm_, betaLocal_, &b));
+  PetscCall(MatAssemblyBegin(A_, MAT_FINAL_ASSEMBLY));
+  PetscCall(MatAssemblyEnd(A_, MAT_FINAL_ASSEMBLY));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode PressureSolver::SetCoefficient(Vec beta, const char *what) {
+  PetscReal lo, hi;
+
+  PetscFunctionBeginUser;
+  PetscCall(VecMin(beta, nullptr, &lo));
+  PetscCall(VecMax(beta, nullptr, &hi));
+  if (!(lo > 0) || PetscIsInfOrNanReal(hi) || PetscIsInfOrNanReal(lo))
+    VofdemInputError(comm_, "%s: the pressure coefficient eps/rho must be positive and finite, found values in [%g, %g]", what, (double)lo, (double)hi);
+  reused_ = PETSC_FALSE;
+  if (hasRef_) {
+    PetscReal change;
+    PetscCall(VecWAXPY(work_, -1, betaRef_, beta));
+    PetscCall(VecPointwiseDivide(work_, work_, betaRef_));
+    PetscCall(VecNorm(work_, NORM_INFINITY, &change));
+    reused_ = change <= reuseThreshold_ && reuseThreshold_ > 0 ? PETSC_TRUE : PETSC_FALSE;
+  }
+  if (!reused_) {
+    PetscCall(VecCopy(beta, betaRef_));
+    hasRef_ = true;
+    ++builds_;
+  }
+  PetscCall(Assemble(beta));
+  PetscCall(KSPSetReusePreconditioner(ksp_, reused_));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode PressureSolver::Solve(Vec rhs, Vec p) {
+  KSPConvergedReason reason;
+
+  PetscFunctionBeginUser;
+  PetscCheck(hasRef_, comm_, PETSC_ERR_ARG_WRONGSTATE, "PressureSolver::Solve before SetCoefficient");
+  PetscCall(VecWAXPY(work_, 1, bDirichlet_, rhs));
+  // A consistent rhs for the singular problem; the caller's rhs stays as it was.
+  if (nullSpace_) PetscCall(MatNullSpaceRemove(nullSpace_, work_));
+  PetscCall(KSPSolve(ksp_, work_, p));
+  PetscCall(KSPGetIterationNumber(ksp_, &iterations_));
+  PetscCall(KSPGetResidualNorm(ksp_, &residual_));
+  PetscCall(KSPGetConvergedReason(ksp_, &reason));
+  PetscCheck(reason > 0, comm_, PETSC_ERR_NOT_CONVERGED, "pressure solve did not converge: %s after %" PetscInt_FMT " iterations, residual %g",
+             KSPConvergedReasons[reason], iterations_, (double)residual_);
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode PressureSolver::View(PetscViewer viewer) const {
+  std::string bcs;
+
+  PetscFunctionBeginUser;
+  for (int f = 0; f < 6; ++f) {
+    bcs += std::string(f ? ", " : "") + FaceName(f) + " " + BoundaryName(bc_[f]);
+    if (bc_[f] == PressureBoundary::Dirichlet) bcs += " " + std::to_string((double)bcValue_[f]) + " Pa";
+  }
+  PetscCall(PetscViewerASCIIPrintf(viewer, "flow pressure: %s, boundaries %s%s; preconditioner reused below a relative change of %g\n",
+                                   pc_ == PressurePreconditioner::PFMG ? "CG + hypre PFMG" : "CG + hypre BoomerAMG", bcs.c_str(),
+                                   nullSpace_ ? " (constant null space)" : "", (double)reuseThreshold_));
+  PetscFunctionReturn(0);
+}
+
+// The reference coefficient, or zeros when no preconditioner has been built (a valid one is > 0).
+PetscErrorCode PressureSolver::Save(PetscViewer viewer) const {
+  PetscFunctionBeginUser;
+  if (!hasRef_) PetscCall(VecSet(betaRef_, 0));
+  PetscCall(VecView(betaRef_, viewer));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode PressureSolver::Load(PetscViewer viewer) {
+  PetscReal hi;
+
+  PetscFunctionBeginUser;
+  PetscCall(VecLoad(betaRef_, viewer));
+  PetscCall(VecMax(betaRef_, nullptr, &hi));
+  hasRef_ = hi > 0;
+  if (hasRef_) {
+    // Rebuild the preconditioner the saved run was using; the next SetCoefficient decides reuse
+    // against this coefficient, as it would have without the restart.
+    PetscCall(Assemble(betaRef_));
+    PetscCall(KSPSetReusePreconditioner(ksp_, PETSC_FALSE));
+    PetscCall(KSPSetUp(ksp_));
+  }
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode PressureSolver::Destroy() {
+  PetscFunctionBeginUser;
+  PetscCall(KSPDestroy(&ksp_));
+  PetscCall(MatNullSpaceDestroy(&nullSpace_));
+  PetscCall(MatDestroy(&A_));
+  PetscCall(VecDestroy(&betaLocal_));
+  PetscCall(VecDestroy(&betaRef_));
+  PetscCall(VecDestroy(&bDirichlet_));
+  PetscCall(VecDestroy(&work_));
+  PetscCall(DMDestroy(&dm_));
+  PetscFunctionReturn(0);
+}
+
+}  // namespace vofdem
