@@ -40,13 +40,10 @@ PetscErrorCode MortonOrder::SetFromOptions(OptionReader &opt) {
 }
 
 PetscErrorCode MortonOrder::Apply(PetscInt rebuild, DM swarm, const Grid &grid) {
-  PetscReal lo[3], hi[3];
-
   PetscFunctionBeginUser;
   if (!Due(rebuild)) PetscFunctionReturn(0);
-  grid.LocalBox(lo, hi);
   PetscCall(PetscLogEventBegin(event_, 0, 0, 0, 0));
-  PetscCall(Sort(swarm, lo, hi));
+  PetscCall(Sort(swarm, grid.Lower(), grid.Upper()));
   PetscCall(PetscLogEventEnd(event_, 0, 0, 0, 0));
   PetscFunctionReturn(0);
 }
