@@ -44,10 +44,11 @@ public:
   PetscErrorCode Apply(PetscInt rebuild, DM swarm, const Grid &grid);
 
 private:
-  // Default 10, measured on the dem-vs-liggghts bed (1 rank, 600 steps, perf cycles): one sort took
-  // 16-20 ms for 23k particles (about two steps) and cut the force loop's cycles by 11 % from the id
-  // order of the file (15 % from a shuffled order; cache misses -22 % and -75 %); every 10th rebuild
-  // keeps that cost below 2 % where rebuilds come every 10 steps, while the order decays slowly
+  // Default 10, from measurements on the dem-vs-liggghts bed (1 rank, perf cycles): one sort took
+  // 16-20 ms for 23k particles (about two steps). From a shuffled file order it cut the run's cycles
+  // by 15 % (cache misses -75 %; 31 % on a 13.5k bed); from the file's id order, which is the fill
+  // lattice's and already local, the change was within the machine's noise (+-5 %). Every 10th
+  // rebuild keeps the cost below 2 % where rebuilds come every 10 steps, and the order decays slowly
   // (between sorts particles move at most 5 skins, and migration only appends arrivals).
   PetscInt      every_ = 10;
   PetscLogEvent event_ = 0;  // -log_view: DEMMortonSort
