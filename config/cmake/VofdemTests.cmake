@@ -44,6 +44,7 @@ vofdem_bad_input(physics_missing    "option -physics is missing"                
 vofdem_bad_input(not_a_number       "option -dem_radius: 'abc' is not a number"    ${_dem} -dem_radius abc)
 vofdem_bad_input(not_an_integer     "option -max_steps: '2.5' is not an integer"   ${_dem} -max_steps 2.5)
 vofdem_bad_input(out_of_range       "option -dem_restitution: 1.5 is out of range" ${_dem} -dem_restitution 1.5)
+vofdem_bad_input(sort_every_negative "option -dem_sort_every: -1 is out of range" ${_dem} -dem_sort_every -1)
 vofdem_bad_input(vector_length      "option -gravity: needs 3 comma-separated"     ${_dem} -gravity 0,-9.81)
 vofdem_bad_input(unused_option      "unknown or unused option -dem_radus"          ${_dem} -dem_radus 1e-3)
 vofdem_bad_input(box_inverted       "upper corner must exceed lower corner in z"   ${_dem} -grid_lower 0,0,0.02)

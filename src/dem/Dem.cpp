@@ -87,6 +87,7 @@ PetscErrorCode Dem::SetFromOptions(MPI_Comm comm) {
     if (wallFriction_ != -1 && !(wallFriction_ >= 0)) VofdemInputError(comm, "option -dem_wall_friction: must be non-negative (or -1 for the particles')");
     skin_ = 0.4 * radius_;
     PetscCall(opt.Real("-skin", "Verlet skin: lists are rebuilt and particles migrate once one has moved half of it (default: 0.2 diameters)", "m", &skin_, RealRange::Positive()));
+    PetscCall(sort_.SetFromOptions(opt));  // -dem_sort_every (MortonOrder.cpp)
     PetscCall(opt.Real("-dt_factor", "Time step as a fraction of the Rayleigh time (P9)", "-", &dtFactor_, RealRange::LeftOpen(0, 1)));
     PetscCall(opt.RealVector("-fill_lower", "Lower corner of the lattice-fill region (default: the box)", "m", fillLower_, 3, RealRange::Any(), &fillLowerSet_));
     PetscCall(opt.RealVector("-fill_upper", "Upper corner of the lattice-fill region (default: the box)", "m", fillUpper_, 3, RealRange::Any(), &fillUpperSet_));

@@ -55,6 +55,7 @@ PetscErrorCode Dem::Rebuild() {
   PetscCall(Balance(&repartitioned));  // -dem_balance: new ownership ranges when the counts are uneven
   // 2. Particles to their owners; 3. ghosts within the cut-off.
   PetscCall(swarm_.Migrate());
+  PetscCall(sort_.Apply(rebuilds_, swarm_.Dm(), *grid_));  // -dem_sort_every: before any local index is taken (MortonOrder.hpp)
   // A JKR bond may hold adhesionRange_ beyond touching: the cut-offs include it.
   const PetscReal cutoff = 2 * rMax_ + skin_ + adhesionRange_;
   if (halo_.Images().Any()) PetscCall(halo_.Images().Check(comm_, cutoff, "2 R_max + skin + adhesion range"));

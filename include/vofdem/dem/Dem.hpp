@@ -11,6 +11,7 @@
 #include "vofdem/dem/Halo.hpp"
 #include "vofdem/dem/HertzMindlin.hpp"
 #include "vofdem/dem/Materials.hpp"
+#include "vofdem/dem/MortonOrder.hpp"
 #include "vofdem/dem/NeighbourList.hpp"
 #include "vofdem/dem/ParticleSources.hpp"
 #include "vofdem/dem/ParticleSwarm.hpp"
@@ -138,6 +139,7 @@ private:
 
   Grid         *grid_ = nullptr;
   ParticleSwarm swarm_;
+  MortonOrder   sort_;  // -dem_sort_every: Z-order of the local particles at rebuilds (MortonOrder.hpp)
   Halo          halo_;
   NeighbourList list_;
   std::vector<unsigned char> pairImage_;  // periodic image of each list pair (PeriodicImages.hpp)
