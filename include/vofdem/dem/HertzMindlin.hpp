@@ -8,6 +8,13 @@
 #include <algorithm>
 #include <cmath>
 
+// Functions of the per-contact loops that must be inlined there.
+#if defined(__GNUC__)
+#define VOFDEM_HOT_INLINE inline __attribute__((always_inline))
+#else
+#define VOFDEM_HOT_INLINE inline
+#endif
+
 namespace vofdem::hertz {
 
 // 1/R* = 1/R_i + 1/R_j; a wall is a sphere of infinite radius (pass 0 for "infinite").
@@ -154,7 +161,9 @@ inline void ProjectKeepingLength(PetscReal s[3], const PetscReal n[3]) {
 // while sticking (LIGGGHTS) let |F_t| exceed mu |F_n| and the impulse came out 16 % too large.
 // law: the normal elastic law at this overlap (HertzNormal or JkrNormal); sqrtMstar: sqrt(m*)
 // (constant for a pair, so callers cache it).
-inline PetscReal Contact(const PairMaterial &c, const NormalLaw &law, const PetscReal n[3], PetscReal sqrtMstar, const PetscReal vrel[3], PetscReal dt,
+// Forced inline: called once per contact from the hot loops, where GCC otherwise keeps it a call
+// (5.8 % more instructions per step on the benchmark bed).
+VOFDEM_HOT_INLINE PetscReal Contact(const PairMaterial &c, const NormalLaw &law, const PetscReal n[3], PetscReal sqrtMstar, const PetscReal vrel[3], PetscReal dt,
                          PetscReal xi[3], PetscReal F[3], PetscReal Ft[3]) {
   const PetscReal Sn = law.Sn, St = c.tStiff * Sn;
   const PetscReal gn = c.k5 * sqrtMstar * std::sqrt(Sn), gt = gn * c.tOverN;  // gamma_n, gamma_t (P3)
@@ -210,7 +219,7 @@ struct RollingParams {
 //    mu_r R* F_n, plus damping -eta 2 sqrt(I_r k_r) w while not at the cap; holds a pile at rest.
 //  - Epsd2 (LIGGGHTS' epsd2): the same spring and cap without damping.
 template <Rolling model>
-inline void RollingTorque(const RollingParams &p, PetscReal Fn, PetscReal kn, PetscReal Rstar, PetscReal Ir, const PetscReal n[3],
+VOFDEM_HOT_INLINE void RollingTorque(const RollingParams &p, PetscReal Fn, PetscReal kn, PetscReal Rstar, PetscReal Ir, const PetscReal n[3],
                           const PetscReal wrel[3], PetscReal dt, PetscReal spring[3], PetscReal M[3]) {
   M[0] = M[1] = M[2] = 0;
   if constexpr (model == Rolling::None) return;
