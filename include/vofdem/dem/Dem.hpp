@@ -1,9 +1,11 @@
-// The particle module (-physics dem): one type of spheres, lattice insertion, gravity,
-// Hertz-Mindlin contacts with damping, tangential springs and Coulomb friction between particles
-// and against the six faces of the box and the walls of -dem_walls (Walls.hpp) (PHYSICS.md P3), rotation, velocity Verlet with a
-// Rayleigh-time step (P9), Verlet lists with a skin, ghost particles across ranks, migration with a
-// particle-count check, periodic directions (-grid_periodic, PeriodicImages.hpp), walls of any
-// shape (Walls.hpp), insertion and deletion (ParticleSources.hpp), particle types (Materials.hpp).
+// The particle module (-physics dem): spheres of several types (Materials.hpp) on a DMSwarm, gravity,
+// Hertz-Mindlin or linear contacts with damping, tangential springs and Coulomb friction (PHYSICS.md
+// P3, P4), rolling resistance (P5), JKR, SJKR or van der Waals adhesion (P6, P7), lubrication (P8),
+// against each other, the box faces and the walls of -dem_walls (Walls.hpp); velocity Verlet with a
+// Rayleigh-time step (P9); Verlet lists with a skin, ghost particles across ranks (Halo.hpp),
+// migration with a particle-count check, periodic directions (PeriodicImages.hpp), load balancing
+// (DemBalance.cpp), Morton order (MortonOrder.hpp); insertion and deletion (ParticleSources.hpp);
+// output, stress and Save/Load (DemOutput.hpp, DemSaveLoad.cpp).
 #pragma once
 
 #include "vofdem/dem/ContactRecord.hpp"
