@@ -12,7 +12,7 @@ const std::vector<std::string> &KnownPhysics() {
 }
 
 const std::vector<std::string> &AvailablePhysics() {
-  static const std::vector<std::string> names = {"dem"};
+  static const std::vector<std::string> names = {"dem", "flow"};
   return names;
 }
 
@@ -36,12 +36,15 @@ PetscErrorCode MakePhysicsSet(MPI_Comm comm, const std::vector<std::string> &nam
   if (names.empty()) VofdemInputError(comm, "option -physics: name at least one module (known: dem, flow, vof, energy)");
   for (const auto &n : names) {
     if (std::find(available.begin(), available.end(), n) == available.end())
-      VofdemInputError(comm, "option -physics: '%s' is not available in this build of vofdem yet (available: dem)", n.c_str());
+      VofdemInputError(comm, "option -physics: '%s' is not available in this build of vofdem yet (available: dem, flow)", n.c_str());
     set->dem    = set->dem || n == "dem";
     set->flow   = set->flow || n == "flow";
     set->vof    = set->vof || n == "vof";
     set->energy = set->energy || n == "energy";
   }
+  // Particles and fluid in one scene need the coupling (K1-K3), which this build does not have yet:
+  // running both side by side would look coupled and not be.
+  if (set->dem && set->flow) VofdemInputError(comm, "option -physics: 'dem' with 'flow' needs the particle-fluid coupling, not available in this build yet");
   if (set->vof && !set->flow) VofdemInputError(comm, "option -physics: 'vof' needs 'flow' (the interface moves with the fluid)");
   PetscFunctionReturn(0);
 }

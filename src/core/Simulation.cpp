@@ -48,6 +48,11 @@ PetscErrorCode Simulation::SetFromOptions() {
     PetscCall(dem_->SetFromOptions(comm_));
     if (!physics_.dem) dem_.reset();
   }
+  if (physics_.flow || help) {
+    flow_ = std::make_unique<Flow>();
+    PetscCall(flow_->SetFromOptions(grid_));
+    if (!physics_.flow) flow_.reset();
+  }
   PetscFunctionReturn(0);
 }
 
@@ -63,6 +68,13 @@ PetscErrorCode Simulation::SetUp() {
     PetscCall(dem_->SetUp(grid_, gravity_, (std::uint64_t)seed_));
     PetscCall(PetscLogStagePop());
   }
+  if (physics_.flow) {
+    PetscCall(PetscLogStageGetId("Flow", &flowStage_));
+    if (flowStage_ < 0) PetscCall(PetscLogStageRegister("Flow", &flowStage_));
+    PetscCall(PetscLogStagePush(flowStage_));
+    PetscCall(flow_->SetUp(gravity_));
+    PetscCall(PetscLogStagePop());
+  }
   PetscCall(ChooseTimeStep());
   if (!outputDir_.empty()) {
     PetscMPIInt rank;
@@ -75,8 +87,9 @@ PetscErrorCode Simulation::SetUp() {
       if (!ec) csv_ = std::fopen(path.c_str(), "w");
       ok = csv_ != nullptr;
       if (csv_)
-        std::fprintf(csv_, "step,time_s,dt_s,particles,kinetic_energy_J,rotational_energy_J,pair_contacts,coordination,wall_contacts,max_overlap_per_diameter,floor_force_z_N,inserted,deleted,wall_time_s%s%s\n",
-                     physics_.dem ? dem_->WallLoadColumns().c_str() : "", physics_.dem ? dem_->MonitorHeader().c_str() : "");
+        std::fprintf(csv_, "step,time_s,dt_s,particles,kinetic_energy_J,rotational_energy_J,pair_contacts,coordination,wall_contacts,max_overlap_per_diameter,floor_force_z_N,inserted,deleted,wall_time_s%s%s%s\n",
+                     physics_.dem ? dem_->WallLoadColumns().c_str() : "", physics_.dem ? dem_->MonitorHeader().c_str() : "",
+                     physics_.flow ? ",flow_kinetic_energy_J,flow_max_velocity_m_s,flow_max_divergence_1_s,flow_cfl,pressure_iterations,pressure_residual,pressure_pc_reused,viscous_iterations" : "");
     }
     PetscCallMPI(MPI_Allreduce(&ok, &allOk, 1, MPI_INT, MPI_MIN, comm_));
     if (!allOk) VofdemInputError(comm_, "option -output_dir: cannot create '%s' or write monitor.csv in it", outputDir_.c_str());
@@ -93,8 +106,21 @@ PetscErrorCode Simulation::ChooseTimeStep() {
     limit        = dem_->StableTimeStep();
     dtLimitName_ = dem_->TimeStepBasis();
   }
-  dt_ = limit;
-  if (dtUser_ > 0) {
+  if (physics_.flow) {
+    PetscReal   f;
+    std::string basis;
+    PetscCall(flow_->StableTimeStep(&f, &basis));
+    if (f < limit) {
+      limit        = f;
+      dtLimitName_ = basis;
+    }
+  }
+  if (!(limit < PETSC_MAX_REAL) && !(dtUser_ > 0))
+    VofdemInputError(comm_, "option -dt: nothing moves at the start (no velocity, no gravity): give a time step");
+  // Growth of an adaptive step is capped (20 percent per step), so the variable-step AB2 of the flow
+  // stays close to its constant-step accuracy.
+  dt_ = step_ > 0 && dt_ > 0 ? std::min(limit, (PetscReal)1.2 * dt_) : limit;
+  if (dtUser_ > 0 && step_ == 0) {
     if (dtUser_ > limit && !dtForce_)
       VofdemInputError(comm_, "option -dt: %g s exceeds the stable limit %g s of %s; lower it or add -dt_force", (double)dtUser_, (double)limit,
                        dtLimitName_.c_str());
@@ -114,6 +140,11 @@ PetscErrorCode Simulation::Step() {
     PetscCall(dem_->Step(dt));
     PetscCall(PetscLogStagePop());
   }
+  if (physics_.flow) {
+    PetscCall(PetscLogStagePush(flowStage_));
+    PetscCall(flow_->Step(time_, dt));
+    PetscCall(PetscLogStagePop());
+  }
   time_ += dt;
   ++step_;
   if (physics_.dem) PetscCall(dem_->WriteOutput(time_));
@@ -126,11 +157,13 @@ PetscErrorCode Simulation::Run() {
   if (physics_.dem) PetscCall(dem_->WriteOutput(time_));
   PetscCall(Monitor());
   while (step_ < maxSteps_ && time_ < finalTime_ * (1 - 1e-12)) {
+    if (physics_.flow && dtUser_ == 0) PetscCall(ChooseTimeStep());  // the flow's limit moves with the flow
     PetscCall(Step());
     const bool last = step_ == maxSteps_ || time_ >= finalTime_ * (1 - 1e-12);
     if (step_ % monitorEvery_ == 0 || last) PetscCall(Monitor());
   }
   if (physics_.dem && !dem_->SaveParticlesPath().empty()) PetscCall(dem_->SaveParticles(dem_->SaveParticlesPath()));
+  if (physics_.flow && !flow_->ProfilePath().empty()) PetscCall(flow_->WriteProfile(flow_->ProfilePath()));
   PetscCall(PetscPrintf(comm_, "vofdem: finished after %" PetscInt_FMT " steps at t = %g s%s%s\n", step_, (double)time_,
                         csv_ ? "; monitor table in " : "", csv_ ? (outputDir_ + "/monitor.csv").c_str() : ""));
   PetscFunctionReturn(0);
@@ -146,6 +179,18 @@ PetscErrorCode Simulation::Monitor() {
   std::string extraCsv, extraScreen;
   if (physics_.dem) PetscCall(dem_->Summarize(&s));
   if (physics_.dem) PetscCall(dem_->MonitorValues(&extraCsv, &extraScreen));
+  FlowSummary fs;
+  std::string flowScreen;
+  if (physics_.flow) {
+    PetscCall(flow_->Summarize(&fs));
+    char fb[400];
+    std::snprintf(fb, sizeof fb, "  | flow KE %.6e J  max|u_i| %.4e m/s  div %.2e 1/s  CFL %.3f  p its %d%s  visc its %d", (double)fs.kinetic, (double)fs.maxSpeed,
+                  (double)fs.maxDivergence, (double)fs.cfl, (int)fs.pressureIterations, fs.preconditionerReused ? " (pc reused)" : "", (int)fs.viscousIterations);
+    flowScreen = fb;
+    std::snprintf(fb, sizeof fb, ",%.10e,%.10e,%.6e,%.6f,%d,%.6e,%d,%d", (double)fs.kinetic, (double)fs.maxSpeed, (double)fs.maxDivergence, (double)fs.cfl,
+                  (int)fs.pressureIterations, (double)fs.pressureResidual, (int)fs.preconditionerReused, (int)fs.viscousIterations);
+    extraCsv += fb;
+  }
   std::string line;
   char        buf[512];
   std::snprintf(buf, sizeof buf, "step %6d  t %.6e s  dt %.3e s", (int)step_, (double)time_, (double)dt_);
@@ -165,6 +210,7 @@ PetscErrorCode Simulation::Monitor() {
       line += buf;
     }
   }
+  line += flowScreen;
   if (monitorTiming_) {
     double fraction = maxSteps_ > 0 ? (double)step_ / maxSteps_ : 0;
     if (finalTime_ < PETSC_MAX_REAL) fraction = std::max(fraction, (double)(time_ / finalTime_));
@@ -192,7 +238,14 @@ PetscErrorCode Simulation::View(PetscViewer viewer) const {
   PetscCall(PetscViewerASCIIPrintf(viewer, "vofdem %s: physics %s on %d rank%s\n", VOFDEM_VERSION, physics_.Describe().c_str(), (int)size, size > 1 ? "s" : ""));
   PetscCall(grid_.View(viewer));
   if (dem_) PetscCall(dem_->View(viewer));
+  if (flow_) PetscCall(flow_->View(viewer));
   if (physics_.dem) PetscCall(PetscViewerASCIIPrintf(viewer, "time step limits: dem %g s\n", (double)dem_->StableTimeStep()));
+  if (physics_.flow) {
+    PetscReal   f;
+    std::string basis;
+    PetscCall(flow_->StableTimeStep(&f, &basis));
+    PetscCall(PetscViewerASCIIPrintf(viewer, "time step limits: flow %g s (%s)%s\n", (double)f, basis.c_str(), dtUser_ > 0 ? "" : "; adapted every step"));
+  }
   PetscCall(PetscViewerASCIIPrintf(viewer, "time step: %g s (set by %s); gravity (%g, %g, %g) m/s^2; seed %" PetscInt_FMT "\n", (double)dt_,
                                    dtLimitName_.c_str(), (double)gravity_[0], (double)gravity_[1], (double)gravity_[2], seed_));
   PetscFunctionReturn(0);
@@ -204,6 +257,8 @@ PetscErrorCode Simulation::Destroy() {
   csv_ = nullptr;
   if (dem_) PetscCall(dem_->Destroy());
   dem_.reset();
+  if (flow_) PetscCall(flow_->Destroy());
+  flow_.reset();
   PetscCall(grid_.Destroy());
   PetscFunctionReturn(0);
 }

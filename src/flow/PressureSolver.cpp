@@ -35,8 +35,7 @@ const char *PressureSolver::FaceName(int face) {
 PetscErrorCode PressureSolver::Create(const Grid &grid) {
   PetscFunctionBeginUser;
   comm_ = grid.Comm();
-  dm_   = grid.CellDM();
-  PetscCall(PetscObjectReference((PetscObject)dm_));
+  grid_ = &grid;  // its cell DMDA may not exist yet (options are read before set-up): taken in SetUp
   for (int d = 0; d < 3; ++d) {
     h_[d]     = grid.Spacing()[d];
     cells_[d] = grid.Cells()[d];
@@ -118,6 +117,8 @@ PetscErrorCode PressureSolver::SetUp() {
   PC pc;
 
   PetscFunctionBeginUser;
+  dm_ = grid_->CellDM();
+  PetscCall(PetscObjectReference((PetscObject)dm_));
   if (pc_ == PressurePreconditioner::PFMG) {
     // The grid's DM is shared: set the matrix type only for this matrix.
     MatType old;

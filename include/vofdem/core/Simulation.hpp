@@ -5,6 +5,7 @@
 
 #include "vofdem/core/Physics.hpp"
 #include "vofdem/dem/Dem.hpp"
+#include "vofdem/flow/Flow.hpp"
 #include "vofdem/grid/Grid.hpp"
 
 #include <petsclog.h>
@@ -30,6 +31,7 @@ public:
   PetscInt  StepNumber() const { return step_; }
   const PhysicsSet &Physics() const { return physics_; }
   Dem       *Particles() { return dem_.get(); }
+  Flow      *Fluid() { return flow_.get(); }
   const Grid &GetGrid() const { return grid_; }
 
 private:
@@ -40,6 +42,7 @@ private:
   PhysicsSet physics_;
   Grid       grid_;
   std::unique_ptr<Dem> dem_;
+  std::unique_ptr<Flow> flow_;
 
   PetscReal time_ = 0, dt_ = 0, dtUser_ = 0, finalTime_ = PETSC_MAX_REAL;
   PetscBool dtForce_ = PETSC_FALSE, monitorTiming_ = PETSC_TRUE;
@@ -50,7 +53,7 @@ private:
   std::string dtLimitName_;
   FILE     *csv_ = nullptr;
   PetscLogDouble wallStart_ = 0;
-  PetscLogStage  demStage_  = -1;
+  PetscLogStage  demStage_  = -1, flowStage_ = -1;
 };
 
 }  // namespace vofdem

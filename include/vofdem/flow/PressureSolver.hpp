@@ -62,6 +62,8 @@ public:
   PetscBool PreconditionerReused() const { return reused_; }
   PetscInt  PreconditionerBuilds() const { return builds_; }
   bool      HasNullSpace() const { return nullSpace_ != nullptr; }
+  PressureBoundary BoundaryType(int face) const { return bc_[face]; }
+  PetscReal        BoundaryValue(int face) const { return bcValue_[face]; }
   Mat       Operator() const { return A_; }
   KSP       Solver() const { return ksp_; }
 
@@ -70,7 +72,8 @@ private:
   PetscErrorCode InsertBoomerAMGDefaults();
 
   MPI_Comm               comm_ = MPI_COMM_NULL;
-  DM                     dm_   = nullptr;  // the grid's cell DMDA (referenced)
+  const Grid            *grid_ = nullptr;
+  DM                     dm_   = nullptr;  // the grid's cell DMDA (referenced in SetUp)
   PetscReal              h_[3] = {1, 1, 1};
   PetscInt               cells_[3] = {0, 0, 0};
   PressureBoundary       bc_[6] = {PressureBoundary::Neumann, PressureBoundary::Neumann, PressureBoundary::Neumann,

@@ -1,0 +1,116 @@
+// The flow module: volume-averaged incompressible Navier-Stokes on the MAC grid (PHYSICS.md F1, F2),
+// switched on by -physics flow; options under -flow_.
+//
+// Momentum, divided by eps*rho (non-conservative form; with continuity F1 it equals F2):
+//   dU/dt + U.grad U = 1/(eps rho) div(eps mu (grad U + grad U^T)) - (1/rho) grad p + g + f
+// Time integration (second order): incremental pressure-correction projection,
+//   u* - u^n = dt [ AB2(H) + 1/2 (L u* + L u^n)/(eps rho) - (1/rho) G p^{n-1/2} + g + f^{n+1/2} ]
+//   -div((eps/rho) G phi) = -div(eps u*)/dt,  u^{n+1} = u* - dt (1/rho) G phi,  p^{n+1/2} = p^{n-1/2} + phi
+// H = -(U.grad)U (TVD, Advection.hpp, in the form div(Uu) - u div U) + div(eps mu grad U^T)/(eps rho);
+// L = div(eps mu grad u), implicit (Crank-Nicolson, KSP prefix flow_viscous_) or, with
+// -flow_viscous explicit, in AB2 too. AB2 with variable steps: (1 + r/2) H^n - r/2 H^{n-1}, r = dt/dt_old.
+// Faces: (1/rho)_f = b_f/eps_f with b_f the harmonic mean of eps/rho (what PressureSolver assembles),
+// eps_f the mean of eps: the projected velocity has div(eps u) = 0 to the solver tolerance.
+#pragma once
+
+#include "vofdem/flow/Advection.hpp"
+#include "vofdem/flow/FlowBoundary.hpp"
+#include "vofdem/flow/PressureSolver.hpp"
+#include "vofdem/flow/StaggeredGrid.hpp"
+#include "vofdem/flow/ViscousSolver.hpp"
+
+#include <string>
+
+namespace vofdem {
+
+struct FlowSummary {
+  PetscReal kinetic = 0;      // J: sum of rho |U|^2 / 2 dV (eps-weighted)
+  PetscReal maxSpeed = 0;     // m/s
+  PetscReal maxDivergence = 0;  // 1/s: max |div(eps U)| after the projection
+  PetscReal cfl = 0;          // dt * max(|u|/hx + |v|/hy + |w|/hz) of the last step
+  PetscInt  pressureIterations = 0, viscousIterations = 0;
+  PetscReal pressureResidual = 0;
+  PetscBool preconditionerReused = PETSC_FALSE;
+};
+
+class Flow {
+public:
+  // An acceleration source f (m/s^2) for component d at point x and time t (manufactured solutions).
+  using Forcing = PetscReal (*)(void *ctx, PetscReal t, const PetscReal x[3], int d);
+
+  PetscErrorCode SetFromOptions(const Grid &grid);
+  PetscErrorCode SetUp(const PetscReal gravity[3]);
+  PetscErrorCode Step(PetscReal t, PetscReal dt);  // advances from t to t + dt
+  // Stable time step at the current velocity: convective -flow_cfl, and with explicit viscosity the
+  // viscous limit; collective.
+  PetscErrorCode StableTimeStep(PetscReal *dt, std::string *basis) const;
+  PetscErrorCode Summarize(FlowSummary *s) const;
+  PetscErrorCode View(PetscViewer viewer) const;
+  PetscErrorCode Save(PetscViewer viewer) const;
+  PetscErrorCode Load(PetscViewer viewer);
+  PetscErrorCode Destroy();
+
+  // Fields, for initial conditions and coupling. Velocity(d): global vector of Staggered().Face(d);
+  // the cell fields are global vectors of Staggered().Cells(). After changing density, viscosity or
+  // eps, call PropertiesChanged().
+  Vec Velocity(int d) const { return u_[d]; }
+  Vec Pressure() const { return p_; }
+  Vec Density() const { return rho_; }
+  Vec Viscosity() const { return mu_; }
+  Vec FluidFraction() const { return eps_; }
+  PetscErrorCode PropertiesChanged();
+  void SetForcing(Forcing f, void *ctx) { forcing_ = f; forcingCtx_ = ctx; }
+  // Makes the velocity field satisfy the boundary conditions and div(eps U) = 0 (an initial projection).
+  PetscErrorCode ProjectInitialVelocity();
+
+  const StaggeredGrid &Staggered() const { return sg_; }
+  const FlowBoundary  &Boundary() const { return bc_; }
+  PetscReal            ReferenceDensity() const { return density_; }
+  PetscReal            ReferenceViscosity() const { return viscosity_; }
+  const std::string   &ProfilePath() const { return profilePath_; }
+  // Velocity along the three lines through the box centre, as CSV (line,s,x,y,z,u,v,w) on rank 0.
+  PetscErrorCode WriteProfile(const std::string &path) const;
+  // Component d interpolated to point x (collective; every rank gets the value).
+  PetscErrorCode SampleVelocity(const PetscReal x[3], PetscReal u[3]) const;
+
+private:
+  PetscErrorCode UpdateLocals(bool properties);
+  PetscErrorCode ComputeExplicitTerms();  // H_ (and L u^n) at time level n
+  PetscErrorCode Predict(PetscReal t, PetscReal dt);
+  PetscErrorCode Project(PetscReal dt, Vec *uField);
+  PetscErrorCode Divergence(Vec rhsOut, PetscReal scale, PetscReal *maxAbs) const;
+
+  const Grid    *grid_ = nullptr;
+  StaggeredGrid  sg_;
+  FlowBoundary   bc_;
+  PressureSolver pressure_;
+  ViscousSolver  viscous_;
+
+  // options
+  PetscReal   density_ = 1000, viscosity_ = 1e-3, cfl_ = 0.5, velocity0_[3] = {0, 0, 0};
+  Limiter     limiter_ = Limiter::VanLeer;
+  std::string limiterName_ = "vanleer";
+  PetscBool   implicitViscosity_ = PETSC_TRUE;
+  std::string profilePath_;
+  PetscReal   gravity_[3] = {0, 0, 0};
+
+  // fields
+  Vec u_[3] = {nullptr, nullptr, nullptr}, uLocal_[3] = {nullptr, nullptr, nullptr};
+  Vec H_[3] = {nullptr, nullptr, nullptr}, Hold_[3] = {nullptr, nullptr, nullptr}, L_[3] = {nullptr, nullptr, nullptr};
+  Vec rhsFace_[3] = {nullptr, nullptr, nullptr};
+  Vec rho_ = nullptr, mu_ = nullptr, eps_ = nullptr, p_ = nullptr, phi_ = nullptr, beta_ = nullptr, divRhs_ = nullptr;
+  Vec epsLocal_ = nullptr, betaLocal_ = nullptr, emLocal_ = nullptr, pLocal_ = nullptr, phiLocal_ = nullptr;
+
+  // time-scheme state (saved)
+  PetscReal dtOld_ = 0;
+  PetscBool haveOld_ = PETSC_FALSE;
+  Forcing   forcing_ = nullptr;
+  void     *forcingCtx_ = nullptr;
+  // last step, for the monitor
+  FlowSummary last_;
+  PetscReal   propertyVersionDt_ = -1;
+  bool        propertiesDirty_ = true;
+  PetscLogEvent evExplicit_ = 0, evPredict_ = 0, evProject_ = 0;
+};
+
+}  // namespace vofdem

@@ -1,0 +1,40 @@
+// The implicit half of the viscous term (Crank-Nicolson, Flow.hpp): per velocity component d,
+//   (eps rho)_f/dt u - 1/2 div(eps mu grad u) = rhs
+// assembled on the STAR width-1 copy of the component's face DMDA (StaggeredGrid::FaceMatrixDM).
+// The matrix is symmetric positive definite: the shear coefficient between two faces is the same
+// seen from either; prescribed velocities (walls, inflow) enter the rhs (BoundaryRhs); boundary
+// faces of the component itself get identity rows. KSP prefix flow_viscous_ (default CG + Jacobi:
+// the matrix is diagonally dominant by (eps rho)/dt), one KSP per component.
+#pragma once
+
+#include "vofdem/flow/FlowBoundary.hpp"
+#include "vofdem/flow/StaggeredGrid.hpp"
+
+#include <petscksp.h>
+
+namespace vofdem {
+
+class ViscousSolver {
+public:
+  PetscErrorCode Create(const StaggeredGrid &sg, const FlowBoundary &bc);
+  PetscErrorCode SetFromOptions();
+  // Cell fields as ghosted local vectors of StaggeredGrid::Cells(): eps, beta = eps/rho, eps*mu.
+  PetscErrorCode Assemble(PetscReal dt, Vec epsLocal, Vec betaLocal, Vec emLocal);
+  PetscErrorCode Solve(int d, Vec rhs, Vec u);  // u: initial guess in, solution out
+  Vec            BoundaryRhs(int d) const { return bcRhs_[d]; }
+  PetscInt       Iterations() const { return iterations_; }
+  PetscReal      AssembledDt() const { return dt_; }
+  PetscErrorCode View(PetscViewer viewer) const;
+  PetscErrorCode Destroy();
+
+private:
+  const StaggeredGrid *sg_ = nullptr;
+  const FlowBoundary  *bc_ = nullptr;
+  Mat                  A_[3] = {nullptr, nullptr, nullptr};
+  KSP                  ksp_[3] = {nullptr, nullptr, nullptr};
+  Vec                  bcRhs_[3] = {nullptr, nullptr, nullptr};
+  PetscReal            dt_ = -1;
+  PetscInt             iterations_ = 0;
+};
+
+}  // namespace vofdem

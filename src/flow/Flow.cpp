@@ -1,0 +1,346 @@
+#include "vofdem/flow/Flow.hpp"
+
+#include "vofdem/core/Options.hpp"
+#include "vofdem/core/Runtime.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+namespace vofdem {
+
+namespace {
+
+const std::vector<std::string> &LimiterNames() {
+  static const std::vector<std::string> names = {"upwind", "central", "minmod", "vanleer", "mc", "superbee", "koren"};
+  return names;
+}
+
+}  // namespace
+
+PetscErrorCode Flow::SetFromOptions(const Grid &grid) {
+  PetscFunctionBeginUser;
+  grid_         = &grid;
+  MPI_Comm comm = grid.Comm();
+  PetscOptionsBegin(comm, "flow_", "Flow: incompressible volume-averaged Navier-Stokes (PHYSICS.md F1, F2)", "Flow");
+  {
+    OptionReader opt(PetscOptionsObject);
+    PetscCall(opt.Real("-density", "Fluid density (uniform; the VOF module makes it a field)", "kg/m^3", &density_, RealRange::Positive()));
+    PetscCall(opt.Real("-viscosity", "Dynamic viscosity (uniform)", "Pa s", &viscosity_, RealRange::Positive()));
+    PetscCall(opt.RealVector("-initial_velocity", "Uniform initial velocity x,y,z", "m/s", velocity0_, 3));
+    PetscCall(opt.Real("-cfl", "Convective Courant number of the time step: dt = cfl / max(|u|/hx + |v|/hy + |w|/hz)", "-", &cfl_, RealRange::LeftOpen(0, 2)));
+    std::vector<std::string> lim = {limiterName_};
+    PetscCall(opt.NameList("-advection", "Advection scheme: TVD limiter minmod, vanleer, mc, superbee, koren (bounded, second order), central (unbounded), upwind (first order)",
+                           LimiterNames(), &lim));
+    if (lim.size() != 1) VofdemInputError(comm, "option -flow_advection: give one scheme");
+    limiterName_ = lim[0];
+    const auto &names = LimiterNames();
+    limiter_ = (Limiter)(std::find(names.begin(), names.end(), lim[0]) - names.begin());
+    std::vector<std::string> visc = {"implicit"};
+    PetscCall(opt.NameList("-viscous", "Viscous term: implicit (Crank-Nicolson, KSP prefix flow_viscous_) or explicit (Adams-Bashforth, viscous time-step limit)",
+                           {"implicit", "explicit"}, &visc));
+    if (visc.size() != 1) VofdemInputError(comm, "option -flow_viscous: give implicit or explicit");
+    implicitViscosity_ = visc[0] == "implicit" ? PETSC_TRUE : PETSC_FALSE;
+    PetscCall(opt.String("-profile_output", "CSV file for the velocity along the three lines through the box centre at the end of the run (default: none)", &profilePath_));
+  }
+  PetscOptionsEnd();
+  PetscCall(bc_.SetFromOptions(grid));
+  // The projection's boundaries follow from the velocity's: an outflow face fixes the pressure
+  // (the increment phi is 0 there), every other face fixes the normal velocity (Neumann).
+  PetscCall(pressure_.Create(grid));
+  for (int f = 0; f < 6; ++f) {
+    const FlowBoundaryType t = bc_.Face(f).type;
+    if (t != FlowBoundaryType::Periodic) PetscCall(pressure_.SetBoundary(f, t == FlowBoundaryType::Outflow ? PressureBoundary::Dirichlet : PressureBoundary::Neumann, 0));
+  }
+  PetscCall(pressure_.SetFromOptions());
+  for (int f = 0; f < 6; ++f) {
+    const FlowBoundaryType t    = bc_.Face(f).type;
+    const PressureBoundary want = t == FlowBoundaryType::Periodic ? PressureBoundary::Periodic
+                                : t == FlowBoundaryType::Outflow  ? PressureBoundary::Dirichlet : PressureBoundary::Neumann;
+    if (pressure_.BoundaryType(f) != want || pressure_.BoundaryValue(f) != 0)
+      VofdemInputError(comm, "option -flow_pressure_bc_%s: with -physics flow the pressure boundaries follow -flow_bc_%s (%s); do not set them", PressureSolver::FaceName(f),
+                       FlowBoundary::FaceName(f), FlowBoundary::TypeName(t));
+  }
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode Flow::SetUp(const PetscReal gravity[3]) {
+  PetscFunctionBeginUser;
+  for (int d = 0; d < 3; ++d) gravity_[d] = gravity[d];
+  PetscCall(sg_.Create(*grid_));
+  for (int d = 0; d < 3; ++d) {
+    PetscCall(DMCreateGlobalVector(sg_.Face(d), &u_[d]));
+    PetscCall(DMCreateLocalVector(sg_.Face(d), &uLocal_[d]));
+    PetscCall(VecDuplicate(u_[d], &H_[d]));
+    PetscCall(VecDuplicate(u_[d], &Hold_[d]));
+    PetscCall(VecDuplicate(u_[d], &L_[d]));
+    PetscCall(VecDuplicate(u_[d], &rhsFace_[d]));
+    PetscCall(VecSet(u_[d], velocity0_[d]));
+    PetscCall(bc_.ApplyNormal(sg_, d, u_[d]));
+    PetscCall(PetscObjectSetName((PetscObject)u_[d], d == 0 ? "flow_u" : d == 1 ? "flow_v" : "flow_w"));
+    PetscCall(PetscObjectSetName((PetscObject)Hold_[d], d == 0 ? "flow_explicit_u" : d == 1 ? "flow_explicit_v" : "flow_explicit_w"));
+  }
+  DM c = sg_.Cells();
+  for (Vec *v : {&rho_, &mu_, &eps_, &p_, &phi_, &beta_, &divRhs_}) PetscCall(DMCreateGlobalVector(c, v));
+  for (Vec *v : {&epsLocal_, &betaLocal_, &emLocal_, &pLocal_, &phiLocal_}) PetscCall(DMCreateLocalVector(c, v));
+  PetscCall(PetscObjectSetName((PetscObject)rho_, "flow_density"));
+  PetscCall(PetscObjectSetName((PetscObject)mu_, "flow_viscosity"));
+  PetscCall(PetscObjectSetName((PetscObject)eps_, "flow_fluid_fraction"));
+  PetscCall(PetscObjectSetName((PetscObject)p_, "flow_pressure"));
+  PetscCall(PetscObjectSetName((PetscObject)phi_, "flow_pressure_increment"));
+  PetscCall(VecSet(rho_, density_));
+  PetscCall(VecSet(mu_, viscosity_));
+  PetscCall(VecSet(eps_, 1));
+  PetscCall(VecSet(p_, 0));
+  PetscCall(VecSet(phi_, 0));
+  for (int f = 0; f < 6; ++f)
+    if (bc_.Face(f).type == FlowBoundaryType::Outflow) PetscCall(VecSet(p_, bc_.Face(f).pressure));  // the level; see View
+  PetscCall(pressure_.SetUp());
+  if (implicitViscosity_) {
+    PetscCall(viscous_.Create(sg_, bc_));
+    PetscCall(viscous_.SetFromOptions());
+  }
+  PetscCall(PetscLogEventRegister("FlowExplicit", DM_CLASSID, &evExplicit_));
+  PetscCall(PetscLogEventRegister("FlowPredict", DM_CLASSID, &evPredict_));
+  PetscCall(PetscLogEventRegister("FlowProject", DM_CLASSID, &evProject_));
+  PetscCall(UpdateLocals(true));  // the monitor reads the ghosted fields before the first step
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode Flow::PropertiesChanged() {
+  PetscFunctionBeginUser;
+  propertiesDirty_ = true;
+  PetscFunctionReturn(0);
+}
+
+// Ghosted copies of the fields the kernels read; with `properties`, also beta = eps/rho and eps*mu,
+// the pressure operator and (next assembly) the viscous matrix.
+PetscErrorCode Flow::UpdateLocals(bool properties) {
+  PetscFunctionBeginUser;
+  if (properties) {
+    PetscReal lo;
+    PetscCall(VecMin(rho_, nullptr, &lo));
+    if (!(lo > 0)) VofdemInputError(grid_->Comm(), "flow: the density must be positive everywhere (found %g kg/m^3)", (double)lo);
+    PetscCall(VecMin(mu_, nullptr, &lo));
+    if (!(lo > 0)) VofdemInputError(grid_->Comm(), "flow: the viscosity must be positive everywhere (found %g Pa s)", (double)lo);
+    PetscCall(VecMin(eps_, nullptr, &lo));
+    if (!(lo > 0)) VofdemInputError(grid_->Comm(), "flow: the fluid fraction eps must be positive everywhere (found %g)", (double)lo);
+    PetscCall(VecPointwiseDivide(beta_, eps_, rho_));
+    PetscCall(VecPointwiseMult(divRhs_, eps_, mu_));  // divRhs_ as scratch for eps*mu
+    PetscCall(DMGlobalToLocal(sg_.Cells(), divRhs_, INSERT_VALUES, emLocal_));
+    PetscCall(bc_.FillCellGhosts(sg_, emLocal_));
+    PetscCall(DMGlobalToLocal(sg_.Cells(), beta_, INSERT_VALUES, betaLocal_));
+    PetscCall(bc_.FillCellGhosts(sg_, betaLocal_));
+    PetscCall(DMGlobalToLocal(sg_.Cells(), eps_, INSERT_VALUES, epsLocal_));
+    PetscCall(bc_.FillCellGhosts(sg_, epsLocal_));
+    PetscCall(pressure_.SetCoefficient(beta_, "flow: eps/rho"));
+    propertiesDirty_ = false;
+    propertyVersionDt_ = -1;  // the viscous matrix must be rebuilt
+  }
+  for (int d = 0; d < 3; ++d) {
+    PetscCall(DMGlobalToLocal(sg_.Face(d), u_[d], INSERT_VALUES, uLocal_[d]));
+    PetscCall(bc_.FillVelocityGhosts(sg_, d, uLocal_[d]));
+  }
+  PetscCall(DMGlobalToLocal(sg_.Cells(), p_, INSERT_VALUES, pLocal_));
+  PetscCall(bc_.FillCellGhosts(sg_, pLocal_));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode Flow::Step(PetscReal t, PetscReal dt) {
+  PetscFunctionBeginUser;
+  PetscCall(UpdateLocals(propertiesDirty_));
+  if (implicitViscosity_ && propertyVersionDt_ != dt) {
+    PetscCall(viscous_.Assemble(dt, epsLocal_, betaLocal_, emLocal_));
+    propertyVersionDt_ = dt;
+  }
+  PetscCall(ComputeExplicitTerms());
+  PetscCall(Predict(t, dt));
+  PetscCall(Project(dt, nullptr));
+  for (int d = 0; d < 3; ++d) std::swap(H_[d], Hold_[d]);
+  haveOld_ = PETSC_TRUE;
+  dtOld_   = dt;
+  last_.pressureIterations   = pressure_.Iterations();
+  last_.pressureResidual     = pressure_.ResidualNorm();
+  last_.preconditionerReused = pressure_.PreconditionerReused();
+  last_.viscousIterations    = implicitViscosity_ ? viscous_.Iterations() : 0;
+  PetscReal rate = 0;
+  for (int d = 0; d < 3; ++d) {
+    PetscReal m;
+    PetscCall(VecNorm(u_[d], NORM_INFINITY, &m));
+    rate += m / grid_->Spacing()[d];
+  }
+  last_.cfl = rate * dt;
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode Flow::ProjectInitialVelocity() {
+  PetscFunctionBeginUser;
+  PetscCall(UpdateLocals(propertiesDirty_));
+  for (int d = 0; d < 3; ++d) PetscCall(bc_.ApplyNormal(sg_, d, u_[d]));
+  // A unit "time step": phi is a potential, not a pressure; the pressure is left unchanged.
+  Vec keep;
+  PetscCall(VecDuplicate(p_, &keep));
+  PetscCall(VecCopy(p_, keep));
+  PetscCall(Project(1, nullptr));
+  PetscCall(VecCopy(keep, p_));
+  PetscCall(VecDestroy(&keep));
+  PetscCall(VecSet(phi_, 0));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode Flow::StableTimeStep(PetscReal *dt, std::string *basis) const {
+  PetscReal rate = 0;
+
+  PetscFunctionBeginUser;
+  const PetscReal *h = grid_->Spacing();
+  for (int d = 0; d < 3; ++d) {
+    PetscReal m, boundary = 0;  // a moving wall or an inflow moves the fluid next to it
+    for (int f = 0; f < 6; ++f) boundary = std::fmax(boundary, std::fabs(bc_.Face(f).velocity[d]));
+    PetscCall(VecNorm(u_[d], NORM_INFINITY, &m));
+    rate += std::fmax(m, boundary) / h[d];
+  }
+  *dt    = rate > 0 ? cfl_ / rate : PETSC_MAX_REAL;
+  *basis = "flow convective CFL " + std::to_string((double)cfl_);
+  const PetscReal g = std::sqrt(gravity_[0] * gravity_[0] + gravity_[1] * gravity_[1] + gravity_[2] * gravity_[2]);
+  const PetscReal hmin = std::fmin(h[0], std::fmin(h[1], h[2]));
+  if (g > 0 && std::sqrt(cfl_ * hmin / g) < *dt) {
+    // From rest, gravity reaches |u| dt = cfl h within the step.
+    *dt    = std::sqrt(cfl_ * hmin / g);
+    *basis = "flow gravity (sqrt(cfl h/|g|))";
+  }
+  if (!implicitViscosity_) {
+    // AB2 is stable for diffusion while nu dt sum(4/h^2) <= 1.
+    Vec       nu;
+    PetscReal numax;
+    PetscCall(VecDuplicate(mu_, &nu));
+    PetscCall(VecPointwiseDivide(nu, mu_, rho_));
+    PetscCall(VecMax(nu, nullptr, &numax));
+    PetscCall(VecDestroy(&nu));
+    const PetscReal lim = 1 / (numax * 4 * (1 / (h[0] * h[0]) + 1 / (h[1] * h[1]) + 1 / (h[2] * h[2])));
+    if (lim < *dt) {
+      *dt    = lim;
+      *basis = "flow explicit viscosity";
+    }
+  }
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode Flow::Summarize(FlowSummary *s) const {
+  LocalField u, beta, eps;
+  PetscInt   st[3], n[3];
+  PetscReal  ke = 0, mx = 0;
+
+  PetscFunctionBeginUser;
+  *s = last_;
+  const PetscReal *h = grid_->Spacing();
+  const PetscReal  V = h[0] * h[1] * h[2];
+  PetscCall(sg_.GetLocal(3, betaLocal_, &beta));
+  PetscCall(sg_.GetLocal(3, epsLocal_, &eps));
+  for (int d = 0; d < 3; ++d) {
+    PetscCall(sg_.GetGlobal(d, u_[d], &u));
+    sg_.Owned(d, st, n);
+    const PetscInt last = sg_.Points(d, d) - 1;
+    for (PetscInt k = st[2]; k < st[2] + n[2]; ++k)
+      for (PetscInt j = st[1]; j < st[1] + n[1]; ++j)
+        for (PetscInt i = st[0]; i < st[0] + n[0]; ++i) {
+          PetscInt        q[3] = {i, j, k}, cm[3] = {i, j, k};
+          cm[d] -= 1;
+          const PetscReal v = PetscRealPart(u.at(q));
+          mx = std::fmax(mx, std::fabs(v));
+          const PetscReal bL = PetscRealPart(beta.at(cm)), bR = PetscRealPart(beta.at(q));
+          const PetscReal eF = 0.5 * PetscRealPart(eps.at(cm) + eps.at(q)), bF = 2 * bL * bR / (bL + bR);
+          // A boundary face carries half a control volume.
+          const PetscReal w = (!grid_->Periodic(d) && (q[d] == 0 || q[d] == last)) ? 0.5 : 1;
+          ke += w * 0.5 * eF * eF / bF * v * v * V;
+        }
+    PetscCall(sg_.RestoreGlobal(d, u_[d], &u));
+  }
+  PetscCall(sg_.RestoreLocal(3, epsLocal_, &eps));
+  PetscCall(sg_.RestoreLocal(3, betaLocal_, &beta));
+  PetscCallMPI(MPI_Allreduce(&ke, &s->kinetic, 1, MPIU_REAL, MPIU_SUM, grid_->Comm()));
+  PetscCallMPI(MPI_Allreduce(&mx, &s->maxSpeed, 1, MPIU_REAL, MPI_MAX, grid_->Comm()));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode Flow::View(PetscViewer viewer) const {
+  PetscFunctionBeginUser;
+  PetscCall(PetscViewerASCIIPrintf(viewer, "flow: density %g kg/m^3, viscosity %g Pa s (Re per m/s and m: %g), advection %s (TVD), viscosity %s, CFL %g\n",
+                                   (double)density_, (double)viscosity_, (double)(density_ / viscosity_), limiterName_.c_str(),
+                                   implicitViscosity_ ? "implicit" : "explicit", (double)cfl_));
+  PetscCall(bc_.View(viewer));
+  PetscCall(pressure_.View(viewer));
+  if (implicitViscosity_) PetscCall(viscous_.View(viewer));
+  PetscFunctionReturn(0);
+}
+
+// Everything the next step's arithmetic depends on: velocity, pressure, the last increment (the
+// pressure solve's initial guess), the explicit terms of the previous step (AB2), its dt, the
+// material fields, and the pressure preconditioner's reference coefficient.
+PetscErrorCode Flow::Save(PetscViewer viewer) const {
+  Vec scalars;
+
+  PetscFunctionBeginUser;
+  for (int d = 0; d < 3; ++d) PetscCall(VecView(u_[d], viewer));
+  for (int d = 0; d < 3; ++d) PetscCall(VecView(Hold_[d], viewer));
+  for (Vec v : {p_, phi_, rho_, mu_, eps_}) PetscCall(VecView(v, viewer));
+  PetscMPIInt rank;
+  PetscCallMPI(MPI_Comm_rank(grid_->Comm(), &rank));
+  PetscCall(VecCreateMPI(grid_->Comm(), rank == 0 ? 2 : 0, 2, &scalars));
+  PetscCall(PetscObjectSetName((PetscObject)scalars, "flow_scheme_state"));
+  if (rank == 0) {
+    PetscCall(VecSetValue(scalars, 0, dtOld_, INSERT_VALUES));
+    PetscCall(VecSetValue(scalars, 1, haveOld_ ? 1.0 : 0.0, INSERT_VALUES));
+  }
+  PetscCall(VecAssemblyBegin(scalars));
+  PetscCall(VecAssemblyEnd(scalars));
+  PetscCall(VecView(scalars, viewer));
+  PetscCall(VecDestroy(&scalars));
+  PetscCall(pressure_.Save(viewer));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode Flow::Load(PetscViewer viewer) {
+  Vec scalars;
+
+  PetscFunctionBeginUser;
+  for (int d = 0; d < 3; ++d) PetscCall(VecLoad(u_[d], viewer));
+  for (int d = 0; d < 3; ++d) PetscCall(VecLoad(Hold_[d], viewer));
+  for (Vec v : {p_, phi_, rho_, mu_, eps_}) PetscCall(VecLoad(v, viewer));
+  PetscMPIInt rank;
+  PetscCallMPI(MPI_Comm_rank(grid_->Comm(), &rank));
+  PetscCall(VecCreateMPI(grid_->Comm(), rank == 0 ? 2 : 0, 2, &scalars));
+  PetscCall(PetscObjectSetName((PetscObject)scalars, "flow_scheme_state"));
+  PetscCall(VecLoad(scalars, viewer));
+  PetscReal s[2] = {0, 0};
+  if (rank == 0) {
+    const PetscScalar *a;
+    PetscCall(VecGetArrayRead(scalars, &a));
+    s[0] = PetscRealPart(a[0]);
+    s[1] = PetscRealPart(a[1]);
+    PetscCall(VecRestoreArrayRead(scalars, &a));
+  }
+  PetscCallMPI(MPI_Bcast(s, 2, MPIU_REAL, 0, grid_->Comm()));
+  PetscCall(VecDestroy(&scalars));
+  dtOld_   = s[0];
+  haveOld_ = s[1] > 0 ? PETSC_TRUE : PETSC_FALSE;
+  // The fields above are the material the preconditioner reference is compared with: set them up
+  // first (this builds a preconditioner from the current coefficient), then restore the saved
+  // reference, which rebuilds the one the saved run was using.
+  PetscCall(UpdateLocals(true));
+  PetscCall(pressure_.Load(viewer));
+  PetscCall(pressure_.SetCoefficient(beta_, "flow: eps/rho"));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode Flow::Destroy() {
+  PetscFunctionBeginUser;
+  for (int d = 0; d < 3; ++d)
+    for (Vec *v : {&u_[d], &uLocal_[d], &H_[d], &Hold_[d], &L_[d], &rhsFace_[d]}) PetscCall(VecDestroy(v));
+  for (Vec *v : {&rho_, &mu_, &eps_, &p_, &phi_, &beta_, &divRhs_, &epsLocal_, &betaLocal_, &emLocal_, &pLocal_, &phiLocal_}) PetscCall(VecDestroy(v));
+  PetscCall(pressure_.Destroy());
+  if (implicitViscosity_) PetscCall(viscous_.Destroy());
+  PetscCall(sg_.Destroy());
+  PetscFunctionReturn(0);
+}
+
+}  // namespace vofdem

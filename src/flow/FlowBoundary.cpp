@@ -1,0 +1,238 @@
+#include "vofdem/flow/FlowBoundary.hpp"
+
+#include "vofdem/core/Options.hpp"
+#include "vofdem/core/Runtime.hpp"
+
+#include <cmath>
+#include <string>
+#include <vector>
+
+namespace vofdem {
+
+const char *FlowBoundary::FaceName(int face) {
+  static const char *names[6] = {"xlo", "xhi", "ylo", "yhi", "zlo", "zhi"};
+  return names[face];
+}
+
+const char *FlowBoundary::TypeName(FlowBoundaryType t) {
+  switch (t) {
+  case FlowBoundaryType::Wall: return "wall";
+  case FlowBoundaryType::Slip: return "slip";
+  case FlowBoundaryType::Inflow: return "inflow";
+  case FlowBoundaryType::Outflow: return "outflow";
+  default: return "periodic";
+  }
+}
+
+bool FlowBoundary::HasOutflow() const {
+  for (const FlowFace &f : face_)
+    if (f.type == FlowBoundaryType::Outflow) return true;
+  return false;
+}
+
+PetscErrorCode FlowBoundary::SetFromOptions(const Grid &grid) {
+  PetscFunctionBeginUser;
+  grid_    = &grid;
+  MPI_Comm comm = grid.Comm();
+  PetscOptionsBegin(comm, "flow_", "Flow: velocity boundary conditions per box face", "Flow");
+  {
+    OptionReader opt(PetscOptionsObject);
+    for (int f = 0; f < 6; ++f) {
+      const int   d        = f / 2;
+      const bool  periodic = grid.Periodic(d);
+      FlowFace   &F        = face_[f];
+      F.type               = periodic ? FlowBoundaryType::Periodic : FlowBoundaryType::Wall;
+      const std::string base = std::string("-bc_") + FaceName(f);
+      std::vector<std::string> chosen = {TypeName(F.type)};
+      PetscBool                given = PETSC_FALSE, vGiven = PETSC_FALSE, pGiven = PETSC_FALSE, prGiven = PETSC_FALSE;
+      PetscCall(opt.NameList(base.c_str(), "Boundary of this box face: wall (no-slip, may slide), slip, inflow, outflow (pressure), periodic (only with -grid_periodic)",
+                             {"wall", "slip", "inflow", "outflow", "periodic"}, &chosen, &given));
+      if (chosen.size() != 1) VofdemInputError(comm, "option -flow%s: give one boundary type", base.c_str());
+      const std::string &t = chosen[0];
+      F.type = t == "wall" ? FlowBoundaryType::Wall : t == "slip" ? FlowBoundaryType::Slip : t == "inflow" ? FlowBoundaryType::Inflow
+             : t == "outflow" ? FlowBoundaryType::Outflow : FlowBoundaryType::Periodic;
+      if (periodic != (F.type == FlowBoundaryType::Periodic))
+        VofdemInputError(comm, "option -flow%s: '%s' on a face that is %speriodic (-grid_periodic)", base.c_str(), t.c_str(), periodic ? "" : "not ");
+      PetscCall(opt.RealVector((base + "_velocity").c_str(), "Velocity of a wall (tangential only) or of an inflow", "m/s", F.velocity, 3, RealRange::Any(), &vGiven));
+      std::vector<std::string> profile = {"uniform"};
+      PetscCall(opt.NameList((base + "_profile").c_str(), "Inflow profile: uniform, or parabolic (the velocity given is the centre value; zero at the face's edges)",
+                             {"uniform", "parabolic"}, &profile, &prGiven));
+      if (profile.size() != 1) VofdemInputError(comm, "option -flow%s_profile: give one profile", base.c_str());
+      F.parabolic = profile[0] == "parabolic";
+      PetscCall(opt.Real((base + "_pressure").c_str(), "Pressure of an outflow face", "Pa", &F.pressure, RealRange::Any(), &pGiven));
+      if (vGiven && (F.type == FlowBoundaryType::Slip || F.type == FlowBoundaryType::Outflow || F.type == FlowBoundaryType::Periodic))
+        VofdemInputError(comm, "option -flow%s_velocity: a %s face takes no velocity (only wall and inflow)", base.c_str(), t.c_str());
+      if (prGiven && F.type != FlowBoundaryType::Inflow) VofdemInputError(comm, "option -flow%s_profile: only an inflow face has a profile", base.c_str());
+      if (pGiven && F.type != FlowBoundaryType::Outflow) VofdemInputError(comm, "option -flow%s_pressure: only an outflow face has a pressure", base.c_str());
+      if (F.type == FlowBoundaryType::Wall && F.velocity[d] != 0)
+        VofdemInputError(comm, "option -flow%s_velocity: a wall cannot move along its normal (%c component %g m/s); use inflow", base.c_str(), "xyz"[d],
+                         (double)F.velocity[d]);
+      if (F.type == FlowBoundaryType::Inflow) {
+        const PetscReal inward = (f % 2 ? -1 : 1) * F.velocity[d];
+        if (!(inward > 0))
+          VofdemInputError(comm, "option -flow%s_velocity: an inflow must point into the box (%c component %g m/s)", base.c_str(), "xyz"[d], (double)F.velocity[d]);
+      }
+    }
+  }
+  PetscOptionsEnd();
+  bool inflow = false;
+  for (const FlowFace &F : face_) inflow = inflow || F.type == FlowBoundaryType::Inflow;
+  // With no outflow the volume in the box cannot change: an inflow would have nowhere to go (the
+  // pressure equation would have no solution).
+  if (inflow && !HasOutflow())
+    VofdemInputError(comm, "options -flow_bc_*: an inflow face but no outflow face: the fluid in a closed box cannot grow (make a face outflow)");
+  PetscFunctionReturn(0);
+}
+
+PetscReal FlowBoundary::Prescribed(int f, int d, const PetscReal x[3]) const {
+  const FlowFace &F = face_[f];
+  if (F.type == FlowBoundaryType::Wall) return f / 2 == d ? 0 : F.velocity[d];
+  if (F.type != FlowBoundaryType::Inflow) return 0;
+  PetscReal v = F.velocity[d];
+  if (F.parabolic) {
+    const PetscReal *lo = grid_->Lower(), *hi = grid_->Upper();
+    for (int e = 0; e < 3; ++e)
+      if (e != f / 2 && !grid_->Periodic(e)) {
+        const PetscReal s = (x[e] - lo[e]) / (hi[e] - lo[e]);
+        v *= 4 * s * (1 - s);
+      }
+  }
+  return v;
+}
+
+PetscErrorCode FlowBoundary::FillVelocityGhosts(const StaggeredGrid &sg, int d, Vec local) const {
+  LocalField u;
+  PetscInt   gs[3], gm[3];
+
+  PetscFunctionBeginUser;
+  PetscCall(DMDAGetGhostCorners(sg.Face(d), &gs[0], &gs[1], &gs[2], &gm[0], &gm[1], &gm[2]));
+  PetscCall(sg.GetLocal(d, local, &u));
+  const PetscReal *lo = grid_->Lower(), *h = grid_->Spacing();
+  for (int e = 0; e < 3; ++e) {
+    if (grid_->Periodic(e)) continue;
+    const PetscInt last = sg.Points(d, e) - 1;  // last point along e
+    for (int side = 0; side < 2; ++side) {
+      const int       f = 2 * e + side;
+      const FlowFace &F = face_[f];
+      // Ghost indices of this side that this rank holds.
+      const PetscInt a = side ? last + 1 : gs[e], b = side ? gs[e] + gm[e] : 0;
+      for (PetscInt g = a; g < b; ++g) {
+        const PetscInt m = side ? g - last : -g;  // 1, 2: distance in points from the boundary point/cell
+        PetscInt       mirror;
+        if (d == e) mirror = side ? last - m : m;        // faces: the boundary face is index 0 / last
+        else mirror = side ? last - m + 1 : m - 1;       // cells: mirror about the face
+        PetscInt q[3], r[3];
+        for (q[(e + 1) % 3] = gs[(e + 1) % 3]; q[(e + 1) % 3] < gs[(e + 1) % 3] + gm[(e + 1) % 3]; ++q[(e + 1) % 3])
+          for (q[(e + 2) % 3] = gs[(e + 2) % 3]; q[(e + 2) % 3] < gs[(e + 2) % 3] + gm[(e + 2) % 3]; ++q[(e + 2) % 3]) {
+            q[e] = g;
+            for (int c = 0; c < 3; ++c) r[c] = q[c];
+            r[e] = mirror;
+            const PetscScalar inner = u.at(r);
+            PetscScalar       value;
+            if (d == e) {
+              if (F.type == FlowBoundaryType::Wall) value = inner;                 // even
+              else if (F.type == FlowBoundaryType::Slip) value = -inner;           // odd about 0
+              else { r[e] = side ? last : 0; value = u.at(r); }                    // zero gradient
+            } else if (F.type == FlowBoundaryType::Wall || F.type == FlowBoundaryType::Inflow) {
+              PetscReal x[3];
+              for (int c = 0; c < 3; ++c) x[c] = lo[c] + (c == d ? q[c] : q[c] + 0.5) * h[c];
+              x[e] = side ? grid_->Upper()[e] : lo[e];
+              value = 2 * Prescribed(f, d, x) - inner;                             // odd about the prescribed value
+            } else value = inner;                                                  // slip, outflow: zero gradient
+            u.at(q) = value;
+          }
+      }
+    }
+  }
+  PetscCall(sg.RestoreLocal(d, local, &u));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode FlowBoundary::FillCellGhosts(const StaggeredGrid &sg, Vec local) const {
+  LocalField c;
+  PetscInt   gs[3], gm[3];
+
+  PetscFunctionBeginUser;
+  PetscCall(DMDAGetGhostCorners(sg.Cells(), &gs[0], &gs[1], &gs[2], &gm[0], &gm[1], &gm[2]));
+  PetscCall(sg.GetLocal(3, local, &c));
+  for (int e = 0; e < 3; ++e) {
+    if (grid_->Periodic(e)) continue;
+    const PetscInt last = grid_->Cells()[e] - 1;
+    for (int side = 0; side < 2; ++side) {
+      const PetscInt a = side ? last + 1 : gs[e], b = side ? gs[e] + gm[e] : 0;
+      for (PetscInt g = a; g < b; ++g) {
+        const PetscInt mirror = side ? 2 * last + 1 - g : -g - 1;
+        PetscInt       q[3], r[3];
+        for (q[(e + 1) % 3] = gs[(e + 1) % 3]; q[(e + 1) % 3] < gs[(e + 1) % 3] + gm[(e + 1) % 3]; ++q[(e + 1) % 3])
+          for (q[(e + 2) % 3] = gs[(e + 2) % 3]; q[(e + 2) % 3] < gs[(e + 2) % 3] + gm[(e + 2) % 3]; ++q[(e + 2) % 3]) {
+            q[e] = g;
+            for (int k = 0; k < 3; ++k) r[k] = q[k];
+            r[e]    = mirror;
+            c.at(q) = c.at(r);
+          }
+      }
+    }
+  }
+  PetscCall(sg.RestoreLocal(3, local, &c));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode FlowBoundary::ApplyNormal(const StaggeredGrid &sg, int d, Vec global) const {
+  LocalField u;
+  PetscInt   s[3], n[3];
+
+  PetscFunctionBeginUser;
+  if (grid_->Periodic(d)) PetscFunctionReturn(0);
+  sg.Owned(d, s, n);
+  const PetscInt   last = sg.Points(d, d) - 1;
+  const PetscReal *lo = grid_->Lower(), *h = grid_->Spacing();
+  PetscCall(sg.GetGlobal(d, global, &u));
+  for (int side = 0; side < 2; ++side) {
+    const PetscInt b = side ? last : 0;
+    if (b < s[d] || b >= s[d] + n[d]) continue;
+    const FlowFace &F = face_[2 * d + side];
+    const PetscInt  inner = side ? last - 1 : 1;
+    PetscInt        q[3];
+    for (q[(d + 1) % 3] = s[(d + 1) % 3]; q[(d + 1) % 3] < s[(d + 1) % 3] + n[(d + 1) % 3]; ++q[(d + 1) % 3])
+      for (q[(d + 2) % 3] = s[(d + 2) % 3]; q[(d + 2) % 3] < s[(d + 2) % 3] + n[(d + 2) % 3]; ++q[(d + 2) % 3]) {
+        q[d] = b;
+        if (F.type == FlowBoundaryType::Outflow) {
+          PetscInt r[3] = {q[0], q[1], q[2]};
+          r[d]          = inner;
+          // The inner face may be on the previous rank only when that rank has a single cell,
+          // which StaggeredGrid forbids (2 cells per rank at least).
+          u.at(q) = u.at(r);
+        } else {
+          PetscReal x[3];
+          for (int c = 0; c < 3; ++c) x[c] = lo[c] + (c == d ? q[c] : q[c] + 0.5) * h[c];
+          u.at(q) = Prescribed(2 * d + side, d, x);
+        }
+      }
+  }
+  PetscCall(sg.RestoreGlobal(d, global, &u));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode FlowBoundary::View(PetscViewer viewer) const {
+  std::string text;
+
+  PetscFunctionBeginUser;
+  char buf[160];
+  for (int f = 0; f < 6; ++f) {
+    const FlowFace &F = face_[f];
+    std::snprintf(buf, sizeof buf, "%s%s %s", f ? ", " : "", FaceName(f), TypeName(F.type));
+    text += buf;
+    if ((F.type == FlowBoundaryType::Wall && (F.velocity[0] != 0 || F.velocity[1] != 0 || F.velocity[2] != 0)) || F.type == FlowBoundaryType::Inflow) {
+      std::snprintf(buf, sizeof buf, " (%g, %g, %g) m/s%s", (double)F.velocity[0], (double)F.velocity[1], (double)F.velocity[2], F.parabolic ? " parabolic" : "");
+      text += buf;
+    }
+    if (F.type == FlowBoundaryType::Outflow) {
+      std::snprintf(buf, sizeof buf, " %g Pa", (double)F.pressure);
+      text += buf;
+    }
+  }
+  PetscCall(PetscViewerASCIIPrintf(viewer, "flow boundaries: %s\n", text.c_str()));
+  PetscFunctionReturn(0);
+}
+
+}  // namespace vofdem

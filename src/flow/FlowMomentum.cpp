@@ -1,0 +1,204 @@
+// The momentum predictor of Flow (Flow.hpp): explicit terms at time level n and the provisional
+// velocity u*. PHYSICS.md (F2); discretisation on the MAC grid described in Flow.hpp.
+#include "vofdem/flow/Flow.hpp"
+
+namespace vofdem {
+
+namespace {
+
+struct TermFields {
+  LocalField u[3];      // ghosted velocities
+  LocalField em, beta, eps;  // ghosted cell fields: eps*mu, eps/rho, eps
+  LocalField H, L;      // outputs (global, component d)
+};
+
+// Explicit terms for component d at the owned faces [s, s+n) that are not boundary faces:
+//   H = -(div(U u) - u div U) + div(eps mu (grad U)^T)_d / (eps rho)_f     (m/s^2)
+//   L = div(eps mu grad u_d)                                               (N/m^3, unscaled)
+// Control volume of a d-face: between the centres of its two cells along d, one cell across in
+// the other directions. Its faces normal to d sit at cell centres, the others on cell edges.
+template <Limiter LIM>
+void MomentumTerms(int d, const TermFields &F, const PetscInt s[3], const PetscInt n[3], const PetscReal h[3]) {
+  const LocalField &ud = F.u[d];
+  for (PetscInt k = s[2]; k < s[2] + n[2]; ++k)
+    for (PetscInt j = s[1]; j < s[1] + n[1]; ++j)
+      for (PetscInt i = s[0]; i < s[0] + n[0]; ++i) {
+        const PetscInt q[3] = {i, j, k};
+        PetscInt       cm[3] = {i, j, k};
+        cm[d] -= 1;
+        const PetscReal uP = ud.at(q);
+        PetscReal       adv = 0, lap = 0, trans = 0;
+        for (int e = 0; e < 3; ++e) {
+          PetscInt qp[3] = {i, j, k}, qm[3] = {i, j, k}, qpp[3] = {i, j, k}, qmm[3] = {i, j, k};
+          qp[e] += 1, qm[e] -= 1, qpp[e] += 2, qmm[e] -= 2;
+          const PetscReal uE = ud.at(qp), uW = ud.at(qm), uEE = ud.at(qpp), uWW = ud.at(qmm);
+          PetscReal       Up, Um, emP, emM, tP = 0, tM = 0;
+          if (e == d) {
+            Up  = 0.5 * (uP + uE);
+            Um  = 0.5 * (uW + uP);
+            emP = PetscRealPart(F.em.at(q));
+            emM = PetscRealPart(F.em.at(cm));
+          } else {
+            // advecting u_e on the edges: e-faces q_e+1 (plus) and q_e (minus), cells q_d-1 and q_d
+            PetscInt a[3] = {i, j, k}, am[3] = {i, j, k}, bm[3] = {i, j, k};
+            a[e] += 1;
+            am[e] += 1;
+            am[d] -= 1;
+            bm[d] -= 1;
+            const LocalField &ue = F.u[e];
+            const PetscReal   uea = ue.at(a), ueam = ue.at(am), ueb = ue.at(q), uebm = ue.at(bm);
+            Up = 0.5 * (uea + ueam);
+            Um = 0.5 * (ueb + uebm);
+            PetscInt cp[3] = {i, j, k}, cpm[3] = {i, j, k}, cmm[3] = {i, j, k}, cmd[3] = {i, j, k};
+            cp[e] += 1;             // cell across the plus edge
+            cpm[e] += 1, cpm[d] -= 1;
+            cmm[e] -= 1;            // cell across the minus edge
+            cmd[e] -= 1, cmd[d] -= 1;
+            emP = 0.25 * PetscRealPart(F.em.at(q) + F.em.at(cm) + F.em.at(cp) + F.em.at(cpm));
+            emM = 0.25 * PetscRealPart(F.em.at(q) + F.em.at(cm) + F.em.at(cmm) + F.em.at(cmd));
+            tP  = emP * (uea - ueam) / h[d];
+            tM  = emM * (ueb - uebm) / h[d];
+          }
+          const PetscReal fP = Up >= 0 ? LimitedFace<LIM>(uW, uP, uE) : LimitedFace<LIM>(uEE, uE, uP);
+          const PetscReal fM = Um >= 0 ? LimitedFace<LIM>(uWW, uW, uP) : LimitedFace<LIM>(uE, uP, uW);
+          adv += ((Up * fP - Um * fM) - uP * (Up - Um)) / h[e];
+          const PetscReal g = (emP * (uE - uP) - emM * (uP - uW)) / (h[e] * h[e]);
+          lap += g;
+          trans += e == d ? g : (tP - tM) / h[e];
+        }
+        const PetscReal bL = PetscRealPart(F.beta.at(cm)), bR = PetscRealPart(F.beta.at(q));
+        const PetscReal eF = 0.5 * PetscRealPart(F.eps.at(cm) + F.eps.at(q)), bF = 2 * bL * bR / (bL + bR);
+        F.H.at(q) = -adv + trans * bF / (eF * eF);  // (eps rho)_f = eps_f^2 / b_f
+        F.L.at(q) = lap;
+      }
+}
+
+}  // namespace
+
+PetscErrorCode Flow::ComputeExplicitTerms() {
+  TermFields F;
+  PetscInt   s[3], n[3];
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscLogEventBegin(evExplicit_, 0, 0, 0, 0));
+  for (int d = 0; d < 3; ++d) PetscCall(sg_.GetLocal(d, uLocal_[d], &F.u[d]));
+  PetscCall(sg_.GetLocal(3, emLocal_, &F.em));
+  PetscCall(sg_.GetLocal(3, betaLocal_, &F.beta));
+  PetscCall(sg_.GetLocal(3, epsLocal_, &F.eps));
+  const PetscReal *h = grid_->Spacing();
+  for (int d = 0; d < 3; ++d) {
+    PetscCall(VecSet(H_[d], 0));
+    PetscCall(VecSet(L_[d], 0));
+    PetscCall(sg_.GetGlobal(d, H_[d], &F.H));
+    PetscCall(sg_.GetGlobal(d, L_[d], &F.L));
+    sg_.Owned(d, s, n);
+    if (!grid_->Periodic(d)) {  // boundary faces of this component are set by the boundary conditions
+      const PetscInt last = sg_.Points(d, d) - 1;
+      const PetscInt a = std::max(s[d], (PetscInt)1), b = std::min(s[d] + n[d], last);
+      s[d] = a;
+      n[d] = std::max(b - a, (PetscInt)0);
+    }
+    switch (limiter_) {
+    case Limiter::Upwind: MomentumTerms<Limiter::Upwind>(d, F, s, n, h); break;
+    case Limiter::Central: MomentumTerms<Limiter::Central>(d, F, s, n, h); break;
+    case Limiter::Minmod: MomentumTerms<Limiter::Minmod>(d, F, s, n, h); break;
+    case Limiter::VanLeer: MomentumTerms<Limiter::VanLeer>(d, F, s, n, h); break;
+    case Limiter::MC: MomentumTerms<Limiter::MC>(d, F, s, n, h); break;
+    case Limiter::Superbee: MomentumTerms<Limiter::Superbee>(d, F, s, n, h); break;
+    case Limiter::Koren: MomentumTerms<Limiter::Koren>(d, F, s, n, h); break;
+    }
+    PetscCall(sg_.RestoreGlobal(d, L_[d], &F.L));
+    PetscCall(sg_.RestoreGlobal(d, H_[d], &F.H));
+  }
+  PetscCall(sg_.RestoreLocal(3, epsLocal_, &F.eps));
+  PetscCall(sg_.RestoreLocal(3, betaLocal_, &F.beta));
+  PetscCall(sg_.RestoreLocal(3, emLocal_, &F.em));
+  for (int d = 0; d < 3; ++d) PetscCall(sg_.RestoreLocal(d, uLocal_[d], &F.u[d]));
+  PetscCall(PetscLogEventEnd(evExplicit_, 0, 0, 0, 0));
+  PetscFunctionReturn(0);
+}
+
+// u* from u^n (Flow.hpp). With implicit viscosity the rhs of the Crank-Nicolson system is
+//   (eps rho)_f [u^n/dt + AB2(H) + g + f^{n+1/2} - (1/rho)_f G p] + 1/2 L u^n + (boundary part)
+// and with explicit viscosity L/(eps rho)_f joins H in the AB2 extrapolation.
+PetscErrorCode Flow::Predict(PetscReal t, PetscReal dt) {
+  LocalField u, H, Ho, L, R, beta, eps, p;
+  PetscInt   s[3], n[3];
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscLogEventBegin(evPredict_, 0, 0, 0, 0));
+  const PetscReal  r  = haveOld_ ? dt / dtOld_ : 0;  // first step: forward Euler in H
+  const PetscReal  c1 = 1 + 0.5 * r, c0 = -0.5 * r;
+  const PetscReal *h = grid_->Spacing(), *lo = grid_->Lower();
+  PetscCall(sg_.GetLocal(3, betaLocal_, &beta));
+  PetscCall(sg_.GetLocal(3, epsLocal_, &eps));
+  PetscCall(sg_.GetLocal(3, pLocal_, &p));
+  for (int d = 0; d < 3; ++d) {
+    if (!implicitViscosity_) {
+      // L joins H: H := H + L/(eps rho)_f, so that the history holds the whole explicit term.
+      LocalField Hd, Ld;
+      PetscCall(sg_.GetGlobal(d, H_[d], &Hd));
+      PetscCall(sg_.GetGlobal(d, L_[d], &Ld));
+      sg_.Owned(d, s, n);
+      for (PetscInt k = s[2]; k < s[2] + n[2]; ++k)
+        for (PetscInt j = s[1]; j < s[1] + n[1]; ++j)
+          for (PetscInt i = s[0]; i < s[0] + n[0]; ++i) {
+            PetscInt q[3] = {i, j, k}, cm[3] = {i, j, k};
+            cm[d] -= 1;
+            const PetscReal bL = PetscRealPart(beta.at(cm)), bR = PetscRealPart(beta.at(q));
+            const PetscReal eF = 0.5 * PetscRealPart(eps.at(cm) + eps.at(q)), bF = 2 * bL * bR / (bL + bR);
+            Hd.at(q) += Ld.at(q) * bF / (eF * eF);
+          }
+      PetscCall(sg_.RestoreGlobal(d, L_[d], &Ld));
+      PetscCall(sg_.RestoreGlobal(d, H_[d], &Hd));
+    }
+    PetscCall(sg_.GetGlobal(d, u_[d], &u));
+    PetscCall(sg_.GetGlobal(d, H_[d], &H));
+    PetscCall(sg_.GetGlobal(d, haveOld_ ? Hold_[d] : H_[d], &Ho));
+    PetscCall(sg_.GetGlobal(d, L_[d], &L));
+    PetscCall(sg_.GetGlobal(d, rhsFace_[d], &R));
+    sg_.Owned(d, s, n);
+    const PetscInt last = sg_.Points(d, d) - 1;
+    for (PetscInt k = s[2]; k < s[2] + n[2]; ++k)
+      for (PetscInt j = s[1]; j < s[1] + n[1]; ++j)
+        for (PetscInt i = s[0]; i < s[0] + n[0]; ++i) {
+          PetscInt q[3] = {i, j, k}, cm[3] = {i, j, k};
+          if (!grid_->Periodic(d) && (q[d] == 0 || q[d] == last)) {
+            R.at(q) = u.at(q);  // identity rows of the viscous matrix; ApplyNormal sets the value
+            continue;
+          }
+          cm[d] -= 1;
+          const PetscReal bL = PetscRealPart(beta.at(cm)), bR = PetscRealPart(beta.at(q));
+          const PetscReal eF = 0.5 * PetscRealPart(eps.at(cm) + eps.at(q)), bF = 2 * bL * bR / (bL + bR);
+          const PetscReal invRho = bF / eF, epsRho = eF * eF / bF;
+          PetscReal       acc = c1 * PetscRealPart(H.at(q)) + c0 * PetscRealPart(Ho.at(q)) + gravity_[d];
+          acc -= invRho * PetscRealPart(p.at(q) - p.at(cm)) / h[d];
+          if (forcing_) {
+            PetscReal x[3];
+            for (int c = 0; c < 3; ++c) x[c] = lo[c] + (c == d ? q[c] : q[c] + 0.5) * h[c];
+            acc += forcing_(forcingCtx_, t + 0.5 * dt, x, d);
+          }
+          if (implicitViscosity_) R.at(q) = epsRho * (PetscRealPart(u.at(q)) / dt + acc) + 0.5 * PetscRealPart(L.at(q));
+          else R.at(q) = u.at(q) + dt * acc;
+        }
+    PetscCall(sg_.RestoreGlobal(d, rhsFace_[d], &R));
+    PetscCall(sg_.RestoreGlobal(d, L_[d], &L));
+    PetscCall(sg_.RestoreGlobal(d, haveOld_ ? Hold_[d] : H_[d], &Ho));
+    PetscCall(sg_.RestoreGlobal(d, H_[d], &H));
+    PetscCall(sg_.RestoreGlobal(d, u_[d], &u));
+    if (implicitViscosity_) {
+      PetscCall(VecAXPY(rhsFace_[d], 1, viscous_.BoundaryRhs(d)));
+      PetscCall(viscous_.Solve(d, rhsFace_[d], u_[d]));  // u^n is the initial guess
+    } else {
+      PetscCall(VecCopy(rhsFace_[d], u_[d]));
+    }
+    PetscCall(bc_.ApplyNormal(sg_, d, u_[d]));
+  }
+  PetscCall(sg_.RestoreLocal(3, pLocal_, &p));
+  PetscCall(sg_.RestoreLocal(3, epsLocal_, &eps));
+  PetscCall(sg_.RestoreLocal(3, betaLocal_, &beta));
+  PetscCall(PetscLogEventEnd(evPredict_, 0, 0, 0, 0));
+  PetscFunctionReturn(0);
+}
+
+}  // namespace vofdem

@@ -1,0 +1,106 @@
+// The projection of Flow (Flow.hpp): -div((eps/rho) G phi) = -div(eps u*)/dt with PressureSolver,
+// then u = u* - dt (1/rho)_f G phi and p += phi. PHYSICS.md (F1): div(eps U) = 0 (eps constant in time
+// until the coupling makes it move; its rate then joins the rhs).
+#include "vofdem/flow/Flow.hpp"
+
+#include <cmath>
+
+namespace vofdem {
+
+// rhsOut = scale * div(eps u) per cell (needs uLocal_ current); maxAbs = max |div(eps u)|.
+PetscErrorCode Flow::Divergence(Vec rhsOut, PetscReal scale, PetscReal *maxAbs) const {
+  LocalField u[3], eps, out;
+  PetscInt   s[3], n[3];
+  PetscReal  mx = 0;
+
+  PetscFunctionBeginUser;
+  for (int d = 0; d < 3; ++d) PetscCall(sg_.GetLocal(d, uLocal_[d], &u[d]));
+  PetscCall(sg_.GetLocal(3, epsLocal_, &eps));
+  if (rhsOut) PetscCall(sg_.GetGlobal(3, rhsOut, &out));
+  sg_.Owned(3, s, n);
+  const PetscReal *h = grid_->Spacing();
+  for (PetscInt k = s[2]; k < s[2] + n[2]; ++k)
+    for (PetscInt j = s[1]; j < s[1] + n[1]; ++j)
+      for (PetscInt i = s[0]; i < s[0] + n[0]; ++i) {
+        const PetscInt q[3] = {i, j, k};
+        PetscReal      div  = 0;
+        for (int d = 0; d < 3; ++d) {
+          PetscInt qp[3] = {i, j, k}, cm[3] = {i, j, k}, cp[3] = {i, j, k};
+          qp[d] += 1;
+          cm[d] -= 1;
+          cp[d] += 1;
+          // eps at the faces: mean of the two cells (the mirror ghost makes it the cell's own at the box)
+          const PetscReal eC = PetscRealPart(eps.at(q));
+          const PetscReal eM = 0.5 * (eC + PetscRealPart(eps.at(cm))), eP = 0.5 * (eC + PetscRealPart(eps.at(cp)));
+          div += (eP * PetscRealPart(u[d].at(qp)) - eM * PetscRealPart(u[d].at(q))) / h[d];
+        }
+        mx = std::fmax(mx, std::fabs(div));
+        if (rhsOut) out.at(q) = scale * div;
+      }
+  if (rhsOut) PetscCall(sg_.RestoreGlobal(3, rhsOut, &out));
+  PetscCall(sg_.RestoreLocal(3, epsLocal_, &eps));
+  for (int d = 0; d < 3; ++d) PetscCall(sg_.RestoreLocal(d, uLocal_[d], &u[d]));
+  PetscCallMPI(MPI_Allreduce(&mx, maxAbs, 1, MPIU_REAL, MPI_MAX, grid_->Comm()));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode Flow::Project(PetscReal dt, Vec *) {
+  LocalField u, phi, beta, eps;
+  PetscInt   s[3], n[3], gs[3], gm[3];
+  PetscReal  dummy;
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscLogEventBegin(evProject_, 0, 0, 0, 0));
+  for (int d = 0; d < 3; ++d) PetscCall(DMGlobalToLocal(sg_.Face(d), u_[d], INSERT_VALUES, uLocal_[d]));
+  PetscCall(Divergence(divRhs_, -1 / dt, &dummy));
+  PetscCall(pressure_.Solve(divRhs_, phi_));  // the previous increment is the initial guess
+  PetscCall(DMGlobalToLocal(sg_.Cells(), phi_, INSERT_VALUES, phiLocal_));
+  // Ghosts of phi at outflow faces: phi = 0 on the face (Dirichlet), odd reflection; the flux then
+  // equals PressureSolver's 2 beta_C (phi_C - 0)/h. Other non-periodic faces are not corrected.
+  PetscCall(DMDAGetGhostCorners(sg_.Cells(), &gs[0], &gs[1], &gs[2], &gm[0], &gm[1], &gm[2]));
+  PetscCall(sg_.GetLocal(3, phiLocal_, &phi));
+  for (int e = 0; e < 3; ++e)
+    for (int side = 0; side < 2; ++side) {
+      if (bc_.Face(2 * e + side).type != FlowBoundaryType::Outflow) continue;
+      const PetscInt g = side ? grid_->Cells()[e] : -1, inner = side ? g - 1 : 0;
+      if (g < gs[e] || g >= gs[e] + gm[e]) continue;
+      PetscInt q[3];
+      for (q[(e + 1) % 3] = gs[(e + 1) % 3]; q[(e + 1) % 3] < gs[(e + 1) % 3] + gm[(e + 1) % 3]; ++q[(e + 1) % 3])
+        for (q[(e + 2) % 3] = gs[(e + 2) % 3]; q[(e + 2) % 3] < gs[(e + 2) % 3] + gm[(e + 2) % 3]; ++q[(e + 2) % 3]) {
+          PetscInt r[3] = {q[0], q[1], q[2]};
+          q[e] = g;
+          r[e] = inner;
+          phi.at(q) = -phi.at(r);
+        }
+    }
+  PetscCall(sg_.GetLocal(3, betaLocal_, &beta));
+  PetscCall(sg_.GetLocal(3, epsLocal_, &eps));
+  const PetscReal *h = grid_->Spacing();
+  for (int d = 0; d < 3; ++d) {
+    PetscCall(sg_.GetGlobal(d, u_[d], &u));
+    sg_.Owned(d, s, n);
+    const PetscInt last = sg_.Points(d, d) - 1;
+    for (PetscInt k = s[2]; k < s[2] + n[2]; ++k)
+      for (PetscInt j = s[1]; j < s[1] + n[1]; ++j)
+        for (PetscInt i = s[0]; i < s[0] + n[0]; ++i) {
+          PetscInt q[3] = {i, j, k}, cm[3] = {i, j, k};
+          if (!grid_->Periodic(d) && (q[d] == 0 || q[d] == last) && bc_.Face(2 * d + (q[d] == last)).type != FlowBoundaryType::Outflow) continue;
+          cm[d] -= 1;
+          const PetscReal bL = PetscRealPart(beta.at(cm)), bR = PetscRealPart(beta.at(q));
+          const PetscReal eF = 0.5 * PetscRealPart(eps.at(cm) + eps.at(q)), bF = 2 * bL * bR / (bL + bR);
+          u.at(q) -= dt * bF / eF * (phi.at(q) - phi.at(cm)) / h[d];
+        }
+    PetscCall(sg_.RestoreGlobal(d, u_[d], &u));
+  }
+  PetscCall(sg_.RestoreLocal(3, epsLocal_, &eps));
+  PetscCall(sg_.RestoreLocal(3, betaLocal_, &beta));
+  PetscCall(sg_.RestoreLocal(3, phiLocal_, &phi));
+  PetscCall(VecAXPY(p_, 1, phi_));
+  // Monitor: the divergence left by the projection.
+  for (int d = 0; d < 3; ++d) PetscCall(DMGlobalToLocal(sg_.Face(d), u_[d], INSERT_VALUES, uLocal_[d]));
+  PetscCall(Divergence(nullptr, 1, &last_.maxDivergence));
+  PetscCall(PetscLogEventEnd(evProject_, 0, 0, 0, 0));
+  PetscFunctionReturn(0);
+}
+
+}  // namespace vofdem

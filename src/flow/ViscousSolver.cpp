@@ -1,0 +1,166 @@
+#include "vofdem/flow/ViscousSolver.hpp"
+
+#include "vofdem/core/Runtime.hpp"
+
+namespace vofdem {
+
+PetscErrorCode ViscousSolver::Create(const StaggeredGrid &sg, const FlowBoundary &bc) {
+  PetscFunctionBeginUser;
+  sg_ = &sg;
+  bc_ = &bc;
+  for (int d = 0; d < 3; ++d) {
+    PetscCall(DMCreateMatrix(sg.FaceMatrixDM(d), &A_[d]));
+    PetscCall(MatSetOption(A_[d], MAT_SYMMETRIC, PETSC_TRUE));
+    PetscCall(DMCreateGlobalVector(sg.Face(d), &bcRhs_[d]));
+    PetscCall(KSPCreate(sg.Base().Comm(), &ksp_[d]));
+    PetscCall(KSPSetOptionsPrefix(ksp_[d], "flow_viscous_"));
+    PetscCall(KSPSetOperators(ksp_[d], A_[d], A_[d]));
+    PetscCall(KSPSetType(ksp_[d], KSPCG));
+    PetscCall(KSPSetNormType(ksp_[d], KSP_NORM_UNPRECONDITIONED));
+    PetscCall(KSPSetTolerances(ksp_[d], 1e-10, 1e-300, PETSC_DEFAULT, 1000));
+    PetscCall(KSPSetInitialGuessNonzero(ksp_[d], PETSC_TRUE));
+    PC pc;
+    PetscCall(KSPGetPC(ksp_[d], &pc));
+    PetscCall(PCSetType(pc, PCJACOBI));
+  }
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode ViscousSolver::SetFromOptions() {
+  PetscFunctionBeginUser;
+  for (int d = 0; d < 3; ++d) PetscCall(KSPSetFromOptions(ksp_[d]));
+  PetscFunctionReturn(0);
+}
+
+// Rows as in Flow's explicit evaluation of div(eps mu grad u) (FlowMomentum.cpp), halved for
+// Crank-Nicolson: the same coefficients, so that the implicit and explicit halves are one operator.
+PetscErrorCode ViscousSolver::Assemble(PetscReal dt, Vec epsLocal, Vec betaLocal, Vec emLocal) {
+  LocalField eps, beta, em, rb;
+  PetscInt   s[3], n[3];
+
+  PetscFunctionBeginUser;
+  dt_ = dt;
+  const Grid      &g = sg_->Base();
+  const PetscReal *h = g.Spacing(), *lo = g.Lower();
+  PetscCall(sg_->GetLocal(3, epsLocal, &eps));
+  PetscCall(sg_->GetLocal(3, betaLocal, &beta));
+  PetscCall(sg_->GetLocal(3, emLocal, &em));
+  for (int d = 0; d < 3; ++d) {
+    PetscCall(MatZeroEntries(A_[d]));
+    PetscCall(VecSet(bcRhs_[d], 0));
+    PetscCall(sg_->GetGlobal(d, bcRhs_[d], &rb));
+    sg_->Owned(d, s, n);
+    const PetscInt lastFace = sg_->Points(d, d) - 1;
+    PetscInt       q[3];
+    for (q[2] = s[2]; q[2] < s[2] + n[2]; ++q[2])
+      for (q[1] = s[1]; q[1] < s[1] + n[1]; ++q[1])
+        for (q[0] = s[0]; q[0] < s[0] + n[0]; ++q[0]) {
+          MatStencil  row = {q[2], q[1], q[0], 0}, col[7];
+          PetscScalar val[7];
+          PetscInt    nc = 1;
+          const bool  boundary = !g.Periodic(d) && (q[d] == 0 || q[d] == lastFace);
+          if (boundary) {
+            col[0] = row;
+            val[0] = 1;
+            PetscCall(MatSetValuesStencil(A_[d], 1, &row, 1, col, val, INSERT_VALUES));
+            continue;
+          }
+          PetscInt cm[3] = {q[0], q[1], q[2]};
+          cm[d] -= 1;  // the cell below the face along d
+          const PetscReal bL = PetscRealPart(beta.at(cm)), bR = PetscRealPart(beta.at(q));
+          const PetscReal eF = 0.5 * PetscRealPart(eps.at(cm) + eps.at(q)), bF = 2 * bL * bR / (bL + bR);
+          PetscReal       diag = eF * eF / bF / dt, rhs = 0;
+          for (int e = 0; e < 3; ++e)
+            for (int side = 0; side < 2; ++side) {
+              PetscInt nb[3] = {q[0], q[1], q[2]};
+              nb[e] += side ? 1 : -1;
+              PetscReal a;  // eps*mu at the shared control-volume face, / h_e^2
+              if (e == d) {
+                const PetscInt *c = side ? q : cm;
+                a = PetscRealPart(em.at(c)) / (h[e] * h[e]);
+              } else {
+                // the four cells around the edge: q and cm, and both shifted along e
+                PetscInt c1[3] = {q[0], q[1], q[2]}, c3[3];
+                c1[e] += side ? 1 : -1;
+                for (int k = 0; k < 3; ++k) c3[k] = c1[k];
+                c3[d] -= 1;
+                a = 0.25 * PetscRealPart(em.at(q) + em.at(cm) + em.at(c1) + em.at(c3)) / (h[e] * h[e]);
+              }
+              a *= 0.5;  // Crank-Nicolson half
+              const bool outside = !g.Periodic(e) && (e == d ? (nb[e] == 0 || nb[e] == lastFace) : (nb[e] < 0 || nb[e] >= g.Cells()[e]));
+              if (!outside) {
+                col[nc] = {nb[2], nb[1], nb[0], 0};
+                val[nc++] = -a;
+                diag += a;
+                continue;
+              }
+              const int       f = 2 * e + side;
+              const FlowFace &F = bc_->Face(f);
+              PetscReal       x[3];
+              for (int k = 0; k < 3; ++k) x[k] = lo[k] + (k == d ? q[k] : q[k] + 0.5) * h[k];
+              if (e == d) {  // a boundary face of this component: its value is known (or zero gradient)
+                if (F.type == FlowBoundaryType::Outflow) continue;
+                x[d] = side ? g.Upper()[d] : lo[d];
+                diag += a;
+                rhs += a * bc_->Prescribed(f, d, x);
+              } else if (F.type == FlowBoundaryType::Wall || F.type == FlowBoundaryType::Inflow) {
+                // ghost = 2 U_b - u: the face value U_b is half a cell away
+                x[e] = side ? g.Upper()[e] : lo[e];
+                diag += 2 * a;
+                rhs += 2 * a * bc_->Prescribed(f, d, x);
+              }  // slip, outflow: zero gradient, no flux
+            }
+          col[0] = row;
+          val[0] = diag;
+          rb.at(q) = rhs;
+          PetscCall(MatSetValuesStencil(A_[d], 1, &row, nc, col, val, INSERT_VALUES));
+        }
+    PetscCall(sg_->RestoreGlobal(d, bcRhs_[d], &rb));
+    PetscCall(MatAssemblyBegin(A_[d], MAT_FINAL_ASSEMBLY));
+    PetscCall(MatAssemblyEnd(A_[d], MAT_FINAL_ASSEMBLY));
+  }
+  PetscCall(sg_->RestoreLocal(3, emLocal, &em));
+  PetscCall(sg_->RestoreLocal(3, betaLocal, &beta));
+  PetscCall(sg_->RestoreLocal(3, epsLocal, &eps));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode ViscousSolver::Solve(int d, Vec rhs, Vec u) {
+  KSPConvergedReason reason;
+  PetscInt           its;
+
+  PetscFunctionBeginUser;
+  PetscCall(KSPSolve(ksp_[d], rhs, u));
+  PetscCall(KSPGetConvergedReason(ksp_[d], &reason));
+  PetscCall(KSPGetIterationNumber(ksp_[d], &its));
+  if (d == 0) iterations_ = 0;
+  iterations_ += its;
+  PetscCheck(reason > 0, sg_->Base().Comm(), PETSC_ERR_NOT_CONVERGED, "viscous solve (component %c) did not converge: %s after %" PetscInt_FMT " iterations",
+             "xyz"[d], KSPConvergedReasons[reason], its);
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode ViscousSolver::View(PetscViewer viewer) const {
+  KSPType type;
+  PC      pc;
+  PCType  pctype;
+
+  PetscFunctionBeginUser;
+  PetscCall(KSPGetType(ksp_[0], &type));
+  PetscCall(KSPGetPC(ksp_[0], &pc));
+  PetscCall(PCGetType(pc, &pctype));
+  PetscCall(PetscViewerASCIIPrintf(viewer, "flow viscous: implicit (Crank-Nicolson), %s + %s (-flow_viscous_ksp_type, -flow_viscous_pc_type)\n", type, pctype));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode ViscousSolver::Destroy() {
+  PetscFunctionBeginUser;
+  for (int d = 0; d < 3; ++d) {
+    PetscCall(KSPDestroy(&ksp_[d]));
+    PetscCall(MatDestroy(&A_[d]));
+    PetscCall(VecDestroy(&bcRhs_[d]));
+  }
+  PetscFunctionReturn(0);
+}
+
+}  // namespace vofdem
