@@ -99,3 +99,4 @@ vofdem_bad_input(wall_stl_truncated "truncated\\.stl': binary STL: the header an
 include(VofdemOutputTests)  # DEM output and analysis
 include(VofdemStatisticsTests)  # D6 long horizon: rank counts against a 1-rank ensemble of seeds
 include(VofdemFlowTests)  # the pressure solve (src/flow)
+include(VofdemCavityTests)  # F2 reference tables: the profile checker and the convergence-table helper
