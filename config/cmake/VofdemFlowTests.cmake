@@ -10,3 +10,14 @@ vofdem_bad_input_pressure(pressure_bc_periodic "option -flow_pressure_bc_zlo: 'p
 vofdem_bad_input_pressure(pressure_pc_unknown "option -flow_pressure_pc: unknown name 'gamg'" -flow_pressure_pc gamg)
 vofdem_bad_input_pressure(pressure_threshold  "option -flow_pressure_reuse_threshold: -1\\.? is out of range" -flow_pressure_reuse_threshold -1)
 vofdem_bad_input_pressure(pressure_periodic_2 "the pressure solve needs at least 3 cells in the periodic direction x" -grid_periodic x -cells_list 2)
+
+# F2 in the quick tier: the Re 100 cavity at 32^2 (t = 12 s, near steady), 1 and 2 ranks, within 1 % of
+# the lid speed of Ghia et al. at the 17 stations (measured 0.26 % for u, 0.69 % for v at t = 15 s; a
+# wrong viscosity, boundary or advection term moves the profile by several percent). 128^2 and Re 1000
+# against Botella & Peyret are in the validate tier.
+foreach(ranks 1 2)
+  add_test(NAME flow/f2_cavity_re100_${ranks}
+           COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/test/flow/cavity_run.sh $<TARGET_FILE:vofdem_app> ${ranks} ${CMAKE_CURRENT_SOURCE_DIR}/config/scenes/cavity-re100.yaml 100 0.01
+                   -grid_cells 32,32,4 -grid_upper 1,1,0.125 -final_time 12)
+  set_tests_properties(flow/f2_cavity_re100_${ranks} PROPERTIES LABELS "quick;flow" PROCESSORS ${ranks} TIMEOUT 600 ENVIRONMENT "VOFDEM_PYTHON=${VOFDEM_PYTHON}")
+endforeach()

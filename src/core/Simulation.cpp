@@ -115,11 +115,17 @@ PetscErrorCode Simulation::ChooseTimeStep() {
       dtLimitName_ = basis;
     }
   }
+  if (!(limit < PETSC_MAX_REAL) && step_ > 0) PetscFunctionReturn(0);  // came to rest: keep the step
   if (!(limit < PETSC_MAX_REAL) && !(dtUser_ > 0))
     VofdemInputError(comm_, "option -dt: nothing moves at the start (no velocity, no gravity): give a time step");
-  // Growth of an adaptive step is capped (20 percent per step), so the variable-step AB2 of the flow
-  // stays close to its constant-step accuracy.
-  dt_ = step_ > 0 && dt_ > 0 ? std::min(limit, (PetscReal)1.2 * dt_) : limit;
+  // An adaptive step (the flow's) shrinks at once to 95 percent of the limit when the limit falls below
+  // it, and grows (at most 20 percent per step, so the variable-step AB2 of the flow stays close to
+  // constant-step accuracy) only once it is 15 percent under the limit: in between it is kept, so that
+  // what depends on dt (the implicit viscous matrix) is not rebuilt every step. A constant limit (DEM)
+  // is used as it is.
+  if (step_ == 0 || !(dt_ > 0)) dt_ = limit;
+  else if (dt_ > limit) dt_ = 0.95 * limit;
+  else if (dt_ < 0.85 * limit) dt_ = std::min((PetscReal)0.95 * limit, (PetscReal)1.2 * dt_);
   if (dtUser_ > 0 && step_ == 0) {
     if (dtUser_ > limit && !dtForce_)
       VofdemInputError(comm_, "option -dt: %g s exceeds the stable limit %g s of %s; lower it or add -dt_force", (double)dtUser_, (double)limit,

@@ -17,60 +17,70 @@ struct TermFields {
 //   L = div(eps mu grad u_d)                                               (N/m^3, unscaled)
 // Control volume of a d-face: between the centres of its two cells along d, one cell across in
 // the other directions. Its faces normal to d sit at cell centres, the others on cell edges.
+// Hot loop: every neighbour is a fixed offset from the point's index in its own array (the arrays
+// of the staggered locations differ in size), computed once per component.
 template <Limiter LIM>
 void MomentumTerms(int d, const TermFields &F, const PetscInt s[3], const PetscInt n[3], const PetscReal h[3]) {
   const LocalField &ud = F.u[d];
+  const int         t1 = (d + 1) % 3, t2 = (d + 2) % 3;  // the tangential directions
+  const int         te[2] = {t1, t2};
+  // offsets in the arrays of u_d, u_e (tangential e), cells, and the output
+  const PetscInt ds = ud.stride[d], cs_d = F.em.stride[d];
+  PetscInt       us[2], ues_e[2], ues_d[2], cs_e[2];
+  for (int a = 0; a < 2; ++a) {
+    us[a]    = ud.stride[te[a]];
+    ues_e[a] = F.u[te[a]].stride[te[a]];
+    ues_d[a] = F.u[te[a]].stride[d];
+    cs_e[a]  = F.em.stride[te[a]];
+  }
+  const PetscReal ih[3] = {1 / h[0], 1 / h[1], 1 / h[2]};
   for (PetscInt k = s[2]; k < s[2] + n[2]; ++k)
-    for (PetscInt j = s[1]; j < s[1] + n[1]; ++j)
-      for (PetscInt i = s[0]; i < s[0] + n[0]; ++i) {
-        const PetscInt q[3] = {i, j, k};
-        PetscInt       cm[3] = {i, j, k};
-        cm[d] -= 1;
-        const PetscReal uP = ud.at(q);
-        PetscReal       adv = 0, lap = 0, trans = 0;
-        for (int e = 0; e < 3; ++e) {
-          PetscInt qp[3] = {i, j, k}, qm[3] = {i, j, k}, qpp[3] = {i, j, k}, qmm[3] = {i, j, k};
-          qp[e] += 1, qm[e] -= 1, qpp[e] += 2, qmm[e] -= 2;
-          const PetscReal uE = ud.at(qp), uW = ud.at(qm), uEE = ud.at(qpp), uWW = ud.at(qmm);
-          PetscReal       Up, Um, emP, emM, tP = 0, tM = 0;
-          if (e == d) {
-            Up  = 0.5 * (uP + uE);
-            Um  = 0.5 * (uW + uP);
-            emP = PetscRealPart(F.em.at(q));
-            emM = PetscRealPart(F.em.at(cm));
-          } else {
-            // advecting u_e on the edges: e-faces q_e+1 (plus) and q_e (minus), cells q_d-1 and q_d
-            PetscInt a[3] = {i, j, k}, am[3] = {i, j, k}, bm[3] = {i, j, k};
-            a[e] += 1;
-            am[e] += 1;
-            am[d] -= 1;
-            bm[d] -= 1;
-            const LocalField &ue = F.u[e];
-            const PetscReal   uea = ue.at(a), ueam = ue.at(am), ueb = ue.at(q), uebm = ue.at(bm);
-            Up = 0.5 * (uea + ueam);
-            Um = 0.5 * (ueb + uebm);
-            PetscInt cp[3] = {i, j, k}, cpm[3] = {i, j, k}, cmm[3] = {i, j, k}, cmd[3] = {i, j, k};
-            cp[e] += 1;             // cell across the plus edge
-            cpm[e] += 1, cpm[d] -= 1;
-            cmm[e] -= 1;            // cell across the minus edge
-            cmd[e] -= 1, cmd[d] -= 1;
-            emP = 0.25 * PetscRealPart(F.em.at(q) + F.em.at(cm) + F.em.at(cp) + F.em.at(cpm));
-            emM = 0.25 * PetscRealPart(F.em.at(q) + F.em.at(cm) + F.em.at(cmm) + F.em.at(cmd));
-            tP  = emP * (uea - ueam) / h[d];
-            tM  = emM * (ueb - uebm) / h[d];
-          }
+    for (PetscInt j = s[1]; j < s[1] + n[1]; ++j) {
+      const PetscScalar *u   = &ud.at(s[0], j, k);
+      const PetscScalar *ua  = &F.u[t1].at(s[0], j, k);
+      const PetscScalar *ub  = &F.u[t2].at(s[0], j, k);
+      const PetscScalar *em  = &F.em.at(s[0], j, k);
+      const PetscScalar *be  = &F.beta.at(s[0], j, k);
+      const PetscScalar *ep  = &F.eps.at(s[0], j, k);
+      PetscScalar       *Ho  = &F.H.at(s[0], j, k);
+      PetscScalar       *Lo  = &F.L.at(s[0], j, k);
+      const PetscScalar *uet[2] = {ua, ub};
+      for (PetscInt i = 0; i < n[0]; ++i) {
+        const PetscReal uP = u[i];
+        const PetscReal emC = em[i], emM = em[i - cs_d];
+        PetscReal       adv, lap, trans;
+        {  // e = d: control-volume faces at the two cell centres
+          const PetscReal uE = u[i + ds], uW = u[i - ds], uEE = u[i + 2 * ds], uWW = u[i - 2 * ds];
+          const PetscReal Up = 0.5 * (uP + uE), Um = 0.5 * (uW + uP);
           const PetscReal fP = Up >= 0 ? LimitedFace<LIM>(uW, uP, uE) : LimitedFace<LIM>(uEE, uE, uP);
           const PetscReal fM = Um >= 0 ? LimitedFace<LIM>(uWW, uW, uP) : LimitedFace<LIM>(uE, uP, uW);
-          adv += ((Up * fP - Um * fM) - uP * (Up - Um)) / h[e];
-          const PetscReal g = (emP * (uE - uP) - emM * (uP - uW)) / (h[e] * h[e]);
-          lap += g;
-          trans += e == d ? g : (tP - tM) / h[e];
+          adv = ((Up * fP - Um * fM) - uP * (Up - Um)) * ih[d];
+          lap = (emC * (uE - uP) - emM * (uP - uW)) * ih[d] * ih[d];
+          trans = lap;  // the transpose term equals the gradient term along d
         }
-        const PetscReal bL = PetscRealPart(F.beta.at(cm)), bR = PetscRealPart(F.beta.at(q));
-        const PetscReal eF = 0.5 * PetscRealPart(F.eps.at(cm) + F.eps.at(q)), bF = 2 * bL * bR / (bL + bR);
-        F.H.at(q) = -adv + trans * bF / (eF * eF);  // (eps rho)_f = eps_f^2 / b_f
-        F.L.at(q) = lap;
+        for (int a = 0; a < 2; ++a) {  // e tangential: control-volume faces on the cell edges
+          const int          e  = te[a];
+          const PetscInt     o  = us[a];
+          const PetscScalar *ue = uet[a] + i;
+          const PetscReal    uE = u[i + o], uW = u[i - o], uEE = u[i + 2 * o], uWW = u[i - 2 * o];
+          // advecting u_e: e-faces q_e+1 (plus) and q_e (minus), cells q_d-1 and q_d
+          const PetscReal uea = ue[ues_e[a]], ueam = ue[ues_e[a] - ues_d[a]], ueb = ue[0], uebm = ue[-ues_d[a]];
+          const PetscReal Up = 0.5 * (uea + ueam), Um = 0.5 * (ueb + uebm);
+          const PetscScalar *c = em + i;
+          const PetscReal emP = 0.25 * (emC + emM + c[cs_e[a]] + c[cs_e[a] - cs_d]);
+          const PetscReal emN = 0.25 * (emC + emM + c[-cs_e[a]] + c[-cs_e[a] - cs_d]);
+          const PetscReal fP = Up >= 0 ? LimitedFace<LIM>(uW, uP, uE) : LimitedFace<LIM>(uEE, uE, uP);
+          const PetscReal fM = Um >= 0 ? LimitedFace<LIM>(uWW, uW, uP) : LimitedFace<LIM>(uE, uP, uW);
+          adv += ((Up * fP - Um * fM) - uP * (Up - Um)) * ih[e];
+          lap += (emP * (uE - uP) - emN * (uP - uW)) * ih[e] * ih[e];
+          trans += (emP * (uea - ueam) - emN * (ueb - uebm)) * ih[d] * ih[e];
+        }
+        const PetscReal bL = be[i - cs_d], bR = be[i];
+        const PetscReal eF = 0.5 * (ep[i - cs_d] + ep[i]), bF = 2 * bL * bR / (bL + bR);
+        Ho[i] = -adv + trans * bF / (eF * eF);  // (eps rho)_f = eps_f^2 / b_f
+        Lo[i] = lap;
       }
+    }
 }
 
 }  // namespace

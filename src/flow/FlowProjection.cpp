@@ -96,9 +96,6 @@ PetscErrorCode Flow::Project(PetscReal dt, Vec *) {
   PetscCall(sg_.RestoreLocal(3, betaLocal_, &beta));
   PetscCall(sg_.RestoreLocal(3, phiLocal_, &phi));
   PetscCall(VecAXPY(p_, 1, phi_));
-  // Monitor: the divergence left by the projection.
-  for (int d = 0; d < 3; ++d) PetscCall(DMGlobalToLocal(sg_.Face(d), u_[d], INSERT_VALUES, uLocal_[d]));
-  PetscCall(Divergence(nullptr, 1, &last_.maxDivergence));
   PetscCall(PetscLogEventEnd(evProject_, 0, 0, 0, 0));
   PetscFunctionReturn(0);
 }

@@ -44,7 +44,7 @@ public:
   // Stable time step at the current velocity: convective -flow_cfl, and with explicit viscosity the
   // viscous limit; collective.
   PetscErrorCode StableTimeStep(PetscReal *dt, std::string *basis) const;
-  PetscErrorCode Summarize(FlowSummary *s) const;
+  PetscErrorCode Summarize(FlowSummary *s);  // collective; also measures div(eps U)
   PetscErrorCode View(PetscViewer viewer) const;
   PetscErrorCode Save(PetscViewer viewer) const;
   PetscErrorCode Load(PetscViewer viewer);
@@ -110,7 +110,7 @@ private:
   FlowSummary last_;
   PetscReal   propertyVersionDt_ = -1;
   bool        propertiesDirty_ = true;
-  PetscLogEvent evExplicit_ = 0, evPredict_ = 0, evProject_ = 0;
+  PetscLogEvent evExplicit_ = 0, evPredict_ = 0, evProject_ = 0, evGhosts_ = 0;
 };
 
 }  // namespace vofdem

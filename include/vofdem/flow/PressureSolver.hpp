@@ -43,6 +43,9 @@ public:
   // Programmatic defaults for the box faces (the flow module will derive them from its velocity
   // boundaries); options -flow_pressure_bc_<face> override them in SetFromOptions.
   PetscErrorCode SetBoundary(int face, PressureBoundary type, PetscReal value = 0);
+  // Programmatic default of -flow_pressure_pc (before SetFromOptions).
+  void SetPreconditioner(PressurePreconditioner pc) { pc_ = pc; }
+  PressurePreconditioner Preconditioner() const { return pc_; }
   PetscErrorCode SetFromOptions();
   PetscErrorCode SetUp();
   // beta at cell centres (a vector of Grid::CellDM()), all > 0; `what` names its origin in the
