@@ -178,3 +178,18 @@ int main(int argc, char **argv) {
   if (int code = vofdem::Initialize(&argc, &argv, help)) return code;
   return vofdem::Finalize(Run());
 }
+
+/*TEST
+  rtol: 1e-5
+  test:
+    suffix: 1
+    nsize: 1
+  test:
+    suffix: 2
+    nsize: 2
+    output_file: output/ex24_taylor_green_1.out
+  test:
+    suffix: central
+    nsize: 2
+    args: -flow_advection central -flow_pressure_pc boomeramg
+TEST*/
