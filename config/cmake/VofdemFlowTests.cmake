@@ -1,5 +1,6 @@
-# The pressure solve of the flow module (included by VofdemTests.cmake). Its examples (ex22, ex23) are
-# example tests; here: bad input of the solver's options and coefficients, run through ex23.
+# The flow module (included by VofdemTests.cmake). Its examples (ex22-ex24, ex27) are example tests;
+# here: bad input of the pressure solve's options and coefficients, run through ex23, and of -physics
+# flow through the program.
 function(vofdem_bad_input_pressure name regex)
   add_test(NAME badinput/${name} COMMAND ${VOFDEM_PYTHON} ${_expect} --ranks 2 --match ${regex} -- $<TARGET_FILE:ex23_pressure_iterations> -cells_list 8 ${ARGN})
   set_tests_properties(badinput/${name} PROPERTIES LABELS "quick;badinput" PROCESSORS 2 TIMEOUT 120)
@@ -21,3 +22,29 @@ foreach(ranks 1 2)
                    -grid_cells 32,32,4 -grid_upper 1,1,0.125 -final_time 12)
   set_tests_properties(flow/f2_cavity_re100_${ranks} PROPERTIES LABELS "quick;flow" PROCESSORS ${ranks} TIMEOUT 600 ENVIRONMENT "VOFDEM_PYTHON=${VOFDEM_PYTHON}")
 endforeach()
+# -physics flow through the program (issue 4): inconsistent boundaries, non-positive properties, a
+# grid too small for the ranks, options that -physics flow refuses. -max_steps 1: a check that let
+# the input through would end the run at once (exit 0, and the test fails), not run on. A ";" of a
+# message is "." in the patterns (CMake would split the argument there).
+set(_flow -physics flow -grid_cells 8,8,8 -max_steps 1)
+vofdem_bad_input(flow_inflow_closed   "option -flow_bc_xlo: inflow, but no face is outflow" ${_flow} -flow_bc_xlo inflow -flow_bc_xlo_velocity 1,0,0)
+vofdem_bad_input(flow_viscosity_zero  "option -flow_viscosity: 0\\.? is out of range, must be in \\(0, inf\\]" ${_flow} -flow_viscosity 0)
+vofdem_bad_input(flow_density_negative "option -flow_density: -1\\.? is out of range, must be in \\(0, inf\\]" ${_flow} -flow_density -1)
+vofdem_bad_input(flow_grid_too_small  "option -grid_cells: the flow solver needs at least 2 cells per rank in each direction, but z has 2 cells on 2 ranks" ${_flow} -grid_cells 2,2,2)
+vofdem_bad_input(flow_wall_normal     "option -flow_bc_xlo_velocity: a wall cannot move along its normal \\(x component 1\\.? m/s\\). use inflow" ${_flow} -flow_bc_xlo_velocity 1,0,0)
+vofdem_bad_input(flow_inflow_outward  "option -flow_bc_xlo_velocity: an inflow must point into the box \\(x component -1\\.? m/s\\)" ${_flow} -flow_bc_xlo inflow -flow_bc_xlo_velocity -1,0,0 -flow_bc_xhi outflow)
+vofdem_bad_input(flow_periodic_face   "option -flow_bc_xlo: 'periodic' needs x in -grid_periodic" ${_flow} -flow_bc_xlo periodic)
+vofdem_bad_input(flow_face_of_periodic "option -flow_bc_xlo: 'wall' on a face of the periodic direction x" ${_flow} -grid_periodic x -flow_bc_xlo wall)
+vofdem_bad_input(flow_pressure_bc     "option -flow_pressure_bc_xlo: with -physics flow the pressure boundaries follow -flow_bc_xlo \\(wall\\). do not set them" ${_flow} -flow_pressure_bc_xlo dirichlet)
+vofdem_bad_input(flow_with_dem        "option -physics: 'dem' with 'flow' needs the particle-fluid coupling, not available" -physics dem,flow -max_steps 1)
+vofdem_bad_input(flow_advection_unknown "option -flow_advection: unknown name 'quick' \\(known: upwind, central, minmod, vanleer, mc, superbee, koren\\)" ${_flow} -flow_advection quick)
+
+# The flow solvers' KSP options are read in the module's set-up: they must not be taken for typos.
+add_test(NAME flow/solver_options_accepted COMMAND mpiexec -n 2 $<TARGET_FILE:vofdem_app> ${_flow} -gravity 0,0,0 -dt 0.01 -flow_bc_zhi_velocity 1,0,0
+         -flow_pressure_ksp_rtol 1e-9 -flow_viscous_ksp_rtol 1e-11 -flow_viscous_ksp_type gmres)
+set_tests_properties(flow/solver_options_accepted PROPERTIES LABELS "quick;flow" PROCESSORS 2 TIMEOUT 120
+                     ENVIRONMENT "OMPI_ALLOW_RUN_AS_ROOT=1;OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1;OMP_NUM_THREADS=1")
+
+# scripts/work-precision (speed against error, VERIFICATION.md): its parsers and case entries.
+add_test(NAME unit/work_precision COMMAND ${VOFDEM_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/test/unit/test_work_precision.py)
+set_tests_properties(unit/work_precision PROPERTIES LABELS "quick;unit" TIMEOUT 60)

@@ -58,21 +58,22 @@ PetscErrorCode Simulation::SetFromOptions() {
 
 PetscErrorCode Simulation::SetUp() {
   PetscFunctionBeginUser;
-  // Every option has been read by now: a typo fails here, before any expensive set-up.
-  PetscCall(CheckUnusedOptions(comm_));
   PetscCall(grid_.SetUp(physics_.dem ? PETSC_TRUE : PETSC_FALSE));
-  if (physics_.dem) {
-    PetscCall(PetscLogStageGetId("DEM", &demStage_));  // a program may run several simulations
-    if (demStage_ < 0) PetscCall(PetscLogStageRegister("DEM", &demStage_));
-    PetscCall(PetscLogStagePush(demStage_));
-    PetscCall(dem_->SetUp(grid_, gravity_, (std::uint64_t)seed_));
-    PetscCall(PetscLogStagePop());
-  }
   if (physics_.flow) {
     PetscCall(PetscLogStageGetId("Flow", &flowStage_));
     if (flowStage_ < 0) PetscCall(PetscLogStageRegister("Flow", &flowStage_));
     PetscCall(PetscLogStagePush(flowStage_));
     PetscCall(flow_->SetUp(gravity_));
+    PetscCall(PetscLogStagePop());
+  }
+  // Every option has been read by now (the flow solvers read their KSP options, -flow_pressure_ksp_*
+  // and -flow_viscous_*, in the cheap set-up above): a typo fails here, before the DEM fill.
+  PetscCall(CheckUnusedOptions(comm_));
+  if (physics_.dem) {
+    PetscCall(PetscLogStageGetId("DEM", &demStage_));  // a program may run several simulations
+    if (demStage_ < 0) PetscCall(PetscLogStageRegister("DEM", &demStage_));
+    PetscCall(PetscLogStagePush(demStage_));
+    PetscCall(dem_->SetUp(grid_, gravity_, (std::uint64_t)seed_));
     PetscCall(PetscLogStagePop());
   }
   PetscCall(ChooseTimeStep());

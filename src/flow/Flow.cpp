@@ -83,7 +83,8 @@ PetscErrorCode Flow::SetUp(const PetscReal gravity[3]) {
     PetscCall(VecSet(u_[d], velocity0_[d]));
     PetscCall(bc_.ApplyNormal(sg_, d, u_[d]));
     PetscCall(PetscObjectSetName((PetscObject)u_[d], d == 0 ? "flow_u" : d == 1 ? "flow_v" : "flow_w"));
-    PetscCall(PetscObjectSetName((PetscObject)Hold_[d], d == 0 ? "flow_explicit_u" : d == 1 ? "flow_explicit_v" : "flow_explicit_w"));
+    // Both: Step swaps H_ and Hold_, and an HDF5 Save must write Hold_ under the name Load reads.
+    for (Vec v : {H_[d], Hold_[d]}) PetscCall(PetscObjectSetName((PetscObject)v, d == 0 ? "flow_explicit_u" : d == 1 ? "flow_explicit_v" : "flow_explicit_w"));
   }
   DM c = sg_.Cells();
   for (Vec *v : {&rho_, &mu_, &eps_, &p_, &phi_, &beta_, &divRhs_}) PetscCall(DMCreateGlobalVector(c, v));

@@ -43,44 +43,46 @@ PetscErrorCode FlowBoundary::SetFromOptions(const Grid &grid) {
       FlowFace   &F        = face_[f];
       F.type               = periodic ? FlowBoundaryType::Periodic : FlowBoundaryType::Wall;
       const std::string base = std::string("-bc_") + FaceName(f);
+      const char       *name = base.c_str() + 1;  // "bc_xlo", for messages naming -flow_bc_xlo
       std::vector<std::string> chosen = {TypeName(F.type)};
       PetscBool                given = PETSC_FALSE, vGiven = PETSC_FALSE, pGiven = PETSC_FALSE, prGiven = PETSC_FALSE;
       PetscCall(opt.NameList(base.c_str(), "Boundary of this box face: wall (no-slip, may slide), slip, inflow, outflow (pressure), periodic (only with -grid_periodic)",
                              {"wall", "slip", "inflow", "outflow", "periodic"}, &chosen, &given));
-      if (chosen.size() != 1) VofdemInputError(comm, "option -flow%s: give one boundary type", base.c_str());
+      if (chosen.size() != 1) VofdemInputError(comm, "option -flow_%s: give one boundary type", name);
       const std::string &t = chosen[0];
       F.type = t == "wall" ? FlowBoundaryType::Wall : t == "slip" ? FlowBoundaryType::Slip : t == "inflow" ? FlowBoundaryType::Inflow
              : t == "outflow" ? FlowBoundaryType::Outflow : FlowBoundaryType::Periodic;
-      if (periodic != (F.type == FlowBoundaryType::Periodic))
-        VofdemInputError(comm, "option -flow%s: '%s' on a face that is %speriodic (-grid_periodic)", base.c_str(), t.c_str(), periodic ? "" : "not ");
+      if (periodic && F.type != FlowBoundaryType::Periodic)
+        VofdemInputError(comm, "option -flow_%s: '%s' on a face of the periodic direction %c (-grid_periodic): leave the option out", name, t.c_str(), "xyz"[d]);
+      if (!periodic && F.type == FlowBoundaryType::Periodic)
+        VofdemInputError(comm, "option -flow_%s: 'periodic' needs %c in -grid_periodic (the grid makes a direction periodic)", name, "xyz"[d]);
       PetscCall(opt.RealVector((base + "_velocity").c_str(), "Velocity of a wall (tangential only) or of an inflow", "m/s", F.velocity, 3, RealRange::Any(), &vGiven));
       std::vector<std::string> profile = {"uniform"};
       PetscCall(opt.NameList((base + "_profile").c_str(), "Inflow profile: uniform, or parabolic (the velocity given is the centre value; zero at the face's edges)",
                              {"uniform", "parabolic"}, &profile, &prGiven));
-      if (profile.size() != 1) VofdemInputError(comm, "option -flow%s_profile: give one profile", base.c_str());
+      if (profile.size() != 1) VofdemInputError(comm, "option -flow_%s_profile: give one profile", name);
       F.parabolic = profile[0] == "parabolic";
       PetscCall(opt.Real((base + "_pressure").c_str(), "Pressure of an outflow face", "Pa", &F.pressure, RealRange::Any(), &pGiven));
       if (vGiven && (F.type == FlowBoundaryType::Slip || F.type == FlowBoundaryType::Outflow || F.type == FlowBoundaryType::Periodic))
-        VofdemInputError(comm, "option -flow%s_velocity: a %s face takes no velocity (only wall and inflow)", base.c_str(), t.c_str());
-      if (prGiven && F.type != FlowBoundaryType::Inflow) VofdemInputError(comm, "option -flow%s_profile: only an inflow face has a profile", base.c_str());
-      if (pGiven && F.type != FlowBoundaryType::Outflow) VofdemInputError(comm, "option -flow%s_pressure: only an outflow face has a pressure", base.c_str());
+        VofdemInputError(comm, "option -flow_%s_velocity: a %s face takes no velocity (only wall and inflow)", name, t.c_str());
+      if (prGiven && F.type != FlowBoundaryType::Inflow) VofdemInputError(comm, "option -flow_%s_profile: only an inflow face has a profile", name);
+      if (pGiven && F.type != FlowBoundaryType::Outflow) VofdemInputError(comm, "option -flow_%s_pressure: only an outflow face has a pressure", name);
       if (F.type == FlowBoundaryType::Wall && F.velocity[d] != 0)
-        VofdemInputError(comm, "option -flow%s_velocity: a wall cannot move along its normal (%c component %g m/s); use inflow", base.c_str(), "xyz"[d],
+        VofdemInputError(comm, "option -flow_%s_velocity: a wall cannot move along its normal (%c component %g m/s); use inflow", name, "xyz"[d],
                          (double)F.velocity[d]);
       if (F.type == FlowBoundaryType::Inflow) {
         const PetscReal inward = (f % 2 ? -1 : 1) * F.velocity[d];
         if (!(inward > 0))
-          VofdemInputError(comm, "option -flow%s_velocity: an inflow must point into the box (%c component %g m/s)", base.c_str(), "xyz"[d], (double)F.velocity[d]);
+          VofdemInputError(comm, "option -flow_%s_velocity: an inflow must point into the box (%c component %g m/s)", name, "xyz"[d], (double)F.velocity[d]);
       }
     }
   }
   PetscOptionsEnd();
-  bool inflow = false;
-  for (const FlowFace &F : face_) inflow = inflow || F.type == FlowBoundaryType::Inflow;
   // With no outflow the volume in the box cannot change: an inflow would have nowhere to go (the
   // pressure equation would have no solution).
-  if (inflow && !HasOutflow())
-    VofdemInputError(comm, "options -flow_bc_*: an inflow face but no outflow face: the fluid in a closed box cannot grow (make a face outflow)");
+  for (int f = 0; f < 6; ++f)
+    if (face_[f].type == FlowBoundaryType::Inflow && !HasOutflow())
+      VofdemInputError(comm, "option -flow_bc_%s: inflow, but no face is outflow: the fluid in the closed box has nowhere to go (make another face outflow)", FaceName(f));
   PetscFunctionReturn(0);
 }
 
