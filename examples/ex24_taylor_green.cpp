@@ -141,6 +141,8 @@ PetscErrorCode Run() {
   // The discretisation error is measured: the solvers' share must be negligible.
   PetscCall(PetscOptionsHasName(nullptr, nullptr, "-flow_pressure_ksp_rtol", &set));
   if (!set) PetscCall(SetOption("-flow_pressure_ksp_rtol", "1e-11"));
+  PetscCall(PetscOptionsHasName(nullptr, nullptr, "-flow_viscous_ksp_rtol", &set));
+  if (!set) PetscCall(SetOption("-flow_viscous_ksp_rtol", "1e-12"));
   PetscCall(PetscPrintf(PETSC_COMM_WORLD, "Taylor-Green vortex, nu %g m^2/s, t = %g s, dt = %g h/U\n", (double)nu, (double)finalTime, (double)cfl));
   std::vector<Errors> e(nlist);
   const PetscReal     minOrder = 1.8;
