@@ -48,3 +48,10 @@ set_tests_properties(flow/solver_options_accepted PROPERTIES LABELS "quick;flow"
 # scripts/work-precision (speed against error, VERIFICATION.md): its parsers and case entries.
 add_test(NAME unit/work_precision COMMAND ${VOFDEM_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/test/unit/test_work_precision.py)
 set_tests_properties(unit/work_precision PROPERTIES LABELS "quick;unit" TIMEOUT 60)
+
+# Grid results agree across rank counts to round-off: the Re 1000 cavity scene (strong advection, so the
+# TVD limiter's branches are exercised) at 32^2 for 60 steps of fixed dt on 1, 2 and 4 ranks.
+add_test(NAME flow/rank_agreement
+         COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/test/flow/rank_agreement.sh $<TARGET_FILE:vofdem_app> ${CMAKE_CURRENT_SOURCE_DIR}/config/scenes/cavity-re1000.yaml 1e-10
+                 -grid_cells 32,32,4 -grid_upper 1,1,0.125 -dt 0.01 -max_steps 60 -monitor_every 60)
+set_tests_properties(flow/rank_agreement PROPERTIES LABELS "quick;flow" PROCESSORS 2 TIMEOUT 600 ENVIRONMENT "VOFDEM_PYTHON=${VOFDEM_PYTHON}")
