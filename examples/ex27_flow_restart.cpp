@@ -219,7 +219,7 @@ int main(int argc, char **argv) {
     requires: hdf5
     args: -viewer hdf5 -half_steps 11 -flow_viscous explicit -flow_advection koren
   test:
-    suffix: pfmg_2
+    suffix: boomeramg_2
     nsize: 2
-    args: -flow_pressure_pc pfmg
+    args: -flow_pressure_pc boomeramg
 TEST*/
