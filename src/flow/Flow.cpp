@@ -101,6 +101,15 @@ PetscErrorCode Flow::SetUp(const PetscReal gravity[3]) {
   PetscCall(VecSet(phi_, 0));
   for (int f = 0; f < 6; ++f)
     if (bc_.Face(f).type == FlowBoundaryType::Outflow) PetscCall(VecSet(p_, bc_.Face(f).pressure));  // the level; see View
+  // The previous increment is the initial guess of the next solve. It can be far larger than the
+  // next rhs (the first step of a still tank puts the whole hydrostatic pressure into it), which
+  // PETSc's default divergence test (1e4 ||b||) would take for divergence before iterating.
+  {
+    PetscBool given;
+    PetscCall(PetscOptionsHasName(nullptr, "flow_pressure_", "-ksp_divtol", &given));
+    if (!given) PetscCall(PetscOptionsSetValue(nullptr, "-flow_pressure_ksp_divtol", "1e300"));
+    PetscCall(PetscOptionsHasName(nullptr, "flow_pressure_", "-ksp_atol", &userPressureAtol_));
+  }
   PetscCall(pressure_.SetUp());
   if (implicitViscosity_) {
     PetscCall(viscous_.Create(sg_, bc_));
@@ -111,6 +120,34 @@ PetscErrorCode Flow::SetUp(const PetscReal gravity[3]) {
   PetscCall(PetscLogEventRegister("FlowProject", DM_CLASSID, &evProject_));
   PetscCall(PetscLogEventRegister("FlowGhosts", DM_CLASSID, &evGhosts_));
   PetscCall(UpdateLocals(true));  // the monitor reads the ghosted fields before the first step
+  PetscFunctionReturn(0);
+}
+
+// The pressure that balances gravity (-div((eps/rho) G p) = -div(eps g)): the incremental scheme
+// starts from it, so that a fluid at rest stays at rest instead of being kicked by the whole
+// hydrostatic pressure arriving as the first increment (which also stirs the fluid near side walls
+// through the viscous step). Done by the first Step, with the density of that moment; not after Load
+// (the loaded pressure is the run's), so that a restart builds its preconditioner as the run did.
+PetscErrorCode Flow::InitialPressure() {
+  const PetscReal g2 = gravity_[0] * gravity_[0] + gravity_[1] * gravity_[1] + gravity_[2] * gravity_[2];
+
+  PetscFunctionBeginUser;
+  pressureReady_ = true;
+  if (g2 == 0) PetscFunctionReturn(0);
+  PetscCall(UpdateLocals(propertiesDirty_));
+  Vec keep[3];
+  for (int d = 0; d < 3; ++d) {
+    PetscCall(VecDuplicate(u_[d], &keep[d]));
+    PetscCall(VecCopy(u_[d], keep[d]));
+    PetscCall(VecShift(u_[d], gravity_[d]));  // one unit of time of free fall
+    PetscCall(bc_.ApplyNormal(sg_, d, u_[d]));
+  }
+  PetscCall(Project(1, nullptr));  // p += phi, the hydrostatic pressure
+  for (int d = 0; d < 3; ++d) {
+    PetscCall(VecCopy(keep[d], u_[d]));
+    PetscCall(VecDestroy(&keep[d]));
+  }
+  PetscCall(UpdateLocals(false));
   PetscFunctionReturn(0);
 }
 
@@ -155,6 +192,7 @@ PetscErrorCode Flow::UpdateLocals(bool properties) {
 
 PetscErrorCode Flow::Step(PetscReal t, PetscReal dt) {
   PetscFunctionBeginUser;
+  if (!pressureReady_) PetscCall(InitialPressure());
   PetscCall(PetscLogEventBegin(evGhosts_, 0, 0, 0, 0));
   PetscCall(UpdateLocals(propertiesDirty_));
   PetscCall(PetscLogEventEnd(evGhosts_, 0, 0, 0, 0));
@@ -335,6 +373,7 @@ PetscErrorCode Flow::Load(PetscViewer viewer) {
   PetscCall(VecDestroy(&scalars));
   dtOld_   = s[0];
   haveOld_ = s[1] > 0 ? PETSC_TRUE : PETSC_FALSE;
+  pressureReady_ = true;
   // The fields above are the material the preconditioner reference is compared with: set them up
   // first (this builds a preconditioner from the current coefficient), then restore the saved
   // reference, which rebuilds the one the saved run was using.

@@ -53,6 +53,23 @@ PetscErrorCode Flow::Project(PetscReal dt, Vec *) {
   PetscCall(PetscLogEventBegin(evProject_, 0, 0, 0, 0));
   for (int d = 0; d < 3; ++d) PetscCall(DMGlobalToLocal(sg_.Face(d), u_[d], INSERT_VALUES, uLocal_[d]));
   PetscCall(Divergence(divRhs_, -1 / dt, &dummy));
+  if (!userPressureAtol_) {
+    // The rhs is an imbalance of much larger terms (a still tank: gravity against the pressure), so a
+    // reduction relative to it alone would chase round-off. The absolute floor is the relative
+    // tolerance times the rhs those terms would make on their own: sqrt(N) (max|u*|/h + |g|) / (h dt).
+    KSP       ksp = pressure_.Solver();
+    PetscReal rtol, divtol, umax = 0, m;
+    PetscInt  maxit;
+    for (int d = 0; d < 3; ++d) {
+      PetscCall(VecNorm(u_[d], NORM_INFINITY, &m));
+      umax = std::fmax(umax, m);
+    }
+    const PetscReal *h = grid_->Spacing(), hmin = std::fmin(h[0], std::fmin(h[1], h[2]));
+    const PetscReal  g = std::sqrt(gravity_[0] * gravity_[0] + gravity_[1] * gravity_[1] + gravity_[2] * gravity_[2]);
+    const PetscReal  N = (PetscReal)grid_->Cells()[0] * grid_->Cells()[1] * grid_->Cells()[2];
+    PetscCall(KSPGetTolerances(ksp, &rtol, nullptr, &divtol, &maxit));
+    PetscCall(KSPSetTolerances(ksp, rtol, rtol * std::sqrt(N) * (umax / hmin + g) / (hmin * dt), divtol, maxit));
+  }
   PetscCall(pressure_.Solve(divRhs_, phi_));  // the previous increment is the initial guess
   PetscCall(DMGlobalToLocal(sg_.Cells(), phi_, INSERT_VALUES, phiLocal_));
   // Ghosts of phi at outflow faces: phi = 0 on the face (Dirichlet), odd reflection; the flux then

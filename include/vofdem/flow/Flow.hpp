@@ -62,6 +62,8 @@ public:
   void SetForcing(Forcing f, void *ctx) { forcing_ = f; forcingCtx_ = ctx; }
   // Makes the velocity field satisfy the boundary conditions and div(eps U) = 0 (an initial projection).
   PetscErrorCode ProjectInitialVelocity();
+  // Sets the pressure to the one that balances gravity (done by the first Step unless Load came first).
+  PetscErrorCode InitialPressure();
 
   const StaggeredGrid &Staggered() const { return sg_; }
   const FlowBoundary  &Boundary() const { return bc_; }
@@ -91,6 +93,7 @@ private:
   Limiter     limiter_ = Limiter::VanLeer;
   std::string limiterName_ = "vanleer";
   PetscBool   implicitViscosity_ = PETSC_TRUE;
+  PetscBool   userPressureAtol_ = PETSC_FALSE;  // else Project sets a scale-aware absolute tolerance
   std::string profilePath_;
   PetscReal   gravity_[3] = {0, 0, 0};
 
@@ -104,6 +107,7 @@ private:
   // time-scheme state (saved)
   PetscReal dtOld_ = 0;
   PetscBool haveOld_ = PETSC_FALSE;
+  bool      pressureReady_ = false;  // InitialPressure done, or the pressure loaded
   Forcing   forcing_ = nullptr;
   void     *forcingCtx_ = nullptr;
   // last step, for the monitor
