@@ -17,7 +17,7 @@ PetscErrorCode ViscousSolver::Create(const StaggeredGrid &sg, const FlowBoundary
     PetscCall(KSPSetOperators(ksp_[d], A_[d], A_[d]));
     PetscCall(KSPSetType(ksp_[d], KSPCG));
     PetscCall(KSPSetNormType(ksp_[d], KSP_NORM_UNPRECONDITIONED));
-    PetscCall(KSPSetTolerances(ksp_[d], 1e-8, 1e-300, PETSC_DEFAULT, 1000));
+    PetscCall(KSPSetTolerances(ksp_[d], 1e-6, 1e-300, PETSC_DEFAULT, 1000));
     PetscCall(KSPSetInitialGuessNonzero(ksp_[d], PETSC_TRUE));
     PC pc;
     PetscCall(KSPGetPC(ksp_[d], &pc));

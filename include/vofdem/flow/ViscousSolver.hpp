@@ -3,7 +3,7 @@
 // assembled on the STAR width-1 copy of the component's face DMDA (StaggeredGrid::FaceMatrixDM).
 // The matrix is symmetric positive definite: the shear coefficient between two faces is the same
 // seen from either; prescribed velocities (walls, inflow) enter the rhs (BoundaryRhs); boundary
-// faces of the component itself get identity rows. KSP prefix flow_viscous_ (default CG + Jacobi to a 1e-8 reduction:
+// faces of the component itself get identity rows. KSP prefix flow_viscous_ (default CG + Jacobi to a 1e-6 reduction of the residual, i.e. about 1e-6 of the velocity per step, far below the discretisation error:
 // the matrix is diagonally dominant by (eps rho)/dt), one KSP per component.
 #pragma once
 
