@@ -3,6 +3,7 @@
 // until the coupling makes it move; its rate then joins the rhs).
 #include "vofdem/flow/Flow.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 namespace vofdem {
@@ -19,24 +20,25 @@ PetscErrorCode Flow::Divergence(Vec rhsOut, PetscReal scale, PetscReal *maxAbs) 
   if (rhsOut) PetscCall(sg_.GetGlobal(3, rhsOut, &out));
   sg_.Owned(3, s, n);
   const PetscReal *h = grid_->Spacing();
+  const PetscReal  ih[3] = {1 / h[0], 1 / h[1], 1 / h[2]};
   for (PetscInt k = s[2]; k < s[2] + n[2]; ++k)
-    for (PetscInt j = s[1]; j < s[1] + n[1]; ++j)
-      for (PetscInt i = s[0]; i < s[0] + n[0]; ++i) {
-        const PetscInt q[3] = {i, j, k};
-        PetscReal      div  = 0;
+    for (PetscInt j = s[1]; j < s[1] + n[1]; ++j) {
+      // neighbours as offsets from the row's first point in each array (Flow.hpp: arrays differ in size)
+      const PetscScalar *e = &eps.at(s[0], j, k), *uc[3];
+      for (int d = 0; d < 3; ++d) uc[d] = &u[d].at(s[0], j, k);
+      PetscScalar *o = rhsOut ? &out.at(s[0], j, k) : nullptr;
+      for (PetscInt i = 0; i < n[0]; ++i) {
+        PetscReal div = 0;
         for (int d = 0; d < 3; ++d) {
-          PetscInt qp[3] = {i, j, k}, cm[3] = {i, j, k}, cp[3] = {i, j, k};
-          qp[d] += 1;
-          cm[d] -= 1;
-          cp[d] += 1;
           // eps at the faces: mean of the two cells (the mirror ghost makes it the cell's own at the box)
-          const PetscReal eC = PetscRealPart(eps.at(q));
-          const PetscReal eM = 0.5 * (eC + PetscRealPart(eps.at(cm))), eP = 0.5 * (eC + PetscRealPart(eps.at(cp)));
-          div += (eP * PetscRealPart(u[d].at(qp)) - eM * PetscRealPart(u[d].at(q))) / h[d];
+          const PetscInt  es = eps.stride[d], us = u[d].stride[d];
+          const PetscReal eC = e[i], eM = 0.5 * (eC + e[i - es]), eP = 0.5 * (eC + e[i + es]);
+          div += (eP * uc[d][i + us] - eM * uc[d][i]) * ih[d];
         }
         mx = std::fmax(mx, std::fabs(div));
-        if (rhsOut) out.at(q) = scale * div;
+        if (o) o[i] = scale * div;
       }
+    }
   if (rhsOut) PetscCall(sg_.RestoreGlobal(3, rhsOut, &out));
   PetscCall(sg_.RestoreLocal(3, epsLocal_, &eps));
   for (int d = 0; d < 3; ++d) PetscCall(sg_.RestoreLocal(d, uLocal_[d], &u[d]));
@@ -97,16 +99,25 @@ PetscErrorCode Flow::Project(PetscReal dt, Vec *) {
     PetscCall(sg_.GetGlobal(d, u_[d], &u));
     sg_.Owned(d, s, n);
     const PetscInt last = sg_.Points(d, d) - 1;
+    // Faces on the box that keep their prescribed velocity (all but outflow) are left out of the range.
+    if (!grid_->Periodic(d)) {
+      const bool lo = bc_.Face(2 * d).type != FlowBoundaryType::Outflow, hi = bc_.Face(2 * d + 1).type != FlowBoundaryType::Outflow;
+      const PetscInt a = std::max(s[d], lo ? (PetscInt)1 : (PetscInt)0), b = std::min(s[d] + n[d], hi ? last : last + 1);
+      s[d] = a;
+      n[d] = std::max(b - a, (PetscInt)0);
+    }
+    const PetscInt cs = beta.stride[d];
+    const PetscReal c = dt / h[d];
     for (PetscInt k = s[2]; k < s[2] + n[2]; ++k)
-      for (PetscInt j = s[1]; j < s[1] + n[1]; ++j)
-        for (PetscInt i = s[0]; i < s[0] + n[0]; ++i) {
-          PetscInt q[3] = {i, j, k}, cm[3] = {i, j, k};
-          if (!grid_->Periodic(d) && (q[d] == 0 || q[d] == last) && bc_.Face(2 * d + (q[d] == last)).type != FlowBoundaryType::Outflow) continue;
-          cm[d] -= 1;
-          const PetscReal bL = PetscRealPart(beta.at(cm)), bR = PetscRealPart(beta.at(q));
-          const PetscReal eF = 0.5 * PetscRealPart(eps.at(cm) + eps.at(q)), bF = 2 * bL * bR / (bL + bR);
-          u.at(q) -= dt * bF / eF * (phi.at(q) - phi.at(cm)) / h[d];
+      for (PetscInt j = s[1]; j < s[1] + n[1]; ++j) {
+        PetscScalar       *uu = &u.at(s[0], j, k);
+        const PetscScalar *bb = &beta.at(s[0], j, k), *ee = &eps.at(s[0], j, k), *ph = &phi.at(s[0], j, k);
+        for (PetscInt i = 0; i < n[0]; ++i) {
+          const PetscReal bL = bb[i - cs], bR = bb[i];
+          const PetscReal eF = 0.5 * (ee[i - cs] + ee[i]), bF = 2 * bL * bR / (bL + bR);
+          uu[i] -= c * bF / eF * (ph[i] - ph[i - cs]);
         }
+      }
     PetscCall(sg_.RestoreGlobal(d, u_[d], &u));
   }
   PetscCall(sg_.RestoreLocal(3, epsLocal_, &eps));

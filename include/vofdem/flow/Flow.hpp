@@ -89,7 +89,7 @@ private:
   ViscousSolver  viscous_;
 
   // options
-  PetscReal   density_ = 1000, viscosity_ = 1e-3, cfl_ = 0.5, velocity0_[3] = {0, 0, 0};
+  PetscReal   density_ = 1000, viscosity_ = 1e-3, cfl_ = 0.4, velocity0_[3] = {0, 0, 0};
   Limiter     limiter_ = Limiter::VanLeer;
   std::string limiterName_ = "vanleer";
   PetscBool   implicitViscosity_ = PETSC_TRUE;
