@@ -220,6 +220,8 @@ PetscErrorCode Run() {
   // The discretisation error is measured: the solvers' share must be negligible.
   PetscCall(PetscOptionsHasName(nullptr, nullptr, "-flow_pressure_ksp_rtol", &set));
   if (!set) PetscCall(SetOption("-flow_pressure_ksp_rtol", "1e-11"));
+  PetscCall(PetscOptionsHasName(nullptr, nullptr, "-flow_viscous_ksp_rtol", &set));
+  if (!set) PetscCall(SetOption("-flow_viscous_ksp_rtol", "1e-12"));  // |v|, |w| < 1e-10 and steadiness need converged solves
   PetscCall(PetscPrintf(PETSC_COMM_WORLD, "Poiseuille channel, H = %g m, U_c = %g m/s, nu = %g m^2/s (Re = U_c H / nu = %g)\n", (double)kH, (double)kUc, (double)nu,
                         (double)(kUc * kH / nu)));
   int failures = 0;

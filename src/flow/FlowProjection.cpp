@@ -58,7 +58,8 @@ PetscErrorCode Flow::Project(PetscReal dt, Vec *) {
   if (!userPressureAtol_) {
     // The rhs is an imbalance of much larger terms (a still tank: gravity against the pressure), so a
     // reduction relative to it alone would chase round-off. The absolute floor is the relative
-    // tolerance times the rhs those terms would make on their own: sqrt(N) (max|u*|/h + |g|) / (h dt).
+    // tolerance times the rhs those terms would make on their own: sqrt(N) (max|u*|/(h dt) + |g|/h)
+    // (u* of the order of |g| dt in a still tank).
     KSP       ksp = pressure_.Solver();
     PetscReal rtol, divtol, umax = 0, m;
     PetscInt  maxit;
@@ -70,7 +71,7 @@ PetscErrorCode Flow::Project(PetscReal dt, Vec *) {
     const PetscReal  g = std::sqrt(gravity_[0] * gravity_[0] + gravity_[1] * gravity_[1] + gravity_[2] * gravity_[2]);
     const PetscReal  N = (PetscReal)grid_->Cells()[0] * grid_->Cells()[1] * grid_->Cells()[2];
     PetscCall(KSPGetTolerances(ksp, &rtol, nullptr, &divtol, &maxit));
-    PetscCall(KSPSetTolerances(ksp, rtol, rtol * std::sqrt(N) * (umax / hmin + g) / (hmin * dt), divtol, maxit));
+    PetscCall(KSPSetTolerances(ksp, rtol, rtol * std::sqrt(N) * (umax / (hmin * dt) + g / hmin), divtol, maxit));
   }
   PetscCall(pressure_.Solve(divRhs_, phi_));  // the previous increment is the initial guess
   PetscCall(DMGlobalToLocal(sg_.Cells(), phi_, INSERT_VALUES, phiLocal_));
