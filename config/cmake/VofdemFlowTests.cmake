@@ -10,3 +10,5 @@ vofdem_bad_input_pressure(pressure_bc_periodic "option -flow_pressure_bc_zlo: 'p
 vofdem_bad_input_pressure(pressure_pc_unknown "option -flow_pressure_pc: unknown name 'gamg'" -flow_pressure_pc gamg)
 vofdem_bad_input_pressure(pressure_threshold  "option -flow_pressure_reuse_threshold: -1\\.? is out of range" -flow_pressure_reuse_threshold -1)
 vofdem_bad_input_pressure(pressure_periodic_2 "the pressure solve needs at least 3 cells in the periodic direction x" -grid_periodic x -cells_list 2)
+# A solve that does not converge (two iterations allowed) ends every rank with one line, not a trace or a hang.
+vofdem_bad_input_pressure(pressure_not_converged "pressure solve did not converge: DIVERGED_ITS after 2 iterations" -flow_pressure_ksp_max_it 2)
