@@ -3,7 +3,8 @@ static const char help[] = "Verification F4 (VERIFICATION.md): iteration counts 
                            "constant null space), density ratios -ratios (default 1,1000,8000) in a step-density case (heavy lower\n"
                            "half) and a heavy-sphere case (radius 0.25 at the centre), on -cells_list grids (default 32). At most 20\n"
                            "iterations are allowed. Then: preconditioner reuse under a 1-percent and a 10-percent coefficient change, a restart from\n"
-                           "the saved solver state (bitwise), and the\n"
+                           "the saved solver state (bitwise; the state file goes to -output_dir, or else to a temporary directory removed at\n"
+                           "the end), and the\n"
                            "difference between this run's solution and the same solve on one rank (rank 0 alone). Exits non-zero on failure.\n\n";
 
 #include "vofdem/core/Runtime.hpp"
@@ -11,6 +12,8 @@ static const char help[] = "Verification F4 (VERIFICATION.md): iteration counts 
 #include "vofdem/grid/Grid.hpp"
 
 #include <cmath>
+#include <cstdlib>
+#include <filesystem>
 #include <string>
 
 namespace {
@@ -20,6 +23,38 @@ const PetscInt maxIterations = 20;  // VERIFICATION.md F4
 PetscErrorCode SetOption(const char *name, const std::string &value) {
   PetscFunctionBeginUser;
   PetscCall(PetscOptionsSetValue(nullptr, name, value.c_str()));
+  PetscFunctionReturn(0);
+}
+
+// Where the restart check writes the saved solver state: -output_dir (created if needed, kept), else a new
+// temporary directory (PetscGetTmp: -tmp, $PETSC_TMP or /tmp; removed by the caller), never the current
+// directory. Rank 0 writes the file (binary viewer), so rank 0 makes the directory and tells the others.
+PetscErrorCode StateDirectory(std::string *dir, bool *temporary) {
+  char        given[PETSC_MAX_PATH_LEN] = "", tmp[PETSC_MAX_PATH_LEN] = "";
+  PetscBool   set;
+  PetscMPIInt rank;
+  int         ok = 1;
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscOptionsGetString(nullptr, nullptr, "-output_dir", given, sizeof given, &set));
+  PetscCall(PetscGetTmp(PETSC_COMM_WORLD, tmp, sizeof tmp));
+  PetscCallMPI(MPI_Comm_rank(PETSC_COMM_WORLD, &rank));
+  *temporary = !set;
+  char path[PETSC_MAX_PATH_LEN] = "";
+  if (set) PetscCall(PetscStrncpy(path, given, sizeof path));
+  else PetscCall(PetscSNPrintf(path, sizeof path, "%s/vofdem-ex23-XXXXXX", tmp));
+  if (rank == 0) {
+    std::error_code ec;
+    if (set) ok = std::filesystem::create_directories(path, ec) || std::filesystem::is_directory(path, ec);
+    else ok = mkdtemp(path) != nullptr;
+  }
+  PetscCallMPI(MPI_Bcast(&ok, 1, MPI_INT, 0, PETSC_COMM_WORLD));
+  if (!ok) {
+    if (set) VofdemInputError(PETSC_COMM_WORLD, "option -output_dir: cannot create the folder '%s'", given);
+    VofdemInputError(PETSC_COMM_WORLD, "cannot create a temporary folder in '%s' for the saved solver state (give -output_dir or -tmp)", tmp);
+  }
+  PetscCallMPI(MPI_Bcast(path, sizeof path, MPI_CHAR, 0, PETSC_COMM_WORLD));
+  *dir = path;
   PetscFunctionReturn(0);
 }
 
@@ -132,10 +167,14 @@ PetscErrorCode Run() {
     PetscViewer viewer;
     Vec         pSaved, pOriginal;
     PetscReal   diff;
+    std::string dir;
+    bool        temporary = true;
+    PetscCall(StateDirectory(&dir, &temporary));
+    const std::string file = dir + "/pressure-state.bin";
     PetscCall(VecDuplicate(pr.p, &pSaved));
     PetscCall(VecDuplicate(pr.p, &pOriginal));
     PetscCall(VecCopy(pr.p, pSaved));
-    PetscCall(PetscViewerBinaryOpen(PETSC_COMM_WORLD, "pressure-state.bin", FILE_MODE_WRITE, &viewer));
+    PetscCall(PetscViewerBinaryOpen(PETSC_COMM_WORLD, file.c_str(), FILE_MODE_WRITE, &viewer));
     PetscCall(pr.solver.Save(viewer));
     PetscCall(PetscViewerDestroy(&viewer));
     PetscCall(VecScale(pr.beta, 1.01));
@@ -146,9 +185,17 @@ PetscErrorCode Run() {
     PetscCall(restarted.Create(pr.grid));
     PetscCall(restarted.SetFromOptions());
     PetscCall(restarted.SetUp());
-    PetscCall(PetscViewerBinaryOpen(PETSC_COMM_WORLD, "pressure-state.bin", FILE_MODE_READ, &viewer));
+    PetscCall(PetscViewerBinaryOpen(PETSC_COMM_WORLD, file.c_str(), FILE_MODE_READ, &viewer));
     PetscCall(restarted.Load(viewer));
     PetscCall(PetscViewerDestroy(&viewer));
+    if (temporary) {
+      PetscMPIInt rank;
+      PetscCallMPI(MPI_Comm_rank(PETSC_COMM_WORLD, &rank));
+      if (rank == 0) {
+        std::error_code ec;
+        std::filesystem::remove_all(dir, ec);  // a left-over temporary folder is not worth failing the run for
+      }
+    }
     PetscCall(restarted.SetCoefficient(pr.beta, "option -ratios"));
     PetscCall(restarted.Solve(pr.rhs, pSaved));
     PetscCall(VecAXPY(pSaved, -1, pOriginal));

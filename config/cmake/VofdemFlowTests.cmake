@@ -55,3 +55,5 @@ add_test(NAME flow/rank_agreement
          COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/test/flow/rank_agreement.sh $<TARGET_FILE:vofdem_app> ${CMAKE_CURRENT_SOURCE_DIR}/config/scenes/cavity-re1000.yaml 1e-10
                  -grid_cells 32,32,4 -grid_upper 1,1,0.125 -dt 0.01 -max_steps 60 -monitor_every 60)
 set_tests_properties(flow/rank_agreement PROPERTIES LABELS "quick;flow" PROCESSORS 2 TIMEOUT 600 ENVIRONMENT "VOFDEM_PYTHON=${VOFDEM_PYTHON}")
+# A solve that does not converge (two iterations allowed) ends every rank with one line, not a trace or a hang.
+vofdem_bad_input_pressure(pressure_not_converged "pressure solve did not converge: DIVERGED_ITS after 2 iterations" -flow_pressure_ksp_max_it 2)

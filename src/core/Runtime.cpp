@@ -15,10 +15,11 @@ namespace {
 
 bool g_mpiInitialisedHere = false;
 
-// Prints PETSC_ERR_USER_INPUT as one line; everything else goes to PETSc's trace-back handler.
+// Prints PETSC_ERR_USER_INPUT (bad input) and PETSC_ERR_NOT_CONVERGED (a solver that did not
+// converge) as one line; everything else goes to PETSc's trace-back handler.
 PetscErrorCode InputErrorHandler(MPI_Comm comm, int line, const char *func, const char *file,
                                  PetscErrorCode n, PetscErrorType p, const char *mess, void *ctx) {
-  if (n != PETSC_ERR_USER_INPUT) return PetscTraceBackErrorHandler(comm, line, func, file, n, p, mess, ctx);
+  if (n != PETSC_ERR_USER_INPUT && n != PETSC_ERR_NOT_CONVERGED) return PetscTraceBackErrorHandler(comm, line, func, file, n, p, mess, ctx);
   if (p != PETSC_ERROR_INITIAL) return n;  // the same error passing up the call stack
   int rank = 0, size = 1, worldSize = 1;
   MPI_Comm_rank(comm, &rank);

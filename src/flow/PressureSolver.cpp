@@ -15,13 +15,53 @@ const char *BoundaryName(PressureBoundary b) {
 }
 
 // Sets -flow_pressure_<name> <value> unless the user gave that option: defaults the user can override.
-PetscErrorCode DefaultOption(const char *name, const char *value) {
+// With `inserted`, a default that was set is recorded there, so that the caller can clear it again.
+PetscErrorCode DefaultOption(const char *name, const char *value, std::vector<std::string> *inserted = nullptr) {
   PetscBool given;
 
   PetscFunctionBeginUser;
   const std::string full = std::string("-flow_pressure_") + name;
   PetscCall(PetscOptionsHasName(nullptr, nullptr, full.c_str(), &given));
-  if (!given) PetscCall(PetscOptionsSetValue(nullptr, full.c_str(), value));
+  if (!given) {
+    PetscCall(PetscOptionsSetValue(nullptr, full.c_str(), value));
+    if (inserted) inserted->push_back(full);
+  }
+  PetscFunctionReturn(0);
+}
+
+// The coarsest multigrid level of a singular (all-Neumann/periodic) operator is singular too; when it
+// is a single cell its only entry is the row sum, i.e. round-off (1.5e-6 with BoomerAMG at 128^3 on one
+// rank). hypre's defaults solve that level exactly (BoomerAMG: Gaussian elimination, whose last pivot
+// on a singular level is round-off; PFMG: relaxation, i.e. a division by the one entry), so the
+// correction along the null space is the residual's round-off constant part divided by round-off:
+// huge. CG removes the constant from each preconditioned residual (the attached null space), and that
+// cancellation loses the digits: harmless while the residual is large, fatal near 1e-12 (ex23 at
+// 128^3 on one rank, rtol 1e-12: the residual fell to 3e-12, then grew to 7e-5 and CG stopped with
+// DIVERGED_INDEFINITE_MAT; PFMG failed likewise from 32^3 on). So for a singular operator the coarsest
+// level is never a single cell and is relaxed, not solved:
+//   BoomerAMG: the symmetric smoother of the other levels on the coarsest one, no level below 2 rows;
+//   PFMG: stop coarsening while every direction still has 2 cells.
+// Relaxation divides only by diagonal entries of the operator's own size. Iteration counts to 1e-8
+// did not change (ex23). These defaults are for this solver only: they are cleared again once the KSP
+// has read them.
+PetscErrorCode InsertSingularDefaults(PressurePreconditioner pc, const PetscInt cells[3], std::vector<std::string> *inserted) {
+  char      type[64] = "";
+  PetscBool set;
+
+  PetscFunctionBeginUser;
+  if (pc == PressurePreconditioner::PFMG) {
+    PetscInt levels = 1;  // the fine grid, then one level per halving (PFMG semi-coarsens one direction at a time)
+    for (int d = 0; d < 3; ++d)
+      for (PetscInt n = cells[d]; n > 2; n = (n + 1) / 2) ++levels;
+    PetscCall(DefaultOption("pc_pfmg_max_levels", std::to_string(levels).c_str(), inserted));
+    PetscFunctionReturn(0);
+  }
+  PetscCall(PetscOptionsGetString(nullptr, "flow_pressure_", "-pc_type", type, sizeof type, &set));
+  if (set && std::string(type) != PCHYPRE) PetscFunctionReturn(0);
+  PetscCall(PetscOptionsGetString(nullptr, "flow_pressure_", "-pc_hypre_type", type, sizeof type, &set));
+  if (set && std::string(type) != "boomeramg") PetscFunctionReturn(0);
+  PetscCall(DefaultOption("pc_hypre_boomeramg_relax_type_coarse", "symmetric-SOR/Jacobi", inserted));
+  PetscCall(DefaultOption("pc_hypre_boomeramg_min_coarse_size", "2", inserted));
   PetscFunctionReturn(0);
 }
 
@@ -161,7 +201,10 @@ PetscErrorCode PressureSolver::SetUp() {
     PetscCall(PCHYPRESetType(pc, "boomeramg"));
     PetscCall(InsertBoomerAMGDefaults());
   }
+  std::vector<std::string> singularDefaults;
+  if (nullSpace_) PetscCall(InsertSingularDefaults(pc_, cells_, &singularDefaults));
   PetscCall(KSPSetFromOptions(ksp_));
+  for (const std::string &name : singularDefaults) PetscCall(PetscOptionsClearValue(nullptr, name.c_str()));
   PetscFunctionReturn(0);
 }
 
@@ -255,8 +298,11 @@ PetscErrorCode PressureSolver::Solve(Vec rhs, Vec p) {
   PetscCall(KSPGetIterationNumber(ksp_, &iterations_));
   PetscCall(KSPGetResidualNorm(ksp_, &residual_));
   PetscCall(KSPGetConvergedReason(ksp_, &reason));
-  PetscCheck(reason > 0, comm_, PETSC_ERR_NOT_CONVERGED, "pressure solve did not converge: %s after %" PetscInt_FMT " iterations, residual %g",
-             KSPConvergedReasons[reason], iterations_, (double)residual_);
+  // One line on every rank of comm_ and a non-zero exit (Runtime.hpp), not a trace: the reason names what
+  // to change (-flow_pressure_ksp_max_it, _rtol; -flow_pressure_ksp_monitor shows the history).
+  if (reason <= 0)
+    VofdemRunError(comm_, "pressure solve did not converge: %s after %" PetscInt_FMT " iterations, residual %g (-flow_pressure_ksp_monitor shows the history)",
+                   KSPConvergedReasons[reason], iterations_, (double)residual_);
   PetscFunctionReturn(0);
 }
 

@@ -6,11 +6,16 @@
 // SETERRQ with PETSC_ERR_USER_INPUT; the error handler installed by Initialize() prints that one
 // line (once, on rank 0 of the communicator) instead of PETSc's trace, and aborts the job if the
 // error was raised on fewer ranks than all, so that no rank is left waiting.
+//
+// A run that cannot go on for a reason the user can act on, not a bug (a solver that did not
+// converge), is reported the same way, one line on every rank and a non-zero exit: VofdemRunError(),
+// SETERRQ with PETSC_ERR_NOT_CONVERGED.
 #pragma once
 
 #include <petscsys.h>
 
 #define VofdemInputError(comm, ...) SETERRQ(comm, PETSC_ERR_USER_INPUT, __VA_ARGS__)
+#define VofdemRunError(comm, ...)   SETERRQ(comm, PETSC_ERR_NOT_CONVERGED, __VA_ARGS__)
 
 namespace vofdem {
 
