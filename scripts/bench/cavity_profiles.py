@@ -85,11 +85,11 @@ def observed_order(f):
 
 
 def make_reference(work, env, mpi, say, end_time):
-    say("reference: OpenFOAM at %s to t = %g on 2 ranks (this takes hours)" % (", ".join("%d^3" % g for g in REF_GRIDS), end_time))
+    say("reference: OpenFOAM at %s to t = %g (1 rank up to 32^3, 2 above; this takes hours)" % (", ".join("%d^3" % g for g in REF_GRIDS), end_time))
     prof = {}
     for g in REF_GRIDS:
         t0 = time.monotonic()
-        U, change = steady_foam(g, 2, work, env, mpi, end_time)
+        U, change = steady_foam(g, 1 if g <= 32 else 2, work, env, mpi, end_time)
         say("  %d^3: largest cell velocity change over the last lid passage %.2e (%.0f s)" % (g, change, time.monotonic() - t0))
         for line, comp, name in LINES:
             prof[(line, g)] = at_ref(*centre_line(U, line), comp)
@@ -114,13 +114,18 @@ def make_reference(work, env, mpi, say, end_time):
     say("  written %s" % REF_FILE_NAME)
 
 
-def read_reference():
+def read_reference(column="reference"):
+    """{line: values at S_REF} of one column of the reference file (reference, openfoam32, ...)."""
     ref = {}
+    cols = None
     for l in open(REF_FILE):
-        if l.startswith("#") or l.startswith("line,") or not l.strip():
+        if l.startswith("#") or not l.strip():
             continue
-        v = l.split(",")
-        ref.setdefault(v[0], []).append(float(v[3]))
+        v = l.strip().split(",")
+        if v[0] == "line":
+            cols = v
+            continue
+        ref.setdefault(v[0], []).append(float(v[cols.index(column)]))
     return {k: np.array(v) for k, v in ref.items()}
 
 
@@ -143,6 +148,21 @@ def read_vofdem_profile(path):
     return res
 
 
+def vofdem_steadiness(path):
+    """The end time and the relative change of the flow kinetic energy over the last lid passage."""
+    try:
+        lines = [l.split(",") for l in open(path).read().splitlines() if l.strip()]
+        cols = lines[0]
+        it, ik = cols.index("time_s"), cols.index("flow_kinetic_energy_J")
+        rows = [(float(r[it]), float(r[ik])) for r in lines[1:]]
+    except (OSError, ValueError, IndexError) as e:
+        return "no steady-state check (%s)" % e
+    t_end, k_end = rows[-1]
+    t_prev, k_prev = min(rows, key=lambda r: abs(r[0] - (t_end - 1)))
+    return "ran to t = %.4g; flow kinetic energy %.6e, relative change over t = %.4g..%.4g %.2e" % (
+        t_end, k_end, t_prev, t_end, abs(k_end - k_prev) / max(abs(k_end), 1e-300))
+
+
 def compare(n, work, env, mpi, say, end_time, run_vofdem, VofdemFailed):
     if not os.path.exists(REF_FILE):
         say("profiles: no reference file %s (make it with --reference)" % REF_FILE_NAME)
@@ -158,6 +178,7 @@ def compare(n, work, env, mpi, say, end_time, run_vofdem, VofdemFailed):
     try:
         run_vofdem(2, n, outdir, ["-final_time", "%g" % end_time, "-max_steps", str(int(40 * end_time * n)),
                                   "-monitor_every", str(max(1, n)), "-flow_profile_output", os.path.join(outdir, "profile.csv")])
+        say("  vofdem: %s" % vofdem_steadiness(os.path.join(outdir, "monitor.csv")))
         vp = read_vofdem_profile(os.path.join(outdir, "profile.csv"))
         prof["vofdem"] = {line: np.interp(S_REF, vp[line][0], vp[line][1][:, comp]) for line, comp, _ in LINES}
     except (VofdemFailed, ValueError, KeyError, OSError) as e:
@@ -177,6 +198,9 @@ def compare(n, work, env, mpi, say, end_time, run_vofdem, VofdemFailed):
             err[(code, line)] = d[k]
             cells.append("%.4f (at s = %.3f)" % (d[k], S_REF[k]))
         say("| %s %d^3 | %s |" % (code, n, " | ".join(cells)))
+    for g in REF_GRIDS:
+        of = read_reference("openfoam%d" % g)
+        say("| (OpenFOAM %d^3, reference run) | %s |" % (g, " | ".join("%.4f" % np.abs(of[l] - ref[l]).max() for l, _, _ in LINES)))
     say()
     say("profiles at s = i/8 (reference, OpenFOAM, vofdem):")
     say("| s | u_ref(y) | OpenFOAM | vofdem | v_ref(x) | OpenFOAM | vofdem |")

@@ -94,18 +94,21 @@ def time_vofdem(ranks, n, warmup, steps):
     last = max(wall)
     if first is None or last <= first:
         raise VofdemFailed("monitor.csv has no rows at steps >= %d (steps: %s)" % (warmup, sorted(wall)))
-    dt = rows[-1].get("dt_s", rows[-1].get("dt"))
+    # vofdem adapts dt to its CFL number every step: the mean dt of the timed steps
+    tcol = "time_s" if "time_s" in rows[0] else "time"
+    times = {int(r["step"]): float(r[tcol]) for r in rows} if tcol in rows[0] else None
+    dt = (times[last] - times[first]) / (last - first) if times else float("nan")
     return wall[last] - wall[first], last - first, dt
 
 
 def time_foam(ranks, n, warmup, steps):
     case = os.path.join(WORK, "foam-time-%d" % ranks)
     fc.make_case(case, n, ranks, ENV, steps=warmup + steps)
-    wall, cpu, iters = fc.run_timed(case, ranks, ENV, mpi)
+    wall, cpu, iters, courant = fc.run_timed(case, ranks, ENV, mpi)
     if len(wall) != warmup + steps:
         raise RuntimeError("icoFoam ran %d steps, not %d" % (len(wall), warmup + steps))
     # index k holds the stamp after step k+1: the timed steps are warmup+1 .. warmup+steps
-    return wall[-1] - wall[warmup - 1], cpu[-1] - cpu[warmup - 1], statistics.mean(iters[warmup:])
+    return wall[-1] - wall[warmup - 1], cpu[-1] - cpu[warmup - 1], statistics.mean(iters[warmup:]), courant
 
 
 def max_rss_kb(cmd, cwd):
@@ -154,12 +157,12 @@ def timing(a):
     cpu_us = {1: [], 2: []}
     iters = {1: [], 2: []}
     vofdem_error = None
-    vofdem_dt = None
+    vofdem_dt = []
     say("timing: %d^3 cells, dt %g (CFL 0.5 at the lid speed), from rest, %d warm-up + %d timed steps, %d repeats; "
         "load average at start %s" % (n, 0.5 / n, a.warmup, a.steps, a.repeats, loadavg()))
     for rep in range(a.repeats):
         for ranks in (1, 2):
-            t, tc, it = time_foam(ranks, n, a.warmup, a.steps)
+            t, tc, it, courant = time_foam(ranks, n, a.warmup, a.steps)
             us[("foam", ranks)].append(t / (a.steps * n ** 3) * 1e6)
             cpu_us[ranks].append(tc / (a.steps * n ** 3) * 1e6)
             iters[ranks].append(it)
@@ -167,7 +170,8 @@ def timing(a):
                 rep + 1, ranks, "s" if ranks > 1 else "", us[("foam", ranks)][-1], cpu_us[ranks][-1], it)
             if vofdem_error is None:
                 try:
-                    t, s, vofdem_dt = time_vofdem(ranks, n, a.warmup, a.steps)
+                    t, s, dt = time_vofdem(ranks, n, a.warmup, a.steps)
+                    vofdem_dt.append(dt)
                     us[("vofdem", ranks)].append(t / (s * n ** 3) * 1e6)
                     line += ", vofdem %.3f us" % us[("vofdem", ranks)][-1]
                 except VofdemFailed as e:
@@ -189,9 +193,13 @@ def timing(a):
     say()
     say("OpenFOAM 2-rank parallel efficiency: %.0f %%; GAMG iterations per step (both correctors): %.1f on 1 rank, %.1f on 2"
         % (100 * med[("foam", 1)] / (2 * med[("foam", 2)]), statistics.median(iters[1]), statistics.median(iters[2])))
+    say("OpenFOAM dt %g (fixed), largest Courant number at the last step %.3f" % (0.5 / n, courant))
     if ("vofdem", 2) in med:
-        say("vofdem 2-rank parallel efficiency: %.0f %%; vofdem dt in its monitor: %s (OpenFOAM: %g)" %
-            (100 * med[("vofdem", 1)] / (2 * med[("vofdem", 2)]), vofdem_dt, 0.5 / n))
+        vdt = statistics.median(vofdem_dt)
+        say("vofdem 2-rank parallel efficiency: %.0f %%; vofdem dt (adapted to CFL 0.5 with its own Courant number, "
+            "mean over the timed steps) %.4g = %.2f x OpenFOAM's" % (100 * med[("vofdem", 1)] / (2 * med[("vofdem", 2)]), vdt, vdt * 2 * n))
+        say("cost of one lid passage (t = 1) per cell, = us per cell-step / dt: OpenFOAM %.0f us, vofdem %.0f us on 1 rank" %
+            (med[("foam", 1)] * 2 * n, med[("vofdem", 1)] / vdt))
     if mem:
         say("memory per cell (resident-size slope, %d^3 -> %d^3, 1 rank): OpenFOAM %.0f B, vofdem %s" %
             (mem["n_small"], n, mem["foam"], "%.0f B" % mem["vofdem"] if mem["vofdem"] is not None else "not measured (%s)" % mem["vofdem_error"]))

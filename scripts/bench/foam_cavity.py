@@ -175,15 +175,19 @@ def solver_cmd(ranks, mpi):
 
 def run_timed(case, ranks, env, mpi):
     """Runs icoFoam, stamping each `ExecutionTime` line with the wall clock as it arrives.
-    Returns (wall stamps, ExecutionTime values, p iterations per step); index k = after step k+1."""
+    Returns (wall stamps, ExecutionTime values, p iterations per step, the last largest Courant
+    number); index k = after step k+1."""
     log = os.path.join(case, "log.icoFoam")
-    wall, cpu, iters, step_iters = [], [], [], 0
+    wall, cpu, iters, step_iters, courant = [], [], [], 0, float("nan")
     with open(log, "w") as f:
         p = subprocess.Popen(["stdbuf", "-oL"] + solver_cmd(ranks, mpi), cwd=case, env=env, stdout=subprocess.PIPE,
                              stderr=subprocess.STDOUT, text=True, bufsize=1)
         for line in p.stdout:
             t = time.monotonic()
             f.write(line)
+            m = re.match(r"Courant Number mean: \S+ max: (\S+)", line)
+            if m:
+                courant = float(m.group(1))
             m = re.search(r"Solving for p, .* No Iterations (\d+)", line)
             if m:
                 step_iters += int(m.group(1))
@@ -196,7 +200,7 @@ def run_timed(case, ranks, env, mpi):
         rc = p.wait()
     if rc != 0:
         raise RuntimeError("icoFoam failed (%s):\n%s" % (log, open(log).read()[-3000:]))
-    return wall, cpu, iters
+    return wall, cpu, iters, courant
 
 
 def time_dirs(d):
