@@ -148,7 +148,7 @@ def loadavg():
     try:
         return open("/proc/loadavg").read().split()[0]
     except OSError:
-        return "?"
+        return "0"
 
 
 def timing(a):
@@ -158,8 +158,9 @@ def timing(a):
     iters = {1: [], 2: []}
     vofdem_error = None
     vofdem_dt = []
+    load0 = loadavg()
     say("timing: %d^3 cells, dt %g (CFL 0.5 at the lid speed), from rest, %d warm-up + %d timed steps, %d repeats; "
-        "load average at start %s" % (n, 0.5 / n, a.warmup, a.steps, a.repeats, loadavg()))
+        "load average at start %s" % (n, 0.5 / n, a.warmup, a.steps, a.repeats, load0))
     for rep in range(a.repeats):
         for ranks in (1, 2):
             t, tc, it, courant = time_foam(ranks, n, a.warmup, a.steps)
@@ -179,6 +180,8 @@ def timing(a):
                     line += ", vofdem FAILED"
             say(line)
     say("load average at end %s" % loadavg())
+    if max(float(load0), float(loadavg())) > 2.5:
+        say("WARNING: the machine was not quiet (load average above 2.5 with 2 cores): the absolute figures are unreliable")
     med = {k: statistics.median(v) for k, v in us.items() if v}
     mem = None if a.no_memory else memory(n)
     say()
@@ -221,7 +224,9 @@ def main():
     ap.add_argument("--no-timing", action="store_true", help="skip the timing (with --profiles or --reference)")
     ap.add_argument("--profiles", action="store_true", help="also run both codes to steady state and compare centre-line profiles")
     ap.add_argument("--end-time", type=float, default=cp.END_TIME, help="end time of the steady runs (lid passages)")
-    ap.add_argument("--reference", action="store_true", help="(re)make the reference from OpenFOAM at 32^3, 64^3, 96^3 (hours)")
+    ap.add_argument("--reference", action="store_true", help="(re)make the reference from steady OpenFOAM runs (about an hour on a quiet machine)")
+    ap.add_argument("--reference-grids", default=",".join(map(str, cp.REF_GRIDS)),
+                    help="three grids for --reference: Richardson from the first and last (multiples of 32), the middle one as a check")
     ap.add_argument("--no-record", action="store_true", help="do not write the block into results/")
     a = ap.parse_args()
     if a.warmup < 1 or a.steps < 1:
@@ -229,7 +234,10 @@ def main():
     os.makedirs(WORK, exist_ok=True)
     argv = " ".join(sys.argv[1:])
     if a.reference:
-        cp.make_reference(WORK, ENV, mpi, say, a.end_time)
+        grids = tuple(int(g) for g in a.reference_grids.split(","))
+        if len(grids) != 3 or sorted(grids) != list(grids):
+            sys.exit("flow-vs-openfoam: --reference-grids takes three increasing cell counts")
+        cp.make_reference(WORK, ENV, mpi, say, a.end_time, grids)
     if not a.no_timing:
         timing(a)
     if a.profiles:
@@ -243,7 +251,7 @@ def record(argv):
     """Puts this run's output at the top of results/bench-flow-vs-openfoam.md (newest first)."""
     try:
         commit = subprocess.run(["git", "-C", ROOT, "rev-parse", "--short", "HEAD"], capture_output=True, text=True).stdout.strip()
-        dirty = subprocess.run(["git", "-C", ROOT, "diff", "--quiet", "HEAD", "--", "src"], capture_output=True).returncode != 0
+        dirty = subprocess.run(["git", "-C", ROOT, "diff", "--quiet", "HEAD", "--", "src", "include", "scripts", "config"], capture_output=True).returncode != 0
     except OSError:
         commit, dirty = "unknown", False
     head = "# Flow speed against OpenFOAM v1912 (scripts/bench/flow-vs-openfoam)\n\n" \
@@ -255,7 +263,7 @@ def record(argv):
     cut = old.find("\n## ")
     top, rest = (old, "") if cut < 0 else (old[:cut + 1], old[cut + 1:])
     block = "## %s, commit %s%s: `%s`\n\n```\n%s\n```\n\n" % (
-        datetime.date.today().isoformat(), commit or "unknown", " (src modified)" if dirty else "",
+        datetime.date.today().isoformat(), commit or "unknown", " (with uncommitted changes)" if dirty else "",
         ("flow-vs-openfoam " + argv).strip(), "\n".join(OUT).strip("\n"))
     with open(RESULTS, "w") as f:
         f.write(top.rstrip("\n") + "\n\n" + block + rest)

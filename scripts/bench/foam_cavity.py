@@ -143,6 +143,11 @@ def run(cmd, cwd, env, log):
         raise RuntimeError("command failed (%s): %s\n%s" % (log, " ".join(cmd), open(log).read()[-3000:]))
 
 
+def signature(n, ranks, smoother="GaussSeidel", **control):
+    """Everything that defines a run (to reuse a finished steady run)."""
+    return "ranks %d\n%s%s%s%s" % (ranks, control_dict(n, **control), FV_SCHEMES, fv_solution(smoother), block_mesh_dict(n))
+
+
 def make_case(case, n, ranks, env, smoother="GaussSeidel", **control):
     """A fresh case directory; the mesh is made once per n and copied."""
     if os.path.isdir(case):
