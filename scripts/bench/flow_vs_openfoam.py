@@ -1,7 +1,8 @@
 """Runs the flow benchmark of issue 4 in vofdem and OpenFOAM v1912 (see flow-vs-openfoam).
 
 The case: 3-D lid-driven cavity at Re 100 (unit cube, lid (1,0,0) on y = 1, nu = 0.01, rho = 1),
-N^3 cells in both codes, CFL 0.5 at the lid speed (dt = 0.5/N), both starting from rest.
+N^3 cells in both codes, both starting from rest; OpenFOAM with dt = 0.5/N (CFL 0.5 at the lid speed),
+vofdem with the dt its own CFL 0.5 gives (adapted every step; both dt are printed).
 Timing: each code takes --warmup steps, then --steps timed steps; microseconds per cell-step =
 wall time of the timed steps / (steps * N^3), on 1 and 2 ranks, back to back, --repeats times;
 medians. Memory per cell: slope of the peak resident size between 32^3 and N^3 (1 rank).
@@ -10,14 +11,12 @@ x = z = 0.5 and v(x) at y = z = 0.5 are compared with the reference in data/ (ma
 """
 import argparse
 import datetime
-import math
 import os
 import re
 import statistics
 import subprocess
 import sys
 
-import numpy as np
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import foam_cavity as fc  # noqa: E402
@@ -66,8 +65,11 @@ def run_vofdem(ranks, n, outdir, extra):
     with open(os.path.join(outdir, "stdout.txt"), "w") as f:
         f.write(" ".join(cmd) + "\n" + p.stdout + p.stderr)
     if p.returncode != 0:
-        lines = [l for l in (p.stderr + p.stdout).splitlines() if l.strip()]
-        raise VofdemFailed("exit %d: %s" % (p.returncode, lines[-1] if lines else "(no output)"))
+        # vofdem's own one-line error if there is one, not mpiexec's banner after it
+        lines = [l.strip() for l in (p.stderr + p.stdout).splitlines() if l.strip().strip("-")]
+        errors = [l for l in lines if "error" in l.lower()]
+        raise VofdemFailed("exit %d: %s (output in %s)" % (p.returncode, (errors or lines or ["(no output)"])[0],
+                                                          os.path.relpath(os.path.join(outdir, "stdout.txt"), ROOT)))
     return p.stdout
 
 
@@ -224,7 +226,7 @@ def main():
     ap.add_argument("--no-timing", action="store_true", help="skip the timing (with --profiles or --reference)")
     ap.add_argument("--profiles", action="store_true", help="also run both codes to steady state and compare centre-line profiles")
     ap.add_argument("--end-time", type=float, default=cp.END_TIME, help="end time of the steady runs (lid passages)")
-    ap.add_argument("--reference", action="store_true", help="(re)make the reference from steady OpenFOAM runs (about an hour on a quiet machine)")
+    ap.add_argument("--reference", action="store_true", help="(re)make the reference from steady OpenFOAM runs (under an hour on a quiet machine, hours on a busy one)")
     ap.add_argument("--reference-grids", default=",".join(map(str, cp.REF_GRIDS)),
                     help="three grids for --reference: Richardson from the first and last (multiples of 32), the middle one as a check")
     ap.add_argument("--no-record", action="store_true", help="do not write the block into results/")
