@@ -119,6 +119,7 @@ PetscErrorCode Flow::SetUp(const PetscReal gravity[3]) {
   PetscCall(PetscLogEventRegister("FlowPredict", DM_CLASSID, &evPredict_));
   PetscCall(PetscLogEventRegister("FlowProject", DM_CLASSID, &evProject_));
   PetscCall(PetscLogEventRegister("FlowGhosts", DM_CLASSID, &evGhosts_));
+  PetscCall(PetscLogEventRegister("FlowViscousAsm", DM_CLASSID, &evViscousAssemble_));
   PetscCall(UpdateLocals(true));  // the monitor reads the ghosted fields before the first step
   PetscFunctionReturn(0);
 }
@@ -179,7 +180,7 @@ PetscErrorCode Flow::UpdateLocals(bool properties) {
     PetscCall(bc_.FillCellGhosts(sg_, epsLocal_));
     PetscCall(pressure_.SetCoefficient(beta_, "flow: eps/rho"));
     propertiesDirty_ = false;
-    propertyVersionDt_ = -1;  // the viscous matrix must be rebuilt
+    viscousStale_ = PETSC_TRUE;  // the viscous matrix must be rebuilt, not only its diagonal
   }
   for (int d = 0; d < 3; ++d) {
     PetscCall(DMGlobalToLocal(sg_.Face(d), u_[d], INSERT_VALUES, uLocal_[d]));
@@ -196,9 +197,11 @@ PetscErrorCode Flow::Step(PetscReal t, PetscReal dt) {
   PetscCall(PetscLogEventBegin(evGhosts_, 0, 0, 0, 0));
   PetscCall(UpdateLocals(propertiesDirty_));
   PetscCall(PetscLogEventEnd(evGhosts_, 0, 0, 0, 0));
-  if (implicitViscosity_ && propertyVersionDt_ != dt) {
-    PetscCall(viscous_.Assemble(dt, epsLocal_, betaLocal_, emLocal_));
-    propertyVersionDt_ = dt;
+  if (implicitViscosity_ && (viscousStale_ || viscous_.AssembledDt() != dt)) {
+    PetscCall(PetscLogEventBegin(evViscousAssemble_, 0, 0, 0, 0));
+    PetscCall(viscous_.Assemble(dt, epsLocal_, betaLocal_, emLocal_, viscousStale_));
+    PetscCall(PetscLogEventEnd(evViscousAssemble_, 0, 0, 0, 0));
+    viscousStale_ = PETSC_FALSE;
   }
   PetscCall(ComputeExplicitTerms());
   PetscCall(Predict(t, dt));

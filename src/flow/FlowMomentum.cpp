@@ -97,13 +97,19 @@ PetscErrorCode Flow::ComputeExplicitTerms() {
   PetscCall(sg_.GetLocal(3, epsLocal_, &F.eps));
   const PetscReal *h = grid_->Spacing();
   for (int d = 0; d < 3; ++d) {
-    PetscCall(VecSet(H_[d], 0));
-    PetscCall(VecSet(L_[d], 0));
     PetscCall(sg_.GetGlobal(d, H_[d], &F.H));
     PetscCall(sg_.GetGlobal(d, L_[d], &F.L));
     sg_.Owned(d, s, n);
     if (!grid_->Periodic(d)) {  // boundary faces of this component are set by the boundary conditions
       const PetscInt last = sg_.Points(d, d) - 1;
+      for (PetscInt plane : {(PetscInt)0, last}) {  // their terms are zero (the faces are not advanced)
+        if (plane < s[d] || plane >= s[d] + n[d]) continue;
+        PetscInt q[3];
+        const int e1 = (d + 1) % 3, e2 = (d + 2) % 3;
+        q[d] = plane;
+        for (q[e2] = s[e2]; q[e2] < s[e2] + n[e2]; ++q[e2])
+          for (q[e1] = s[e1]; q[e1] < s[e1] + n[e1]; ++q[e1]) F.H.at(q) = F.L.at(q) = 0;
+      }
       const PetscInt a = std::max(s[d], (PetscInt)1), b = std::min(s[d] + n[d], last);
       s[d] = a;
       n[d] = std::max(b - a, (PetscInt)0);
@@ -168,34 +174,41 @@ PetscErrorCode Flow::Predict(PetscReal t, PetscReal dt) {
     PetscCall(sg_.GetGlobal(d, L_[d], &L));
     PetscCall(sg_.GetGlobal(d, rhsFace_[d], &R));
     sg_.Owned(d, s, n);
-    const PetscInt last = sg_.Points(d, d) - 1;
+    const PetscInt  last = sg_.Points(d, d) - 1, cs = beta.stride[d];  // cs: the cell below a face
+    const bool      walls = !grid_->Periodic(d);
+    // Hot loop over rows along x: pointers into each array (faces and cells differ in size).
     for (PetscInt k = s[2]; k < s[2] + n[2]; ++k)
-      for (PetscInt j = s[1]; j < s[1] + n[1]; ++j)
-        for (PetscInt i = s[0]; i < s[0] + n[0]; ++i) {
-          PetscInt q[3] = {i, j, k}, cm[3] = {i, j, k};
-          if (!grid_->Periodic(d) && (q[d] == 0 || q[d] == last)) {
-            R.at(q) = u.at(q);  // identity rows of the viscous matrix; ApplyNormal sets the value
+      for (PetscInt j = s[1]; j < s[1] + n[1]; ++j) {
+        PetscScalar       *uq = &u.at(s[0], j, k), *Rq = &R.at(s[0], j, k);
+        const PetscScalar *Hq = &H.at(s[0], j, k), *Hoq = &Ho.at(s[0], j, k), *Lq = &L.at(s[0], j, k);
+        const PetscScalar *bq = &beta.at(s[0], j, k), *eq = &eps.at(s[0], j, k), *pq = &p.at(s[0], j, k);
+        const PetscInt     qd = d == 1 ? j : k;  // the face index along d when d is not x
+        const bool         rowOnWall = walls && d != 0 && (qd == 0 || qd == last);
+        for (PetscInt i = 0; i < n[0]; ++i) {
+          if (rowOnWall || (walls && d == 0 && (s[0] + i == 0 || s[0] + i == last))) {
+            Rq[i] = uq[i];  // identity rows of the viscous matrix; ApplyNormal sets the value
             continue;
           }
-          cm[d] -= 1;
-          const PetscReal bL = PetscRealPart(beta.at(cm)), bR = PetscRealPart(beta.at(q));
-          const PetscReal eF = 0.5 * PetscRealPart(eps.at(cm) + eps.at(q)), bF = 2 * bL * bR / (bL + bR);
+          const PetscReal bL = PetscRealPart(bq[i - cs]), bR = PetscRealPart(bq[i]);
+          const PetscReal eF = 0.5 * PetscRealPart(eq[i - cs] + eq[i]), bF = 2 * bL * bR / (bL + bR);
           const PetscReal invRho = bF / eF, epsRho = eF * eF / bF;
-          PetscReal       acc = c1 * PetscRealPart(H.at(q)) + c0 * PetscRealPart(Ho.at(q)) + gravity_[d];
-          acc -= invRho * PetscRealPart(p.at(q) - p.at(cm)) / h[d];
+          PetscReal       acc = c1 * PetscRealPart(Hq[i]) + c0 * PetscRealPart(Hoq[i]) + gravity_[d];
+          acc -= invRho * PetscRealPart(pq[i] - pq[i - cs]) / h[d];
           if (forcing_) {
-            PetscReal x[3];
+            const PetscInt q[3] = {s[0] + i, j, k};
+            PetscReal      x[3];
             for (int c = 0; c < 3; ++c) x[c] = lo[c] + (c == d ? q[c] : q[c] + 0.5) * h[c];
             acc += forcing_(forcingCtx_, t + 0.5 * dt, x, d);
           }
           if (implicitViscosity_) {
-            R.at(q) = epsRho * (PetscRealPart(u.at(q)) / dt + acc) + 0.5 * PetscRealPart(L.at(q));
+            Rq[i] = epsRho * (PetscRealPart(uq[i]) / dt + acc) + 0.5 * PetscRealPart(Lq[i]);
             // Initial guess of the viscous solve: the explicit (Euler) prediction, which leaves CG
             // only the change of the viscous term over the step (about a third of the iterations
             // that u^n as the guess took on the 64^3 cavity).
-            u.at(q) += dt * (acc + PetscRealPart(L.at(q)) / epsRho);
-          } else R.at(q) = u.at(q) + dt * acc;
+            uq[i] += dt * (acc + PetscRealPart(Lq[i]) / epsRho);
+          } else Rq[i] = uq[i] + dt * acc;
         }
+      }
     PetscCall(sg_.RestoreGlobal(d, rhsFace_[d], &R));
     PetscCall(sg_.RestoreGlobal(d, L_[d], &L));
     PetscCall(sg_.RestoreGlobal(d, haveOld_ ? Hold_[d] : H_[d], &Ho));

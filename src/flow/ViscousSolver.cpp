@@ -12,6 +12,8 @@ PetscErrorCode ViscousSolver::Create(const StaggeredGrid &sg, const FlowBoundary
     PetscCall(DMCreateMatrix(sg.FaceMatrixDM(d), &A_[d]));
     PetscCall(MatSetOption(A_[d], MAT_SYMMETRIC, PETSC_TRUE));
     PetscCall(DMCreateGlobalVector(sg.Face(d), &bcRhs_[d]));
+    PetscCall(VecDuplicate(bcRhs_[d], &diag_[d]));
+    PetscCall(VecDuplicate(bcRhs_[d], &K_[d]));
     PetscCall(KSPCreate(sg.Base().Comm(), &ksp_[d]));
     PetscCall(KSPSetOptionsPrefix(ksp_[d], "flow_viscous_"));
     PetscCall(KSPSetOperators(ksp_[d], A_[d], A_[d]));
@@ -32,93 +34,136 @@ PetscErrorCode ViscousSolver::SetFromOptions() {
   PetscFunctionReturn(0);
 }
 
-// Rows as in Flow's explicit evaluation of div(eps mu grad u) (FlowMomentum.cpp), halved for
+// One row as in Flow's explicit evaluation of div(eps mu grad u) (FlowMomentum.cpp), halved for
 // Crank-Nicolson: the same coefficients, so that the implicit and explicit halves are one operator.
-PetscErrorCode ViscousSolver::Assemble(PetscReal dt, Vec epsLocal, Vec betaLocal, Vec emLocal) {
-  LocalField eps, beta, em, rb;
-  PetscInt   s[3], n[3];
+// Row of face q of component d: col/val[0] the diagonal, then the nc-1 neighbours; *rhs the part
+// of the prescribed boundary velocities. A boundary face of the component itself: identity row.
+// The diagonal is returned as mass/dt + K with K the viscous part (*K), so that the diagonal-only
+// update (Assemble) forms it from the stored K in the same way, bitwise as a full assembly at the
+// new dt would (restarts rebuild the matrix from scratch).
+PetscInt ViscousSolver::Row(int d, const PetscInt q[3], PetscReal dt, const LocalField &eps, const LocalField &beta, const LocalField &em,
+                            MatStencil col[7], PetscScalar val[7], PetscReal *rhs, PetscReal *K) const {
+  const Grid      &g = sg_->Base();
+  const PetscReal *h = g.Spacing(), *lo = g.Lower();
+  const PetscInt   lastFace = sg_->Points(d, d) - 1;
+  col[0] = {q[2], q[1], q[0], 0};
+  *rhs   = 0;
+  if (!g.Periodic(d) && (q[d] == 0 || q[d] == lastFace)) {
+    val[0] = *K = 1;
+    return 1;
+  }
+  PetscInt nc = 1;
+  PetscInt cm[3] = {q[0], q[1], q[2]};
+  cm[d] -= 1;  // the cell below the face along d
+  const PetscReal bL = PetscRealPart(beta.at(cm)), bR = PetscRealPart(beta.at(q));
+  const PetscReal eF = 0.5 * PetscRealPart(eps.at(cm) + eps.at(q)), bF = 2 * bL * bR / (bL + bR);
+  PetscReal       diag = 0;
+  for (int e = 0; e < 3; ++e)
+    for (int side = 0; side < 2; ++side) {
+      PetscInt nb[3] = {q[0], q[1], q[2]};
+      nb[e] += side ? 1 : -1;
+      PetscReal a;  // eps*mu at the shared control-volume face, / h_e^2
+      if (e == d) {
+        const PetscInt *c = side ? q : cm;
+        a = PetscRealPart(em.at(c)) / (h[e] * h[e]);
+      } else {
+        // the four cells around the edge: q and cm, and both shifted along e
+        PetscInt c1[3] = {q[0], q[1], q[2]}, c3[3];
+        c1[e] += side ? 1 : -1;
+        for (int k = 0; k < 3; ++k) c3[k] = c1[k];
+        c3[d] -= 1;
+        a = 0.25 * PetscRealPart(em.at(q) + em.at(cm) + em.at(c1) + em.at(c3)) / (h[e] * h[e]);
+      }
+      a *= 0.5;  // Crank-Nicolson half
+      const bool outside = !g.Periodic(e) && (e == d ? (nb[e] == 0 || nb[e] == lastFace) : (nb[e] < 0 || nb[e] >= g.Cells()[e]));
+      if (!outside) {
+        col[nc]   = {nb[2], nb[1], nb[0], 0};
+        val[nc++] = -a;
+        diag += a;
+        continue;
+      }
+      const int       f = 2 * e + side;
+      const FlowFace &F = bc_->Face(f);
+      PetscReal       x[3];
+      for (int k = 0; k < 3; ++k) x[k] = lo[k] + (k == d ? q[k] : q[k] + 0.5) * h[k];
+      if (e == d) {  // a boundary face of this component: its value is known (or zero gradient)
+        if (F.type == FlowBoundaryType::Outflow) continue;
+        x[d] = side ? g.Upper()[d] : lo[d];
+        diag += a;
+        *rhs += a * bc_->Prescribed(f, d, x);
+      } else if (F.type == FlowBoundaryType::Wall || F.type == FlowBoundaryType::Inflow) {
+        // ghost = 2 U_b - u: the face value U_b is half a cell away
+        x[e] = side ? g.Upper()[e] : lo[e];
+        diag += 2 * a;
+        *rhs += 2 * a * bc_->Prescribed(f, d, x);
+      }  // slip, outflow: zero gradient, no flux
+    }
+  *K     = diag;
+  val[0] = MassOverDt(eF, bF, dt) + diag;
+  return nc;
+}
+
+// Full assembly when the coefficients changed; when only dt did, only the diagonal holds 1/dt, so
+// it alone is recomputed and set (MatDiagonalSet): the same matrix for a fraction of the cost of
+// MatSetValuesStencil on every row (dt changes every few steps while a flow develops).
+PetscErrorCode ViscousSolver::Assemble(PetscReal dt, Vec epsLocal, Vec betaLocal, Vec emLocal, PetscBool coefficientsChanged) {
+  LocalField eps, beta, em, out;  // out: K (full assembly) or the new diagonal
+  PetscInt   s[3], n[3], q[3];
+  MatStencil  col[7];
+  PetscScalar val[7];
+  PetscReal   rhs;
 
   PetscFunctionBeginUser;
   dt_ = dt;
-  const Grid      &g = sg_->Base();
-  const PetscReal *h = g.Spacing(), *lo = g.Lower();
   PetscCall(sg_->GetLocal(3, epsLocal, &eps));
   PetscCall(sg_->GetLocal(3, betaLocal, &beta));
   PetscCall(sg_->GetLocal(3, emLocal, &em));
   for (int d = 0; d < 3; ++d) {
-    PetscCall(MatZeroEntries(A_[d]));
-    PetscCall(VecSet(bcRhs_[d], 0));
-    PetscCall(sg_->GetGlobal(d, bcRhs_[d], &rb));
     sg_->Owned(d, s, n);
-    const PetscInt lastFace = sg_->Points(d, d) - 1;
-    PetscInt       q[3];
-    for (q[2] = s[2]; q[2] < s[2] + n[2]; ++q[2])
-      for (q[1] = s[1]; q[1] < s[1] + n[1]; ++q[1])
-        for (q[0] = s[0]; q[0] < s[0] + n[0]; ++q[0]) {
-          MatStencil  row = {q[2], q[1], q[0], 0}, col[7];
-          PetscScalar val[7];
-          PetscInt    nc = 1;
-          const bool  boundary = !g.Periodic(d) && (q[d] == 0 || q[d] == lastFace);
-          if (boundary) {
-            col[0] = row;
-            val[0] = 1;
-            PetscCall(MatSetValuesStencil(A_[d], 1, &row, 1, col, val, INSERT_VALUES));
-            continue;
+    if (coefficientsChanged || !assembled_) {
+      LocalField rb;
+      PetscCall(MatZeroEntries(A_[d]));
+      PetscCall(sg_->GetGlobal(d, bcRhs_[d], &rb));
+      PetscCall(sg_->GetGlobal(d, K_[d], &out));
+      for (q[2] = s[2]; q[2] < s[2] + n[2]; ++q[2])
+        for (q[1] = s[1]; q[1] < s[1] + n[1]; ++q[1])
+          for (q[0] = s[0]; q[0] < s[0] + n[0]; ++q[0]) {
+            const PetscInt nc = Row(d, q, dt, eps, beta, em, col, val, &rhs, &out.at(q));
+            rb.at(q)          = rhs;
+            PetscCall(MatSetValuesStencil(A_[d], 1, col, nc, col, val, INSERT_VALUES));
           }
-          PetscInt cm[3] = {q[0], q[1], q[2]};
-          cm[d] -= 1;  // the cell below the face along d
-          const PetscReal bL = PetscRealPart(beta.at(cm)), bR = PetscRealPart(beta.at(q));
-          const PetscReal eF = 0.5 * PetscRealPart(eps.at(cm) + eps.at(q)), bF = 2 * bL * bR / (bL + bR);
-          PetscReal       diag = eF * eF / bF / dt, rhs = 0;
-          for (int e = 0; e < 3; ++e)
-            for (int side = 0; side < 2; ++side) {
-              PetscInt nb[3] = {q[0], q[1], q[2]};
-              nb[e] += side ? 1 : -1;
-              PetscReal a;  // eps*mu at the shared control-volume face, / h_e^2
-              if (e == d) {
-                const PetscInt *c = side ? q : cm;
-                a = PetscRealPart(em.at(c)) / (h[e] * h[e]);
-              } else {
-                // the four cells around the edge: q and cm, and both shifted along e
-                PetscInt c1[3] = {q[0], q[1], q[2]}, c3[3];
-                c1[e] += side ? 1 : -1;
-                for (int k = 0; k < 3; ++k) c3[k] = c1[k];
-                c3[d] -= 1;
-                a = 0.25 * PetscRealPart(em.at(q) + em.at(cm) + em.at(c1) + em.at(c3)) / (h[e] * h[e]);
-              }
-              a *= 0.5;  // Crank-Nicolson half
-              const bool outside = !g.Periodic(e) && (e == d ? (nb[e] == 0 || nb[e] == lastFace) : (nb[e] < 0 || nb[e] >= g.Cells()[e]));
-              if (!outside) {
-                col[nc] = {nb[2], nb[1], nb[0], 0};
-                val[nc++] = -a;
-                diag += a;
-                continue;
-              }
-              const int       f = 2 * e + side;
-              const FlowFace &F = bc_->Face(f);
-              PetscReal       x[3];
-              for (int k = 0; k < 3; ++k) x[k] = lo[k] + (k == d ? q[k] : q[k] + 0.5) * h[k];
-              if (e == d) {  // a boundary face of this component: its value is known (or zero gradient)
-                if (F.type == FlowBoundaryType::Outflow) continue;
-                x[d] = side ? g.Upper()[d] : lo[d];
-                diag += a;
-                rhs += a * bc_->Prescribed(f, d, x);
-              } else if (F.type == FlowBoundaryType::Wall || F.type == FlowBoundaryType::Inflow) {
-                // ghost = 2 U_b - u: the face value U_b is half a cell away
-                x[e] = side ? g.Upper()[e] : lo[e];
-                diag += 2 * a;
-                rhs += 2 * a * bc_->Prescribed(f, d, x);
-              }  // slip, outflow: zero gradient, no flux
+      PetscCall(sg_->RestoreGlobal(d, K_[d], &out));
+      PetscCall(sg_->RestoreGlobal(d, bcRhs_[d], &rb));
+      PetscCall(MatAssemblyBegin(A_[d], MAT_FINAL_ASSEMBLY));
+      PetscCall(MatAssemblyEnd(A_[d], MAT_FINAL_ASSEMBLY));
+    } else {
+      LocalField K;
+      PetscCall(sg_->GetGlobal(d, diag_[d], &out));
+      PetscCall(sg_->GetGlobal(d, K_[d], &K));
+      const PetscInt last = sg_->Points(d, d) - 1, cs = beta.stride[d];
+      const bool     walls = !sg_->Base().Periodic(d);
+      for (PetscInt k = s[2]; k < s[2] + n[2]; ++k)
+        for (PetscInt j = s[1]; j < s[1] + n[1]; ++j) {
+          PetscScalar       *o = &out.at(s[0], j, k);
+          const PetscScalar *Kq = &K.at(s[0], j, k), *bq = &beta.at(s[0], j, k), *eq = &eps.at(s[0], j, k);
+          const PetscInt     qd = d == 1 ? j : k;
+          const bool         rowOnWall = walls && d != 0 && (qd == 0 || qd == last);
+          for (PetscInt i = 0; i < n[0]; ++i) {
+            if (rowOnWall || (walls && d == 0 && (s[0] + i == 0 || s[0] + i == last))) {
+              o[i] = Kq[i];  // identity row
+              continue;
             }
-          col[0] = row;
-          val[0] = diag;
-          rb.at(q) = rhs;
-          PetscCall(MatSetValuesStencil(A_[d], 1, &row, nc, col, val, INSERT_VALUES));
+            const PetscReal bL = PetscRealPart(bq[i - cs]), bR = PetscRealPart(bq[i]);
+            const PetscReal eF = 0.5 * PetscRealPart(eq[i - cs] + eq[i]), bF = 2 * bL * bR / (bL + bR);
+            o[i] = MassOverDt(eF, bF, dt) + PetscRealPart(Kq[i]);
+          }
         }
-    PetscCall(sg_->RestoreGlobal(d, bcRhs_[d], &rb));
-    PetscCall(MatAssemblyBegin(A_[d], MAT_FINAL_ASSEMBLY));
-    PetscCall(MatAssemblyEnd(A_[d], MAT_FINAL_ASSEMBLY));
+      PetscCall(sg_->RestoreGlobal(d, K_[d], &K));
+      PetscCall(sg_->RestoreGlobal(d, diag_[d], &out));
+      PetscCall(MatDiagonalSet(A_[d], diag_[d], INSERT_VALUES));
+    }
   }
+  assembled_ = PETSC_TRUE;
   PetscCall(sg_->RestoreLocal(3, emLocal, &em));
   PetscCall(sg_->RestoreLocal(3, betaLocal, &beta));
   PetscCall(sg_->RestoreLocal(3, epsLocal, &eps));
@@ -159,6 +204,8 @@ PetscErrorCode ViscousSolver::Destroy() {
     PetscCall(KSPDestroy(&ksp_[d]));
     PetscCall(MatDestroy(&A_[d]));
     PetscCall(VecDestroy(&bcRhs_[d]));
+    PetscCall(VecDestroy(&diag_[d]));
+    PetscCall(VecDestroy(&K_[d]));
   }
   PetscFunctionReturn(0);
 }

@@ -19,12 +19,15 @@ inline PetscReal LimitedFace(PetscReal uU, PetscReal uC, PetscReal uD) {
   const PetscReal dD = uD - uC, dU = uC - uU;
   if constexpr (L == Limiter::Upwind) return uC;
   else if constexpr (L == Limiter::Central) return uC + 0.5 * dD;
-  else {
+  else if constexpr (L == Limiter::VanLeer) {
+    // psi = 2r/(1+r): u_f = u_C + dU dD/(dU + dD), one division; zero at an extremum (dU dD <= 0).
+    const PetscReal p = dU * dD;
+    return p > 0 ? uC + p / (dU + dD) : uC;
+  } else {
     if (dD * dU <= 0) return uC;  // extremum (or flat): first order, no new extrema
     const PetscReal r = dU / dD;   // > 0 here
     PetscReal       psi;
     if constexpr (L == Limiter::Minmod) psi = std::fmin(r, 1.0);
-    else if constexpr (L == Limiter::VanLeer) psi = 2 * r / (1 + r);
     else if constexpr (L == Limiter::MC) psi = std::fmin(std::fmin(2 * r, 0.5 * (1 + r)), 2.0);
     else if constexpr (L == Limiter::Superbee) psi = std::fmax(std::fmin(2 * r, 1.0), std::fmin(r, 2.0));
     else psi = std::fmin(std::fmin(2 * r, (1 + 2 * r) / 3), 2.0);  // Koren

@@ -112,9 +112,9 @@ private:
   void     *forcingCtx_ = nullptr;
   // last step, for the monitor
   FlowSummary last_;
-  PetscReal   propertyVersionDt_ = -1;
+  PetscBool   viscousStale_ = PETSC_TRUE;  // properties changed since the viscous matrix was assembled
   bool        propertiesDirty_ = true;
-  PetscLogEvent evExplicit_ = 0, evPredict_ = 0, evProject_ = 0, evGhosts_ = 0;
+  PetscLogEvent evExplicit_ = 0, evPredict_ = 0, evProject_ = 0, evGhosts_ = 0, evViscousAssemble_ = 0;
 };
 
 }  // namespace vofdem

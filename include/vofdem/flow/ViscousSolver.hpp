@@ -19,7 +19,8 @@ public:
   PetscErrorCode Create(const StaggeredGrid &sg, const FlowBoundary &bc);
   PetscErrorCode SetFromOptions();
   // Cell fields as ghosted local vectors of StaggeredGrid::Cells(): eps, beta = eps/rho, eps*mu.
-  PetscErrorCode Assemble(PetscReal dt, Vec epsLocal, Vec betaLocal, Vec emLocal);
+  // Without coefficientsChanged (and after a first assembly) only the diagonal is recomputed.
+  PetscErrorCode Assemble(PetscReal dt, Vec epsLocal, Vec betaLocal, Vec emLocal, PetscBool coefficientsChanged);
   PetscErrorCode Solve(int d, Vec rhs, Vec u);  // u: initial guess in, solution out
   Vec            BoundaryRhs(int d) const { return bcRhs_[d]; }
   PetscInt       Iterations() const { return iterations_; }
@@ -28,11 +29,19 @@ public:
   PetscErrorCode Destroy();
 
 private:
+  PetscInt Row(int d, const PetscInt q[3], PetscReal dt, const LocalField &eps, const LocalField &beta, const LocalField &em, MatStencil col[7],
+               PetscScalar val[7], PetscReal *rhs, PetscReal *K) const;
+  // (eps rho)_f / dt from the face means eps_f and b_f = (eps/rho)_f (harmonic), as in the rhs.
+  static PetscReal MassOverDt(PetscReal eF, PetscReal bF, PetscReal dt) { return eF * eF / bF / dt; }
+
   const StaggeredGrid *sg_ = nullptr;
   const FlowBoundary  *bc_ = nullptr;
   Mat                  A_[3] = {nullptr, nullptr, nullptr};
   KSP                  ksp_[3] = {nullptr, nullptr, nullptr};
   Vec                  bcRhs_[3] = {nullptr, nullptr, nullptr};
+  Vec                  diag_[3] = {nullptr, nullptr, nullptr};  // scratch of the diagonal-only update
+  Vec                  K_[3] = {nullptr, nullptr, nullptr};     // viscous part of the diagonal (identity rows: 1)
+  PetscBool            assembled_ = PETSC_FALSE;
   PetscReal            dt_ = -1;
   PetscInt             iterations_ = 0;
 };
