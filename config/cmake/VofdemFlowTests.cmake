@@ -18,7 +18,7 @@ vofdem_bad_input_pressure(pressure_periodic_2 "the pressure solve needs at least
 # against Botella & Peyret are in the validate tier.
 foreach(ranks 1 2)
   add_test(NAME flow/f2_cavity_re100_${ranks}
-           COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/test/flow/cavity_run.sh $<TARGET_FILE:vofdem_app> ${ranks} ${CMAKE_CURRENT_SOURCE_DIR}/config/scenes/cavity-re100.yaml 100 0.01
+           COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/test/flow/cavity_run.sh $<TARGET_FILE:vofdem_app> ${ranks} ${CMAKE_CURRENT_SOURCE_DIR}/config/scenes/cavity-re100.yaml 100 0.01/0.01
                    -grid_cells 32,32,4 -grid_upper 1,1,0.125 -final_time 12)
   set_tests_properties(flow/f2_cavity_re100_${ranks} PROPERTIES LABELS "quick;flow" PROCESSORS ${ranks} TIMEOUT 600 ENVIRONMENT "VOFDEM_PYTHON=${VOFDEM_PYTHON}")
 endforeach()

@@ -136,6 +136,33 @@ class CheckerTest(unittest.TestCase):
             order = math.log2(errs[kind][-2] / errs[kind][-1])
             self.assertGreater(order, want - 0.3, (kind, errs[kind]))
 
+    def synthetic_with_extrema(self, shift=0.0):
+        """Smooth profiles whose extrema are the Re 100 grid-converged ones (plus shift), on the 64
+        cell centres and the wall points (not zero at the walls: not needed here)."""
+        ref = cpc.read_extrema(100)
+        s = np.concatenate(([0.0], (np.arange(64) + 0.5) / 64, [1.0]))
+        (umin, yu), (vmax, xmax), (vmin, xmin) = ref["u_min"], ref["v_max"], ref["v_min"]
+        u = (umin + shift) * (1 - ((s - yu) / 0.6) ** 2) ** 2
+        v = (vmax + shift) * np.exp(-((s - xmax) / 0.12) ** 2) + (vmin + shift) * np.exp(-((s - xmin) / 0.08) ** 2)
+        return s, u, s, v
+
+    def test_extrema_found_and_checked(self):
+        ys, us, xs, vs = self.synthetic_with_extrema()
+        value, where = cpc.extremum(ys, us, "cubic", False)
+        self.assertLess(abs(value - cpc.read_extrema(100)["u_min"][0]), 1e-5)
+        self.assertLess(abs(where - cpc.read_extrema(100)["u_min"][1]), 1e-3)
+        for shift, code in ((0.0, 0), (0.003, 1)):
+            ys, us, xs, vs = self.synthetic_with_extrema(shift)
+            rc, out = self.run_checker(profile_rows(ys, us, xs, vs), "--re", "100", "--tolerance", "10",
+                                       "--extrema-tolerance", "0.001")
+            self.assertEqual(rc, code, out)
+            self.assertEqual(out.count("result: F2 Re 100 v_min"), 1, out)
+        # without --extrema-tolerance the extrema are printed, not judged
+        rc, out = self.run_checker(profile_rows(ys, us, xs, vs), "--re", "100", "--tolerance", "10")
+        self.assertEqual(rc, 0, out)
+        self.assertIn("F2 Re 100 v_min = ", out)
+        self.assertNotIn("result: F2 Re 100 v_min", out)
+
     def test_bad_input_one_line_exit_2(self):
         ys, us, xs, vs = self.reference("ghia1982-re100")
         good = profile_rows(ys, us, xs, vs)
