@@ -8,7 +8,9 @@ static const char help[] = "Verification F3 (VERIFICATION.md): plane Poiseuille 
                            "Grids of -cells_list (default 24,48) cells across H; -parts a, b or ab (default). The MAC wall treatment (ghost = -u, half\n"
                            "a cell out) makes the discrete profile of (a) the exact one plus (h/H)^2 U_c: second order. The 0.1 % tolerance is checked\n"
                            "on the finest grid, the order (>= 1.8) between the two finest, and every run must be steady (the last step changed u by\n"
-                           "less than 1e-6 U_c). Flow options (-flow_advection, ...) apply. Exits non-zero on failure.\n\n";
+                           "less than 1e-6 U_c). Flow options (-flow_advection, ...) apply. Exits non-zero on failure.\n"
+                           "-solid (part a only): the box extends H/4 beyond each wall and the walls are solid cells (-flow_solid_boxes) instead of\n"
+                           "the box's: the wall then sits at the face of the first solid cell and the errors must equal those of the box walls.\n\n";
 
 #include "vofdem/core/Runtime.hpp"
 #include "vofdem/flow/Flow.hpp"
@@ -27,6 +29,7 @@ const PetscReal kTolerance = 1e-3, kMinOrder = 1.8;
 // decaying by 8-10 % a step at the default steps) then has less than ~1.5e-5 U_c left, under 4 % of
 // the smallest error measured (4e-4 U_c).
 const PetscReal kSteady = 1e-6;
+PetscInt        gSolidRows = 0;  // -solid: rows of solid cells below and above the channel (ny/4)
 
 PetscErrorCode SetOption(const char *name, const std::string &value) {
   PetscFunctionBeginUser;
@@ -67,11 +70,13 @@ PetscErrorCode ProfileError(vofdem::Flow &flow, PetscInt i0, PetscInt i1, Result
   for (PetscInt k = s[2]; k < s[2] + n[2]; ++k)
     for (PetscInt j = s[1]; j < s[1] + n[1]; ++j)
       for (PetscInt i = std::max(s[0], i0); i < std::min(s[0] + n[0], i1); ++i) {
+        const PetscInt jc = j - gSolidRows;  // the row in the channel
+        if (jc < 0 || jc >= ny - 2 * gSolidRows) continue;
         const PetscReal v = PetscRealPart(u.at(i, j, k));
-        mx = std::fmax(mx, std::fabs(v - Exact((j + 0.5) * h[1])) / kUc);
-        if (j == ny / 2 - 1 || j == ny / 2) {
+        mx = std::fmax(mx, std::fabs(v - Exact((jc + 0.5) * h[1])) / kUc);
+        if (jc == (ny - 2 * gSolidRows) / 2 - 1 || jc == (ny - 2 * gSolidRows) / 2) {
           centre += 0.5 * v / kUc;
-          if (j == ny / 2) cells += 1;
+          if (jc == (ny - 2 * gSolidRows) / 2) cells += 1;
         }
       }
   PetscCall(sg.RestoreGlobal(0, flow.Velocity(0), &u));
@@ -120,8 +125,12 @@ PetscErrorCode RunChannel(bool inflow, PetscInt ny, PetscReal nu, PetscReal dtA,
   const PetscReal h = kH / ny;
   // (a) a few cells along x suffice (nothing varies along x); (b) a channel 2 H long.
   const PetscInt nx = inflow ? 2 * ny : 4, nz = 3;
-  PetscCall(SetOption("-grid_cells", std::to_string(nx) + "," + std::to_string(ny) + "," + std::to_string(nz)));
-  PetscCall(SetOption("-grid_upper", Num(nx * h) + "," + Num(kH) + "," + Num(nz * h)));
+  const PetscInt  rows = inflow ? 0 : gSolidRows, nyBox = ny + 2 * rows;  // -solid: solid rows beyond each wall
+  PetscCall(SetOption("-grid_cells", std::to_string(nx) + "," + std::to_string(nyBox) + "," + std::to_string(nz)));
+  PetscCall(SetOption("-grid_lower", "0," + Num(-rows * h) + ",0"));
+  PetscCall(SetOption("-grid_upper", Num(nx * h) + "," + Num(kH + rows * h) + "," + Num(nz * h)));
+  if (rows) PetscCall(SetOption("-flow_solid_boxes", "-1," + Num(-2 * rows * h) + ",-1," + Num(nx * h + 1) + ",0," + Num(nz * h + 1) + ",-1," + Num(kH) + ",-1," + Num(nx * h + 1) + "," +
+                                                         Num(kH + 2 * rows * h) + "," + Num(nz * h + 1)));
   PetscCall(SetOption("-grid_periodic", inflow ? "z" : "x,z"));
   PetscCall(SetOption("-flow_density", "1"));
   PetscCall(SetOption("-flow_viscosity", Num(nu)));
@@ -195,6 +204,7 @@ PetscErrorCode RunChannel(bool inflow, PetscInt ny, PetscReal nu, PetscReal dtA,
   } else PetscCall(ProfileError(flow, 0, nx + 1, r));
   PetscCall(flow.Destroy());
   PetscCall(grid.Destroy());
+  if (rows) PetscCall(PetscOptionsClearValue(nullptr, "-flow_solid_boxes"));
   if (inflow)
     for (const char *o : {"-flow_bc_xlo", "-flow_bc_xlo_velocity", "-flow_bc_xlo_profile", "-flow_bc_xhi"}) PetscCall(PetscOptionsClearValue(nullptr, o));
   PetscFunctionReturn(0);
@@ -210,8 +220,15 @@ PetscErrorCode Run() {
 
   PetscFunctionBeginUser;
   PetscCall(PetscOptionsGetString(nullptr, nullptr, "-parts", parts, sizeof parts, nullptr));
+  PetscBool solid = PETSC_FALSE;
+  PetscCall(PetscOptionsGetBool(nullptr, nullptr, "-solid", &solid, nullptr));
   PetscCall(PetscOptionsGetIntArray(nullptr, nullptr, "-cells_list", list, &nlist, &set));
   if (!set) nlist = 2;
+  if (solid) {
+    for (PetscInt g = 0; g < nlist; ++g)
+      if (list[g] % 4) VofdemInputError(PETSC_COMM_WORLD, "option -cells_list: with -solid every grid needs a multiple of 4 cells (H/4 of solid each side), got %d", (int)list[g]);
+    if (std::strchr(parts, 'b')) VofdemInputError(PETSC_COMM_WORLD, "option -solid: only with -parts a (the inflow profile spans the box)");
+  }
   PetscCall(PetscOptionsGetReal(nullptr, nullptr, "-nu", &nu, nullptr));
   PetscCall(PetscOptionsGetReal(nullptr, nullptr, "-dt_a", &dtA, nullptr));
   PetscCall(PetscOptionsGetReal(nullptr, nullptr, "-cfl", &cfl, nullptr));
@@ -229,10 +246,11 @@ PetscErrorCode Run() {
     const bool inflow = part == 1;
     if (!std::strchr(parts, "ab"[part])) continue;
     PetscCall(PetscPrintf(PETSC_COMM_WORLD, inflow ? "(b) parabolic inflow at x = 0, outflow at x = 2 H, from the exact profile to t = %g s, dt = %g h/U_c\n"
-                                                   : "(a) periodic in x, driven by g = 8 nu U_c/H^2, from rest to t = %g s, dt = %g s\n",
-                          (double)finalTime[part], (double)(inflow ? cfl : dtA)));
+                                                   : "(a) periodic in x, driven by g = 8 nu U_c/H^2, from rest to t = %g s, dt = %g s%s\n",
+                          (double)finalTime[part], (double)(inflow ? cfl : dtA), solid ? "; walls: solid cells, H/4 of them beyond each wall" : ""));
     std::vector<Result> r(nlist);
     for (PetscInt g = 0; g < nlist; ++g) {
+      gSolidRows = solid ? list[g] / 4 : 0;
       PetscCall(RunChannel(inflow, list[g], nu, dtA, cfl, finalTime[part], &r[g]));
       const bool steady = r[g].change < kSteady;
       failures += !steady;
@@ -303,4 +321,13 @@ int main(int argc, char **argv) {
     suffix: 2
     nsize: 2
     output_file: output/ex25_poiseuille_1.out
+  test:
+    suffix: solid_1
+    nsize: 1
+    args: -parts a -solid
+  test:
+    suffix: solid_2
+    nsize: 2
+    args: -parts a -solid
+    output_file: output/ex25_poiseuille_solid_1.out
 TEST*/

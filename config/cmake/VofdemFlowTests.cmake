@@ -38,6 +38,11 @@ vofdem_bad_input(flow_face_of_periodic "option -flow_bc_xlo: 'wall' on a face of
 vofdem_bad_input(flow_pressure_bc     "option -flow_pressure_bc_xlo: with -physics flow the pressure boundaries follow -flow_bc_xlo \\(wall\\). do not set them" ${_flow} -flow_pressure_bc_xlo dirichlet)
 vofdem_bad_input(flow_with_dem        "option -physics: 'dem' with 'flow' needs the particle-fluid coupling, not available" -physics dem,flow -max_steps 1)
 vofdem_bad_input(flow_advection_unknown "option -flow_advection: unknown name 'quick' \\(known: upwind, central, minmod, vanleer, mc, superbee, koren\\)" ${_flow} -flow_advection quick)
+vofdem_bad_input(flow_solid_box_count "option -flow_solid_boxes: 5 values is not a multiple of 6 \\(x0,y0,z0,x1,y1,z1 per box\\)" ${_flow} -flow_solid_boxes 0,0,0,1,1)
+vofdem_bad_input(flow_solid_box_inverted "option -flow_solid_boxes: box 1 has upper y 0.1 not above lower 0.5" ${_flow} -flow_solid_boxes 0,0.5,0,1,0.1,1)
+vofdem_bad_input(flow_solid_sphere_radius "option -flow_solid_spheres: sphere 2 has radius 0\\.?, must be positive" ${_flow} -flow_solid_spheres 0.5,0.5,0.5,0.1,0.5,0.5,0.5,0)
+vofdem_bad_input(flow_solid_outside   "options -flow_solid_boxes/-flow_solid_spheres: no cell centre lies inside the solids given" ${_flow} -flow_solid_spheres 5,5,5,1)
+vofdem_bad_input(flow_solid_everything "options -flow_solid_boxes/-flow_solid_spheres: every cell is solid, no fluid is left" ${_flow} -flow_solid_boxes -1,-1,-1,2,2,2)
 
 # The flow solvers' KSP options are read in the module's set-up: they must not be taken for typos.
 add_test(NAME flow/solver_options_accepted COMMAND mpiexec -n 2 $<TARGET_FILE:vofdem_app> ${_flow} -gravity 0,0,0 -dt 0.01 -flow_bc_zhi_velocity 1,0,0
@@ -55,5 +60,22 @@ add_test(NAME flow/rank_agreement
          COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/test/flow/rank_agreement.sh $<TARGET_FILE:vofdem_app> ${CMAKE_CURRENT_SOURCE_DIR}/config/scenes/cavity-re1000.yaml 1e-10
                  -grid_cells 32,32,4 -grid_upper 1,1,0.125 -dt 0.01 -max_steps 60 -monitor_every 60)
 set_tests_properties(flow/rank_agreement PROPERTIES LABELS "quick;flow" PROCESSORS 2 TIMEOUT 600 ENVIRONMENT "VOFDEM_PYTHON=${VOFDEM_PYTHON}")
+# Solid cells (SolidMask.hpp): the same agreement across ranks with a box on the floor, one on the
+# right wall and a sphere in the cavity; and a closed tank at rest with solids stays at rest.
+add_test(NAME flow/solid_rank_agreement
+         COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/test/flow/rank_agreement.sh $<TARGET_FILE:vofdem_app> ${CMAKE_CURRENT_SOURCE_DIR}/config/scenes/cavity-re1000.yaml 1e-10
+                 -grid_cells 32,32,4 -grid_upper 1,1,0.125 -dt 0.01 -max_steps 60 -monitor_every 60
+                 -flow_solid_boxes 0.3,0,-1,0.55,0.4,1,0.7,0.6,-1,1.1,0.75,1 -flow_solid_spheres 0.5,0.5,0.0625,0.15)
+set_tests_properties(flow/solid_rank_agreement PROPERTIES LABELS "quick;flow" PROCESSORS 2 TIMEOUT 600
+                     ENVIRONMENT "VOFDEM_PYTHON=${VOFDEM_PYTHON};OMPI_ALLOW_RUN_AS_ROOT=1;OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1;OMP_NUM_THREADS=1")
+foreach(ranks 1 2)
+  add_test(NAME flow/solid_still_tank_${ranks}
+           COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/test/flow/still_tank.sh $<TARGET_FILE:vofdem_app> ${ranks} 1e-10
+                   -grid_cells 16,16,16 -flow_density 1000 -gravity 0,0,-9.81 -max_steps 100 -monitor_every 100
+                   -flow_solid_spheres 0.5,0.5,0.5,0.25 -flow_solid_boxes 0,0,0,0.3,1,0.2
+                   -flow_pressure_ksp_rtol 1e-12 -flow_viscous_ksp_rtol 1e-12)
+  set_tests_properties(flow/solid_still_tank_${ranks} PROPERTIES LABELS "quick;flow" PROCESSORS ${ranks} TIMEOUT 300
+                       ENVIRONMENT "OMPI_ALLOW_RUN_AS_ROOT=1;OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1;OMP_NUM_THREADS=1")
+endforeach()
 # A solve that does not converge (two iterations allowed) ends every rank with one line, not a trace or a hang.
 vofdem_bad_input_pressure(pressure_not_converged "pressure solve did not converge: DIVERGED_ITS after 2 iterations" -flow_pressure_ksp_max_it 2)

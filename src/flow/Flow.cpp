@@ -45,6 +45,7 @@ PetscErrorCode Flow::SetFromOptions(const Grid &grid) {
   }
   PetscOptionsEnd();
   PetscCall(bc_.SetFromOptions(grid));
+  PetscCall(solid_.SetFromOptions(grid));
   // The projection's boundaries follow from the velocity's: an outflow face fixes the pressure
   // (the increment phi is 0 there), every other face fixes the normal velocity (Neumann).
   PetscCall(pressure_.Create(grid));
@@ -73,6 +74,7 @@ PetscErrorCode Flow::SetUp(const PetscReal gravity[3]) {
   PetscFunctionBeginUser;
   for (int d = 0; d < 3; ++d) gravity_[d] = gravity[d];
   PetscCall(sg_.Create(*grid_));
+  PetscCall(solid_.SetUp(sg_));
   for (int d = 0; d < 3; ++d) {
     PetscCall(DMCreateGlobalVector(sg_.Face(d), &u_[d]));
     PetscCall(DMCreateLocalVector(sg_.Face(d), &uLocal_[d]));
@@ -82,6 +84,7 @@ PetscErrorCode Flow::SetUp(const PetscReal gravity[3]) {
     PetscCall(VecDuplicate(u_[d], &rhsFace_[d]));
     PetscCall(VecSet(u_[d], velocity0_[d]));
     PetscCall(bc_.ApplyNormal(sg_, d, u_[d]));
+    PetscCall(ZeroBlocked(d, u_[d]));
     PetscCall(PetscObjectSetName((PetscObject)u_[d], d == 0 ? "flow_u" : d == 1 ? "flow_v" : "flow_w"));
     // Both: Step swaps H_ and Hold_, and an HDF5 Save must write Hold_ under the name Load reads.
     for (Vec v : {H_[d], Hold_[d]}) PetscCall(PetscObjectSetName((PetscObject)v, d == 0 ? "flow_explicit_u" : d == 1 ? "flow_explicit_v" : "flow_explicit_w"));
@@ -110,9 +113,11 @@ PetscErrorCode Flow::SetUp(const PetscReal gravity[3]) {
     if (!given) PetscCall(PetscOptionsSetValue(nullptr, "-flow_pressure_ksp_divtol", "1e300"));
     PetscCall(PetscOptionsHasName(nullptr, "flow_pressure_", "-ksp_atol", &userPressureAtol_));
   }
+  if (solid_.Any()) PetscCall(pressure_.SetSolid(solid_.Cells()));
   PetscCall(pressure_.SetUp());
   if (implicitViscosity_) {
     PetscCall(viscous_.Create(sg_, bc_));
+    viscous_.SetSolid(&solid_);
     PetscCall(viscous_.SetFromOptions());
   }
   PetscCall(PetscLogEventRegister("FlowExplicit", DM_CLASSID, &evExplicit_));
@@ -142,6 +147,7 @@ PetscErrorCode Flow::InitialPressure() {
     PetscCall(VecCopy(u_[d], keep[d]));
     PetscCall(VecShift(u_[d], gravity_[d]));  // one unit of time of free fall
     PetscCall(bc_.ApplyNormal(sg_, d, u_[d]));
+    PetscCall(ZeroBlocked(d, u_[d]));  // solids do not fall
   }
   PetscCall(Project(1, nullptr));  // p += phi, the hydrostatic pressure
   for (int d = 0; d < 3; ++d) {
@@ -226,7 +232,10 @@ PetscErrorCode Flow::Step(PetscReal t, PetscReal dt) {
 PetscErrorCode Flow::ProjectInitialVelocity() {
   PetscFunctionBeginUser;
   PetscCall(UpdateLocals(propertiesDirty_));
-  for (int d = 0; d < 3; ++d) PetscCall(bc_.ApplyNormal(sg_, d, u_[d]));
+  for (int d = 0; d < 3; ++d) {
+    PetscCall(bc_.ApplyNormal(sg_, d, u_[d]));
+    PetscCall(ZeroBlocked(d, u_[d]));
+  }
   // A unit "time step": phi is a potential, not a pressure; the pressure is left unchanged.
   Vec keep;
   PetscCall(VecDuplicate(p_, &keep));
@@ -321,6 +330,7 @@ PetscErrorCode Flow::View(PetscViewer viewer) const {
                                    (double)density_, (double)viscosity_, (double)(density_ / viscosity_), limiterName_.c_str(),
                                    implicitViscosity_ ? "implicit" : "explicit", (double)cfl_));
   PetscCall(bc_.View(viewer));
+  PetscCall(solid_.View(viewer));
   PetscCall(pressure_.View(viewer));
   if (implicitViscosity_) PetscCall(viscous_.View(viewer));
   PetscFunctionReturn(0);
@@ -392,6 +402,7 @@ PetscErrorCode Flow::Destroy() {
     for (Vec *v : {&u_[d], &uLocal_[d], &H_[d], &Hold_[d], &L_[d], &rhsFace_[d]}) PetscCall(VecDestroy(v));
   for (Vec *v : {&rho_, &mu_, &eps_, &p_, &phi_, &beta_, &divRhs_, &epsLocal_, &betaLocal_, &emLocal_, &pLocal_, &phiLocal_}) PetscCall(VecDestroy(v));
   PetscCall(pressure_.Destroy());
+  PetscCall(solid_.Destroy());
   if (implicitViscosity_) PetscCall(viscous_.Destroy());
   PetscCall(sg_.Destroy());
   PetscFunctionReturn(0);

@@ -130,7 +130,37 @@ PetscErrorCode Flow::ComputeExplicitTerms() {
   PetscCall(sg_.RestoreLocal(3, betaLocal_, &F.beta));
   PetscCall(sg_.RestoreLocal(3, emLocal_, &F.em));
   for (int d = 0; d < 3; ++d) PetscCall(sg_.RestoreLocal(d, uLocal_[d], &F.u[d]));
+  if (solid_.Any()) PetscCall(SolidWallTerms());
   PetscCall(PetscLogEventEnd(evExplicit_, 0, 0, 0, 0));
+  PetscFunctionReturn(0);
+}
+
+// MomentumTerms read the held 0 of a blocked neighbour face one cell away; for a wall face the wall
+// is half a cell away (SolidMask.hpp): a(0 - u) becomes a(-u - u), i.e. L -= a u once more, with
+// the coefficient ViscousSolver::Row uses (there doubled on the diagonal), so both halves agree.
+PetscErrorCode Flow::SolidWallTerms() {
+  LocalField em, u, L;
+
+  PetscFunctionBeginUser;
+  const PetscReal *h = grid_->Spacing();
+  PetscCall(sg_.GetLocal(3, emLocal_, &em));
+  for (int d = 0; d < 3; ++d) {
+    if (solid_.Walls(d).empty()) continue;
+    PetscCall(sg_.GetGlobal(d, u_[d], &u));
+    PetscCall(sg_.GetGlobal(d, L_[d], &L));
+    for (const SolidMask::WallFace &w : solid_.Walls(d)) {
+      PetscInt cm[3] = {w.q[0], w.q[1], w.q[2]}, c1[3] = {w.q[0], w.q[1], w.q[2]}, c3[3];
+      cm[d] -= 1;
+      c1[w.e] += w.side ? 1 : -1;
+      for (int k = 0; k < 3; ++k) c3[k] = c1[k];
+      c3[d] -= 1;
+      const PetscReal a = 0.25 * PetscRealPart(em.at(w.q) + em.at(cm) + em.at(c1) + em.at(c3)) / (h[w.e] * h[w.e]);
+      L.data[w.offset] -= a * u.data[w.offset];
+    }
+    PetscCall(sg_.RestoreGlobal(d, L_[d], &L));
+    PetscCall(sg_.RestoreGlobal(d, u_[d], &u));
+  }
+  PetscCall(sg_.RestoreLocal(3, emLocal_, &em));
   PetscFunctionReturn(0);
 }
 
@@ -214,6 +244,8 @@ PetscErrorCode Flow::Predict(PetscReal t, PetscReal dt) {
     PetscCall(sg_.RestoreGlobal(d, haveOld_ ? Hold_[d] : H_[d], &Ho));
     PetscCall(sg_.RestoreGlobal(d, H_[d], &H));
     PetscCall(sg_.RestoreGlobal(d, u_[d], &u));
+    PetscCall(ZeroBlocked(d, rhsFace_[d]));  // identity rows of the viscous matrix: u = 0
+    PetscCall(ZeroBlocked(d, u_[d]));        // and the initial guess
     if (implicitViscosity_) {
       PetscCall(VecAXPY(rhsFace_[d], 1, viscous_.BoundaryRhs(d)));
       PetscCall(viscous_.Solve(d, rhsFace_[d], u_[d]));

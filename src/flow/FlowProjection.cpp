@@ -120,12 +120,24 @@ PetscErrorCode Flow::Project(PetscReal dt, Vec *) {
         }
       }
     PetscCall(sg_.RestoreGlobal(d, u_[d], &u));
+    PetscCall(ZeroBlocked(d, u_[d]));  // the correction crossed solid faces too
   }
   PetscCall(sg_.RestoreLocal(3, epsLocal_, &eps));
   PetscCall(sg_.RestoreLocal(3, betaLocal_, &beta));
   PetscCall(sg_.RestoreLocal(3, phiLocal_, &phi));
   PetscCall(VecAXPY(p_, 1, phi_));
   PetscCall(PetscLogEventEnd(evProject_, 0, 0, 0, 0));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode Flow::ZeroBlocked(int d, Vec v) const {
+  PetscScalar *a;
+
+  PetscFunctionBeginUser;
+  if (solid_.Blocked(d).empty()) PetscFunctionReturn(0);
+  PetscCall(VecGetArray(v, &a));
+  for (PetscInt o : solid_.Blocked(d)) a[o] = 0;
+  PetscCall(VecRestoreArray(v, &a));
   PetscFunctionReturn(0);
 }
 

@@ -153,6 +153,15 @@ PetscErrorCode PressureSolver::InsertBoomerAMGDefaults() {
   PetscFunctionReturn(0);
 }
 
+PetscErrorCode PressureSolver::SetSolid(Vec solid) {
+  PetscFunctionBeginUser;
+  PetscCheck(!ksp_, comm_, PETSC_ERR_ORDER, "PressureSolver::SetSolid after SetUp");
+  PetscCall(PetscObjectReference((PetscObject)solid));
+  PetscCall(VecDestroy(&solid_));
+  solid_ = solid;
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode PressureSolver::SetUp() {
   PC pc;
 
@@ -179,9 +188,25 @@ PetscErrorCode PressureSolver::SetUp() {
 
   bool dirichlet = false;
   for (int f = 0; f < 6; ++f) dirichlet = dirichlet || bc_[f] == PressureBoundary::Dirichlet;
-  if (!dirichlet) {
+  if (solid_) {
+    PetscCall(DMCreateLocalVector(dm_, &solidLocal_));
+    PetscCall(VecSet(solidLocal_, 0));  // outside a non-periodic box: no solid
+    PetscCall(DMGlobalToLocal(dm_, solid_, INSERT_VALUES, solidLocal_));
+  }
+  if (!dirichlet && !solid_) {
     // Pure Neumann/periodic: p is defined up to a constant (notes: attach the null space).
     PetscCall(MatNullSpaceCreate(comm_, PETSC_TRUE, 0, nullptr, &nullSpace_));
+    PetscCall(MatSetNullSpace(A_, nullSpace_));
+  } else if (!dirichlet) {
+    // The constant on the fluid cells (solid rows are identities, their value 0). One fluid region
+    // is assumed: a region sealed off by solid would add a null vector of its own.
+    Vec one;
+    PetscCall(VecDuplicate(work_, &one));
+    PetscCall(VecSet(one, 1));
+    PetscCall(VecAXPY(one, -1, solid_));
+    PetscCall(VecNormalize(one, nullptr));
+    PetscCall(MatNullSpaceCreate(comm_, PETSC_FALSE, 1, &one, &nullSpace_));
+    PetscCall(VecDestroy(&one));
     PetscCall(MatSetNullSpace(A_, nullSpace_));
   }
 
@@ -221,6 +246,8 @@ PetscErrorCode PressureSolver::Assemble(Vec beta) {
   PetscCall(DMDAVecGetArrayRead(dm_, betaLocal_, &b));
   PetscCall(DMDAVecGetArray(dm_, bDirichlet_, &bd));
   PetscCall(DMDAGetCorners(dm_, &xs, &ys, &zs, &xm, &ym, &zm));
+  const PetscScalar ***sol = nullptr;
+  if (solidLocal_) PetscCall(DMDAVecGetArrayRead(dm_, solidLocal_, &sol));
   const PetscReal ih2[3] = {1 / (h_[0] * h_[0]), 1 / (h_[1] * h_[1]), 1 / (h_[2] * h_[2])};
   for (PetscInt k = zs; k < zs + zm; ++k)
     for (PetscInt j = ys; j < ys + ym; ++j)
@@ -230,6 +257,13 @@ PetscErrorCode PressureSolver::Assemble(Vec beta) {
         PetscInt        n = 1;
         const PetscInt  c[3] = {i, j, k};
         const PetscReal bc   = PetscRealPart(b[k][j][i]);
+        if (sol && PetscRealPart(sol[k][j][i]) > 0.5) {
+          // A solid cell: decoupled, scaled like its fluid neighbours' rows; its rhs is 0 (no flow).
+          col[0] = row;
+          val[0] = 2 * bc * (ih2[0] + ih2[1] + ih2[2]);
+          PetscCall(MatSetValuesStencil(A_, 1, &row, 1, col, val, INSERT_VALUES));
+          continue;
+        }
         for (int d = 0; d < 3; ++d)
           for (int s = 0; s < 2; ++s) {
             const PetscInt nb = c[d] + (s ? 1 : -1);
@@ -237,6 +271,7 @@ PetscErrorCode PressureSolver::Assemble(Vec beta) {
             if (bc_[f] == PressureBoundary::Periodic || (nb >= 0 && nb < cells_[d])) {
               PetscInt q[3] = {i, j, k};
               q[d]          = nb;  // DMDA wraps -1 and N in periodic directions
+              if (sol && PetscRealPart(sol[q[2]][q[1]][q[0]]) > 0.5) continue;  // a solid neighbour: no flux
               const PetscReal bn = PetscRealPart(b[q[2]][q[1]][q[0]]);
               const PetscReal w  = 2 * bc * bn / (bc + bn) * ih2[d];  // harmonic mean at the face
               col[n]             = {q[2], q[1], q[0], 0};
@@ -255,6 +290,7 @@ PetscErrorCode PressureSolver::Assemble(Vec beta) {
       }
   PetscCall(DMDAVecRestoreArray(dm_, bDirichlet_, &bd));
   PetscCall(DMDAVecRestoreArrayRead(dm_, betaLocal_, &b));
+  if (solidLocal_) PetscCall(DMDAVecRestoreArrayRead(dm_, solidLocal_, &sol));
   PetscCall(MatAssemblyBegin(A_, MAT_FINAL_ASSEMBLY));
   PetscCall(MatAssemblyEnd(A_, MAT_FINAL_ASSEMBLY));
   PetscFunctionReturn(0);
@@ -316,7 +352,7 @@ PetscErrorCode PressureSolver::View(PetscViewer viewer) const {
   }
   PetscCall(PetscViewerASCIIPrintf(viewer, "flow pressure: %s, boundaries %s%s; preconditioner reused below a relative change of %g\n",
                                    pc_ == PressurePreconditioner::PFMG ? "CG + hypre PFMG" : "CG + hypre BoomerAMG", bcs.c_str(),
-                                   nullSpace_ ? " (constant null space)" : "", (double)reuseThreshold_));
+                                   nullSpace_ ? (solid_ ? " (null space: constant on the fluid cells)" : " (constant null space)") : "", (double)reuseThreshold_));
   PetscFunctionReturn(0);
 }
 
@@ -354,6 +390,8 @@ PetscErrorCode PressureSolver::Destroy() {
   PetscCall(VecDestroy(&betaRef_));
   PetscCall(VecDestroy(&bDirichlet_));
   PetscCall(VecDestroy(&work_));
+  PetscCall(VecDestroy(&solid_));
+  PetscCall(VecDestroy(&solidLocal_));
   PetscCall(DMDestroy(&dm_));
   PetscFunctionReturn(0);
 }

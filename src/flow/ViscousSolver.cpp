@@ -41,7 +41,10 @@ PetscErrorCode ViscousSolver::SetFromOptions() {
 // The diagonal is returned as mass/dt + K with K the viscous part (*K), so that the diagonal-only
 // update (Assemble) forms it from the stored K in the same way, bitwise as a full assembly at the
 // new dt would (restarts rebuild the matrix from scratch).
-PetscInt ViscousSolver::Row(int d, const PetscInt q[3], PetscReal dt, const LocalField &eps, const LocalField &beta, const LocalField &em,
+// With solid cells (SolidMask.hpp): a blocked face gets an identity row (its rhs 0); a blocked
+// neighbour contributes its known value 0, at the neighbour's distance, or half of it (a wall face:
+// the neighbour lies inside the solid, the wall is at the shared cell face, ghost = -u).
+PetscInt ViscousSolver::Row(int d, const PetscInt q[3], PetscReal dt, const LocalField &eps, const LocalField &beta, const LocalField &em, const LocalField *solid,
                             MatStencil col[7], PetscScalar val[7], PetscReal *rhs, PetscReal *K) const {
   const Grid      &g = sg_->Base();
   const PetscReal *h = g.Spacing(), *lo = g.Lower();
@@ -55,6 +58,19 @@ PetscInt ViscousSolver::Row(int d, const PetscInt q[3], PetscReal dt, const Loca
   PetscInt nc = 1;
   PetscInt cm[3] = {q[0], q[1], q[2]};
   cm[d] -= 1;  // the cell below the face along d
+  // solid cells on the two sides of the d-face at p (and whether both are)
+  auto blocked = [&](const PetscInt p[3], bool *both) {
+    PetscInt pm[3] = {p[0], p[1], p[2]};
+    pm[d] -= 1;
+    const bool a = PetscRealPart(solid->at(pm)) > 0.5, b = PetscRealPart(solid->at(p)) > 0.5;
+    *both = a && b;
+    return a || b;
+  };
+  bool both;
+  if (solid && blocked(q, &both)) {
+    val[0] = *K = 1;
+    return 1;
+  }
   const PetscReal bL = PetscRealPart(beta.at(cm)), bR = PetscRealPart(beta.at(q));
   const PetscReal eF = 0.5 * PetscRealPart(eps.at(cm) + eps.at(q)), bF = 2 * bL * bR / (bL + bR);
   PetscReal       diag = 0;
@@ -76,6 +92,10 @@ PetscInt ViscousSolver::Row(int d, const PetscInt q[3], PetscReal dt, const Loca
       }
       a *= 0.5;  // Crank-Nicolson half
       const bool outside = !g.Periodic(e) && (e == d ? (nb[e] == 0 || nb[e] == lastFace) : (nb[e] < 0 || nb[e] >= g.Cells()[e]));
+      if (!outside && solid && blocked(nb, &both)) {
+        diag += (e != d && both) ? 2 * a : a;  // value 0 half a cell away (inside the solid) or one cell away
+        continue;
+      }
       if (!outside) {
         col[nc]   = {nb[2], nb[1], nb[0], 0};
         val[nc++] = -a;
@@ -108,6 +128,7 @@ PetscInt ViscousSolver::Row(int d, const PetscInt q[3], PetscReal dt, const Loca
 // MatSetValuesStencil on every row (dt changes every few steps while a flow develops).
 PetscErrorCode ViscousSolver::Assemble(PetscReal dt, Vec epsLocal, Vec betaLocal, Vec emLocal, PetscBool coefficientsChanged) {
   LocalField eps, beta, em, out;  // out: K (full assembly) or the new diagonal
+  LocalField solid, *sp = nullptr;
   PetscInt   s[3], n[3], q[3];
   MatStencil  col[7];
   PetscScalar val[7];
@@ -118,6 +139,10 @@ PetscErrorCode ViscousSolver::Assemble(PetscReal dt, Vec epsLocal, Vec betaLocal
   PetscCall(sg_->GetLocal(3, epsLocal, &eps));
   PetscCall(sg_->GetLocal(3, betaLocal, &beta));
   PetscCall(sg_->GetLocal(3, emLocal, &em));
+  if (solid_) {
+    PetscCall(sg_->GetLocal(3, solid_->CellsLocal(), &solid));
+    sp = &solid;
+  }
   for (int d = 0; d < 3; ++d) {
     sg_->Owned(d, s, n);
     if (coefficientsChanged || !assembled_) {
@@ -128,7 +153,7 @@ PetscErrorCode ViscousSolver::Assemble(PetscReal dt, Vec epsLocal, Vec betaLocal
       for (q[2] = s[2]; q[2] < s[2] + n[2]; ++q[2])
         for (q[1] = s[1]; q[1] < s[1] + n[1]; ++q[1])
           for (q[0] = s[0]; q[0] < s[0] + n[0]; ++q[0]) {
-            const PetscInt nc = Row(d, q, dt, eps, beta, em, col, val, &rhs, &out.at(q));
+            const PetscInt nc = Row(d, q, dt, eps, beta, em, sp, col, val, &rhs, &out.at(q));
             rb.at(q)          = rhs;
             PetscCall(MatSetValuesStencil(A_[d], 1, col, nc, col, val, INSERT_VALUES));
           }
@@ -158,12 +183,15 @@ PetscErrorCode ViscousSolver::Assemble(PetscReal dt, Vec epsLocal, Vec betaLocal
             o[i] = MassOverDt(eF, bF, dt) + PetscRealPart(Kq[i]);
           }
         }
+      if (solid_)
+        for (PetscInt o : solid_->Blocked(d)) out.data[o] = 1;  // identity rows (K is 1 there)
       PetscCall(sg_->RestoreGlobal(d, K_[d], &K));
       PetscCall(sg_->RestoreGlobal(d, diag_[d], &out));
       PetscCall(MatDiagonalSet(A_[d], diag_[d], INSERT_VALUES));
     }
   }
   assembled_ = PETSC_TRUE;
+  if (solid_) PetscCall(sg_->RestoreLocal(3, solid_->CellsLocal(), &solid));
   PetscCall(sg_->RestoreLocal(3, emLocal, &em));
   PetscCall(sg_->RestoreLocal(3, betaLocal, &beta));
   PetscCall(sg_->RestoreLocal(3, epsLocal, &eps));

@@ -16,6 +16,7 @@
 #include "vofdem/flow/Advection.hpp"
 #include "vofdem/flow/FlowBoundary.hpp"
 #include "vofdem/flow/PressureSolver.hpp"
+#include "vofdem/flow/SolidMask.hpp"
 #include "vofdem/flow/StaggeredGrid.hpp"
 #include "vofdem/flow/ViscousSolver.hpp"
 
@@ -67,6 +68,7 @@ public:
 
   const StaggeredGrid &Staggered() const { return sg_; }
   const FlowBoundary  &Boundary() const { return bc_; }
+  const SolidMask     &Solid() const { return solid_; }
   PetscReal            ReferenceDensity() const { return density_; }
   PetscReal            ReferenceViscosity() const { return viscosity_; }
   const std::string   &ProfilePath() const { return profilePath_; }
@@ -81,10 +83,13 @@ private:
   PetscErrorCode Predict(PetscReal t, PetscReal dt);
   PetscErrorCode Project(PetscReal dt, Vec *uField);
   PetscErrorCode Divergence(Vec rhsOut, PetscReal scale, PetscReal *maxAbs) const;
+  PetscErrorCode ZeroBlocked(int d, Vec faceVector) const;  // the faces touching solid cells
+  PetscErrorCode SolidWallTerms();  // the wall half a cell away in the explicit viscous term (SolidMask.hpp)
 
   const Grid    *grid_ = nullptr;
   StaggeredGrid  sg_;
   FlowBoundary   bc_;
+  SolidMask      solid_;
   PressureSolver pressure_;
   ViscousSolver  viscous_;
 

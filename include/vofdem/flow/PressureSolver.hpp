@@ -47,6 +47,10 @@ public:
   void SetPreconditioner(PressurePreconditioner pc) { pc_ = pc; }
   PressurePreconditioner Preconditioner() const { return pc_; }
   PetscErrorCode SetFromOptions();
+  // Solid cells (a global vector of the cell layout, 1 solid, 0 fluid; SolidMask.hpp), before SetUp:
+  // identity rows, no flux between fluid and solid, and with closed boundaries the constant on the
+  // fluid cells as the null space. The vector is referenced, not copied.
+  PetscErrorCode SetSolid(Vec solid);
   PetscErrorCode SetUp();
   // beta at cell centres (a vector of Grid::CellDM()), all > 0; `what` names its origin in the
   // one-line input error raised otherwise (e.g. "option -density_heavy"). Assembles the matrix;
@@ -91,6 +95,7 @@ private:
   Vec                    betaRef_ = nullptr;    // coefficient the preconditioner was built from
   Vec                    bDirichlet_ = nullptr; // rhs contribution of Dirichlet faces (depends on beta)
   Vec                    work_ = nullptr;       // rhs copy
+  Vec                    solid_ = nullptr, solidLocal_ = nullptr;  // SetSolid
   bool                   hasRef_ = false;
   PetscInt               iterations_ = 0, builds_ = 0;
   PetscReal              residual_ = 0;

@@ -8,6 +8,7 @@
 #pragma once
 
 #include "vofdem/flow/FlowBoundary.hpp"
+#include "vofdem/flow/SolidMask.hpp"
 #include "vofdem/flow/StaggeredGrid.hpp"
 
 #include <petscksp.h>
@@ -17,6 +18,7 @@ namespace vofdem {
 class ViscousSolver {
 public:
   PetscErrorCode Create(const StaggeredGrid &sg, const FlowBoundary &bc);
+  void           SetSolid(const SolidMask *solid) { solid_ = solid && solid->Any() ? solid : nullptr; }  // before Assemble
   PetscErrorCode SetFromOptions();
   // Cell fields as ghosted local vectors of StaggeredGrid::Cells(): eps, beta = eps/rho, eps*mu.
   // Without coefficientsChanged (and after a first assembly) only the diagonal is recomputed.
@@ -29,13 +31,14 @@ public:
   PetscErrorCode Destroy();
 
 private:
-  PetscInt Row(int d, const PetscInt q[3], PetscReal dt, const LocalField &eps, const LocalField &beta, const LocalField &em, MatStencil col[7],
-               PetscScalar val[7], PetscReal *rhs, PetscReal *K) const;
+  PetscInt Row(int d, const PetscInt q[3], PetscReal dt, const LocalField &eps, const LocalField &beta, const LocalField &em, const LocalField *solid,
+               MatStencil col[7], PetscScalar val[7], PetscReal *rhs, PetscReal *K) const;
   // (eps rho)_f / dt from the face means eps_f and b_f = (eps/rho)_f (harmonic), as in the rhs.
   static PetscReal MassOverDt(PetscReal eF, PetscReal bF, PetscReal dt) { return eF * eF / bF / dt; }
 
   const StaggeredGrid *sg_ = nullptr;
   const FlowBoundary  *bc_ = nullptr;
+  const SolidMask     *solid_ = nullptr;
   Mat                  A_[3] = {nullptr, nullptr, nullptr};
   KSP                  ksp_[3] = {nullptr, nullptr, nullptr};
   Vec                  bcRhs_[3] = {nullptr, nullptr, nullptr};
