@@ -43,6 +43,8 @@ vofdem_bad_input(flow_solid_box_inverted "option -flow_solid_boxes: box 1 has up
 vofdem_bad_input(flow_solid_sphere_radius "option -flow_solid_spheres: sphere 2 has radius 0\\.?, must be positive" ${_flow} -flow_solid_spheres 0.5,0.5,0.5,0.1,0.5,0.5,0.5,0)
 vofdem_bad_input(flow_solid_outside   "options -flow_solid_boxes/-flow_solid_spheres: no cell centre lies inside the solids given" ${_flow} -flow_solid_spheres 5,5,5,1)
 vofdem_bad_input(flow_solid_everything "options -flow_solid_boxes/-flow_solid_spheres: every cell is solid, no fluid is left" ${_flow} -flow_solid_boxes -1,-1,-1,2,2,2)
+vofdem_bad_input(flow_ksp_type_unknown "Unable to find requested KSP type foo \\(a PETSc solver option. -help lists the choices\\)" ${_flow} -flow_viscous_ksp_type foo)
+vofdem_bad_input(flow_pfmg_relax_unknown "Unknown option foo for -flow_pressure_pc_pfmg_relax_type" ${_flow} -flow_pressure_pc_pfmg_relax_type foo)
 
 # The flow solvers' KSP options are read in the module's set-up: they must not be taken for typos.
 add_test(NAME flow/solver_options_accepted COMMAND mpiexec -n 2 $<TARGET_FILE:vofdem_app> ${_flow} -gravity 0,0,0 -dt 0.01 -flow_bc_zhi_velocity 1,0,0

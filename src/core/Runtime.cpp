@@ -15,10 +15,36 @@ namespace {
 
 bool g_mpiInitialisedHere = false;
 
-// Prints PETSC_ERR_USER_INPUT (bad input) and PETSC_ERR_NOT_CONVERGED (a solver that did not
-// converge) as one line; everything else goes to PETSc's trace-back handler.
+int WorldRankOf() {
+  int rank = 0;
+  MPI_Comm_rank(MPI_COMM_WORLD, &rank);
+  return rank;
+}
+
+// A bad value of one of PETSc's own solver options (-flow_viscous_ksp_type foo: "Unable to find
+// requested KSP type foo"; -..._pc_pfmg_relax_type foo: "Unknown option foo for -..."). Options are
+// the same on every rank, so every rank raises it, often on PETSC_COMM_SELF.
+bool PetscOptionValueError(PetscErrorCode n, const char *mess) {
+  if (!mess) return false;
+  return n == PETSC_ERR_ARG_UNKNOWN_TYPE || (n == PETSC_ERR_USER && !std::strncmp(mess, "Unknown option ", 15));
+}
+
+// Prints PETSC_ERR_USER_INPUT (bad input), PETSC_ERR_NOT_CONVERGED (a solver that did not
+// converge) and bad values of PETSc's options as one line; everything else goes to PETSc's
+// trace-back handler.
 PetscErrorCode InputErrorHandler(MPI_Comm comm, int line, const char *func, const char *file,
                                  PetscErrorCode n, PetscErrorType p, const char *mess, void *ctx) {
+  static PetscErrorCode optionError = 0;  // raised: its passage up the stack is silent too
+  if (optionError && n == optionError && p != PETSC_ERROR_INITIAL) return n;
+  if (PetscOptionValueError(n, mess)) {
+    if (p != PETSC_ERROR_INITIAL) return n;
+    optionError = n;
+    if (WorldRankOf() == 0) {
+      std::fprintf(stderr, "vofdem: error: %s (a PETSc solver option; -help lists the choices)\n", mess);
+      std::fflush(stderr);
+    }
+    return n;
+  }
   if (n != PETSC_ERR_USER_INPUT && n != PETSC_ERR_NOT_CONVERGED) return PetscTraceBackErrorHandler(comm, line, func, file, n, p, mess, ctx);
   if (p != PETSC_ERROR_INITIAL) return n;  // the same error passing up the call stack
   int rank = 0, size = 1, worldSize = 1;
