@@ -100,3 +100,4 @@ include(VofdemOutputTests)  # DEM output and analysis
 include(VofdemStatisticsTests)  # D6 long horizon: rank counts against a 1-rank ensemble of seeds
 include(VofdemFlowTests)  # the pressure solve (src/flow)
 include(VofdemCavityTests)  # F2 reference tables: the profile checker and the convergence-table helper
+include(VofdemCheckpointTests)  # checkpoint/restart (issue 5)

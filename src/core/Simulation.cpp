@@ -4,6 +4,7 @@
 #include "vofdem/core/Runtime.hpp"
 
 #include <petsctime.h>
+#include <petscviewerhdf5.h>
 
 #include <algorithm>
 #include <filesystem>
@@ -38,6 +39,7 @@ PetscErrorCode Simulation::SetFromOptions() {
     PetscCall(opt.String("-output_dir", "Folder for the monitor table (monitor.csv) and output files (default: none)", &outputDir_));
   }
   PetscOptionsEnd();
+  PetscCall(checkpoint_.SetFromOptions(comm_, outputDir_));
   if (!physicsSet && !help) VofdemInputError(comm_, "option -physics is missing: name the modules to run, e.g. -physics dem");
   if (!finalSet) finalTime_ = PETSC_MAX_REAL;
   if (physicsSet) PetscCall(MakePhysicsSet(comm_, names, &physics_));
@@ -77,6 +79,8 @@ PetscErrorCode Simulation::SetUp() {
     PetscCall(PetscLogStagePop());
   }
   PetscCall(ChooseTimeStep());
+  PetscCall(checkpoint_.SetUp());
+  PetscCall(checkpoint_.Restore(*this));
   if (!outputDir_.empty()) {
     PetscMPIInt rank;
     int         ok = 1, allOk;
@@ -85,9 +89,11 @@ PetscErrorCode Simulation::SetUp() {
       std::error_code ec;
       std::filesystem::create_directories(outputDir_, ec);
       const std::string path = outputDir_ + "/monitor.csv";
-      if (!ec) csv_ = std::fopen(path.c_str(), "w");
+      // A restart continues the table of the run it continues.
+      const bool append = checkpoint_.Restarting() && std::filesystem::exists(path, ec);
+      if (!ec) csv_ = std::fopen(path.c_str(), append ? "a" : "w");
       ok = csv_ != nullptr;
-      if (csv_)
+      if (csv_ && !append)
         std::fprintf(csv_, "step,time_s,dt_s,particles,kinetic_energy_J,rotational_energy_J,pair_contacts,coordination,wall_contacts,max_overlap_per_diameter,floor_force_z_N,inserted,deleted,wall_time_s%s%s%s\n",
                      physics_.dem ? dem_->WallLoadColumns().c_str() : "", physics_.dem ? dem_->MonitorHeader().c_str() : "",
                      physics_.flow ? ",flow_kinetic_energy_J,flow_max_velocity_m_s,flow_max_divergence_1_s,flow_cfl,pressure_iterations,pressure_residual,pressure_pc_reused,viscous_iterations" : "");
@@ -161,13 +167,18 @@ PetscErrorCode Simulation::Step() {
 PetscErrorCode Simulation::Run() {
   PetscFunctionBeginUser;
   PetscCall(PetscTime(&wallStart_));
-  if (physics_.dem) PetscCall(dem_->WriteOutput(time_));
-  PetscCall(Monitor());
+  if (!checkpoint_.Restarting()) {  // a restart's first state was output by the run it continues
+    if (physics_.dem) PetscCall(dem_->WriteOutput(time_));
+    PetscCall(Monitor());
+  }
   while (step_ < maxSteps_ && time_ < finalTime_ * (1 - 1e-12)) {
     if (physics_.flow && dtUser_ == 0) PetscCall(ChooseTimeStep());  // the flow's limit moves with the flow
     PetscCall(Step());
     const bool last = step_ == maxSteps_ || time_ >= finalTime_ * (1 - 1e-12);
     if (step_ % monitorEvery_ == 0 || last) PetscCall(Monitor());
+    bool stop;
+    PetscCall(checkpoint_.AfterStep(*this, last, &stop));
+    if (stop) PetscFunctionReturn(0);  // a signal: checkpoint written, the run ends cleanly
   }
   if (physics_.dem && !dem_->SaveParticlesPath().empty()) PetscCall(dem_->SaveParticles(dem_->SaveParticlesPath()));
   if (physics_.flow && !flow_->ProfilePath().empty()) PetscCall(flow_->WriteProfile(flow_->ProfilePath()));
@@ -258,8 +269,45 @@ PetscErrorCode Simulation::View(PetscViewer viewer) const {
   PetscFunctionReturn(0);
 }
 
+PetscErrorCode Simulation::SaveState(PetscViewer viewer) {
+  PetscFunctionBeginUser;
+  PetscCall(PetscViewerHDF5WriteAttribute(viewer, "/", "simulation_step", PETSC_INT, &step_));
+  PetscCall(PetscViewerHDF5WriteAttribute(viewer, "/", "simulation_time", PETSC_REAL, &time_));
+  PetscCall(PetscViewerHDF5WriteAttribute(viewer, "/", "simulation_dt", PETSC_REAL, &dt_));
+  PetscCall(PetscViewerHDF5WriteAttribute(viewer, "/", "simulation_dt_basis", PETSC_STRING, dtLimitName_.c_str()));
+  if (physics_.dem) PetscCall(dem_->Save(viewer));  // its own group "dem"
+  if (physics_.flow) {
+    PetscCall(PetscViewerHDF5PushGroup(viewer, "flow"));
+    PetscCall(flow_->Save(viewer));
+    PetscCall(PetscViewerHDF5PopGroup(viewer));
+  }
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode Simulation::LoadState(PetscViewer viewer) {
+  char *basis = nullptr;
+
+  PetscFunctionBeginUser;
+  // ChooseTimeStep depends on step_ and dt_ (and the modules' state): restoring them continues the
+  // adaptive step exactly where the saving run was.
+  PetscCall(PetscViewerHDF5ReadAttribute(viewer, "/", "simulation_step", PETSC_INT, nullptr, &step_));
+  PetscCall(PetscViewerHDF5ReadAttribute(viewer, "/", "simulation_time", PETSC_REAL, nullptr, &time_));
+  PetscCall(PetscViewerHDF5ReadAttribute(viewer, "/", "simulation_dt", PETSC_REAL, nullptr, &dt_));
+  PetscCall(PetscViewerHDF5ReadAttribute(viewer, "/", "simulation_dt_basis", PETSC_STRING, nullptr, &basis));
+  dtLimitName_ = basis;
+  PetscCall(PetscFree(basis));
+  if (physics_.dem) PetscCall(dem_->Load(viewer));
+  if (physics_.flow) {
+    PetscCall(PetscViewerHDF5PushGroup(viewer, "flow"));
+    PetscCall(flow_->Load(viewer));
+    PetscCall(PetscViewerHDF5PopGroup(viewer));
+  }
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode Simulation::Destroy() {
   PetscFunctionBeginUser;
+  PetscCall(checkpoint_.Destroy());
   if (csv_) std::fclose(csv_);
   csv_ = nullptr;
   if (dem_) PetscCall(dem_->Destroy());

@@ -3,6 +3,7 @@
 // each inside its own PETSc log stage so -log_view breaks the time down per module.
 #pragma once
 
+#include "vofdem/core/Checkpoint.hpp"
 #include "vofdem/core/Physics.hpp"
 #include "vofdem/dem/Dem.hpp"
 #include "vofdem/flow/Flow.hpp"
@@ -25,6 +26,11 @@ public:
   PetscErrorCode Step();           // one coupled step of size Dt()
   PetscErrorCode View(PetscViewer viewer) const;  // the start-up banner
   PetscErrorCode Destroy();
+  // Collective, HDF5 viewer: the clock and the time-step controller's state (root attributes
+  // "simulation_*"), then every module's Save/Load (groups "dem", "flow"). LoadState after SetUp()
+  // with the saving run's options (Checkpoint::Restore checks them).
+  PetscErrorCode SaveState(PetscViewer viewer);
+  PetscErrorCode LoadState(PetscViewer viewer);
 
   PetscReal Time() const { return time_; }
   PetscReal Dt() const { return dt_; }
@@ -43,6 +49,7 @@ private:
   Grid       grid_;
   std::unique_ptr<Dem> dem_;
   std::unique_ptr<Flow> flow_;
+  Checkpoint checkpoint_;
 
   PetscReal time_ = 0, dt_ = 0, dtUser_ = 0, finalTime_ = PETSC_MAX_REAL;
   PetscBool dtForce_ = PETSC_FALSE, monitorTiming_ = PETSC_TRUE;

@@ -1,0 +1,47 @@
+// The checkpoint file format (issue 5): one HDF5 file per checkpoint, written through a
+// PetscViewerHDF5 by every rank, then sealed and checked by rank 0 with the HDF5 library directly.
+//
+// Root attributes: "vofdem_checkpoint_format" (kCheckpointFormat), "run_options" (the options that
+// define the run, RunDefiningOptions()), "physics", "ranks" (the rank count that wrote it), the
+// Simulation's clock ("simulation_*", Simulation::SaveState) and, added by SealCheckpoint once every
+// rank has closed the file, "checksum": a 64-bit FNV-1a hash of every dataset's name and values.
+// A file without a checksum (never sealed) or whose data no longer hash to it (truncated,
+// corrupted) fails ReadCheckpointHeader.
+#pragma once
+
+#include <petscsys.h>
+
+#include <string>
+
+namespace vofdem {
+
+// Raised whenever what a checkpoint holds or how it is laid out changes incompatibly.
+constexpr int kCheckpointFormat = 1;
+
+// The options of the PETSc options database that define the run, one "-name value" per line,
+// sorted: everything except the options that may legitimately differ between a run and its
+// restart (restart and checkpoint control, run length, monitors, output places, -grid_ranks, the
+// options-file names whose contents are already in the database, PETSc's logging and debugging).
+PetscErrorCode RunDefiningOptions(std::string *text);
+
+// The first line where two RunDefiningOptions() texts differ, as "A (in the checkpoint) against B
+// (in this run)"; empty when they are equal.
+std::string FirstDifference(const std::string &saved, const std::string &current);
+
+// What ReadCheckpointHeader returns.
+struct CheckpointHeader {
+  int         format = 0, ranks = 0;
+  long long   step   = -1;
+  std::string options, physics;
+};
+
+// Not collective (rank 0). Computes the checksum of the closed file `path` and stores it as the
+// root attribute "checksum". False with a reason when the file cannot be opened or written.
+bool SealCheckpoint(const std::string &path, std::string *why);
+
+// Not collective (rank 0). Opens `path` read-only, reads the header attributes and verifies the
+// checksum over all datasets. False with a one-phrase reason ("cannot open it as HDF5 (missing,
+// truncated or not a checkpoint)", "checksum mismatch (corrupted)", ...) otherwise.
+bool ReadCheckpointHeader(const std::string &path, CheckpointHeader *header, std::string *why);
+
+}  // namespace vofdem

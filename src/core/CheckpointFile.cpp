@@ -1,0 +1,216 @@
+#include "vofdem/core/CheckpointFile.hpp"
+
+#include <hdf5.h>
+
+#include <algorithm>
+#include <cctype>
+#include <cstdint>
+#include <cstring>
+#include <sstream>
+#include <vector>
+
+namespace vofdem {
+
+namespace {
+
+// Options that may differ between a run and its restart without changing what is computed.
+const char *const kFreeExact[] = {"-restart", "-max_steps", "-final_time", "-output_dir", "-help", "-allow_unused_options", "-grid_ranks",
+                                  "-dem_save_particles", "-flow_profile_output", "-no_signal_handler", "-on_error_abort", "-info"};
+const char *const kFreePrefix[] = {"-checkpoint_", "-monitor_", "-log_", "-options_", "-malloc", "-memory_"};
+
+bool IsFree(const std::string &name) {
+  for (const char *e : kFreeExact)
+    if (name == e) return true;
+  for (const char *p : kFreePrefix)
+    if (name.compare(0, std::strlen(p), p) == 0) return true;
+  return false;
+}
+
+// A token of PetscOptionsGetAll's text is an option name when it is '-' and a letter: "-1e-3" is a value.
+bool IsName(const std::string &t) { return t.size() > 1 && t[0] == '-' && std::isalpha((unsigned char)t[1]); }
+
+// HDF5 prints its own error stack by default; the checks below report one reason instead. The
+// previous printing is put back when the guard goes, so PETSc's HDF5 use is unaffected.
+class QuietHdf5 {
+public:
+  QuietHdf5() {
+    H5Eget_auto2(H5E_DEFAULT, &func_, &data_);
+    H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
+  }
+  ~QuietHdf5() { H5Eset_auto2(H5E_DEFAULT, func_, data_); }
+
+private:
+  H5E_auto2_t func_ = nullptr;
+  void       *data_ = nullptr;
+};
+
+constexpr std::uint64_t kFnvOffset = 1469598103934665603ull, kFnvPrime = 1099511628211ull;
+
+void Hash(std::uint64_t *h, const void *bytes, size_t n) {
+  const unsigned char *b = (const unsigned char *)bytes;
+  for (size_t k = 0; k < n; ++k) *h = (*h ^ b[k]) * kFnvPrime;
+}
+
+herr_t CollectDataset(hid_t group, const char *name, const H5L_info_t *, void *names) {
+  hid_t obj = H5Oopen(group, name, H5P_DEFAULT);
+  if (obj < 0) return -1;
+  const bool dataset = H5Iget_type(obj) == H5I_DATASET;
+  H5Oclose(obj);
+  if (dataset) ((std::vector<std::string> *)names)->push_back(name);
+  return 0;
+}
+
+// FNV-1a over every dataset (in name order): its name, then its values in the native layout.
+bool Checksum(hid_t file, std::uint64_t *sum, std::string *why) {
+  std::vector<std::string> names;
+  if (H5Lvisit(file, H5_INDEX_NAME, H5_ITER_INC, CollectDataset, &names) < 0) {
+    *why = "its group structure cannot be read (corrupted)";
+    return false;
+  }
+  std::sort(names.begin(), names.end());
+  *sum = kFnvOffset;
+  std::vector<char> buf;
+  for (const std::string &name : names) {
+    Hash(sum, name.c_str(), name.size() + 1);
+    bool  ok    = false;
+    hid_t dset  = H5Dopen2(file, name.c_str(), H5P_DEFAULT);
+    hid_t ftype = dset >= 0 ? H5Dget_type(dset) : -1;
+    hid_t mtype = ftype >= 0 ? H5Tget_native_type(ftype, H5T_DIR_ASCEND) : -1;
+    hid_t space = dset >= 0 ? H5Dget_space(dset) : -1;
+    if (mtype >= 0 && space >= 0) {
+      const hssize_t n = H5Sget_simple_extent_npoints(space);
+      if (n >= 0) {
+        buf.resize((size_t)n * H5Tget_size(mtype) + 1);
+        ok = n == 0 || H5Dread(dset, mtype, H5S_ALL, H5S_ALL, H5P_DEFAULT, buf.data()) >= 0;
+        if (ok) Hash(sum, buf.data(), buf.size() - 1);
+      }
+    }
+    if (space >= 0) H5Sclose(space);
+    if (mtype >= 0) H5Tclose(mtype);
+    if (ftype >= 0) H5Tclose(ftype);
+    if (dset >= 0) H5Dclose(dset);
+    if (!ok) {
+      *why = "dataset " + name + " cannot be read (truncated or corrupted)";
+      return false;
+    }
+  }
+  return true;
+}
+
+bool ReadString(hid_t file, const char *name, std::string *value) {
+  hid_t attr = H5Aopen(file, name, H5P_DEFAULT);
+  if (attr < 0) return false;
+  hid_t             type = H5Aget_type(attr);
+  bool              ok   = type >= 0 && H5Tget_class(type) == H5T_STRING && !H5Tis_variable_str(type);
+  std::vector<char> buf(ok ? H5Tget_size(type) + 1 : 1, '\0');
+  ok = ok && H5Aread(attr, type, buf.data()) >= 0;
+  if (ok) value->assign(buf.data());
+  if (type >= 0) H5Tclose(type);
+  H5Aclose(attr);
+  return ok;
+}
+
+template <class T>
+bool ReadNumber(hid_t file, const char *name, hid_t memType, T *value) {
+  hid_t attr = H5Aopen(file, name, H5P_DEFAULT);
+  if (attr < 0) return false;
+  const bool ok = H5Aread(attr, memType, value) >= 0;
+  H5Aclose(attr);
+  return ok;
+}
+
+}  // namespace
+
+PetscErrorCode RunDefiningOptions(std::string *text) {
+  char *all;
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscOptionsGetAll(nullptr, &all));
+  std::istringstream       in(all);
+  std::vector<std::string> lines;
+  std::string              token;
+  bool                     keep = false;
+  while (in >> token) {
+    if (IsName(token)) {
+      keep = !IsFree(token);
+      if (keep) lines.push_back(token);
+    } else if (keep && !lines.empty()) {
+      lines.back() += " " + token;
+    }
+  }
+  PetscCall(PetscFree(all));
+  std::sort(lines.begin(), lines.end());
+  text->clear();
+  for (const std::string &l : lines) *text += l + "\n";
+  PetscFunctionReturn(0);
+}
+
+std::string FirstDifference(const std::string &saved, const std::string &current) {
+  std::istringstream a(saved), b(current);
+  std::string        la, lb;
+  while (true) {
+    const bool ha = (bool)std::getline(a, la), hb = (bool)std::getline(b, lb);
+    if (!ha && !hb) return "";
+    if (ha && hb && la == lb) continue;
+    // Sorted lists: the smaller line is the one missing from the other side.
+    if (ha && (!hb || la < lb) && la.substr(0, la.find(' ')) != lb.substr(0, lb.find(' ')))
+      return "'" + la + "' in the checkpoint, not in this run";
+    if (hb && (!ha || lb < la) && la.substr(0, la.find(' ')) != lb.substr(0, lb.find(' ')))
+      return "'" + lb + "' in this run, not in the checkpoint";
+    return "'" + la + "' in the checkpoint, '" + lb + "' in this run";
+  }
+}
+
+bool SealCheckpoint(const std::string &path, std::string *why) {
+  QuietHdf5     quiet;
+  std::uint64_t sum  = 0;
+  hid_t         file = H5Fopen(path.c_str(), H5F_ACC_RDWR, H5P_DEFAULT);
+  if (file < 0) {
+    *why = "cannot reopen it to seal it";
+    return false;
+  }
+  bool ok = Checksum(file, &sum, why);
+  if (ok) {
+    hid_t space = H5Screate(H5S_SCALAR);
+    hid_t attr  = H5Acreate2(file, "checksum", H5T_STD_U64LE, space, H5P_DEFAULT, H5P_DEFAULT);
+    ok          = attr >= 0 && H5Awrite(attr, H5T_NATIVE_UINT64, &sum) >= 0;
+    if (attr >= 0) H5Aclose(attr);
+    H5Sclose(space);
+    if (!ok) *why = "cannot write its checksum";
+  }
+  if (H5Fclose(file) < 0 && ok) {
+    *why = "cannot close it after sealing (disk full?)";
+    ok   = false;
+  }
+  return ok;
+}
+
+bool ReadCheckpointHeader(const std::string &path, CheckpointHeader *h, std::string *why) {
+  QuietHdf5 quiet;
+  if (H5Fis_hdf5(path.c_str()) <= 0) {
+    *why = "cannot open it as HDF5 (missing, truncated or not a checkpoint)";
+    return false;
+  }
+  hid_t file = H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+  if (file < 0) {
+    *why = "cannot open it as HDF5 (truncated or corrupted)";
+    return false;
+  }
+  bool          ok    = false;
+  std::uint64_t saved = 0, sum = 0;
+  if (!ReadNumber(file, "vofdem_checkpoint_format", H5T_NATIVE_INT, &h->format)) *why = "it is not a vofdem checkpoint (no format version)";
+  else if (h->format != kCheckpointFormat)
+    *why = "format version " + std::to_string(h->format) + ", this vofdem reads version " + std::to_string(kCheckpointFormat);
+  else if (!ReadNumber(file, "checksum", H5T_NATIVE_UINT64, &saved)) *why = "it has no checksum (its writing did not finish)";
+  else if (!ReadString(file, "run_options", &h->options) || !ReadString(file, "physics", &h->physics) ||
+           !ReadNumber(file, "ranks", H5T_NATIVE_INT, &h->ranks) || !ReadNumber(file, "simulation_step", H5T_NATIVE_LLONG, &h->step))
+    *why = "its header is incomplete (corrupted)";
+  else if (Checksum(file, &sum, why)) {
+    ok = sum == saved;
+    if (!ok) *why = "checksum mismatch (corrupted)";
+  }
+  H5Fclose(file);
+  return ok;
+}
+
+}  // namespace vofdem

@@ -1,0 +1,276 @@
+#!/usr/bin/python3
+"""Checkpoint/restart tests (issue 5), each a CTest of its own (config/cmake/VofdemCheckpointTests.cmake):
+
+  bitwise SCENE RANKS   2N steps uninterrupted; N steps, then -restart latest to 2N; 2N steps with a
+                        checkpoint every 5 steps: the final checkpoints (every dataset, the clock) must
+                        be equal bit for bit. A control checks that the comparison sees a difference
+                        (the step-N checkpoint against the step-2N one).
+  ranks SCENE R1 R2     N steps on R1 ranks, -restart on R2 ranks to 2N, against the uninterrupted 2N
+                        steps on R1: flow fields within 1e-12 relative, DEM the same ids with positions
+                        (relative to the box), velocities and angular velocities (relative to their
+                        largest magnitude) within 1e-10.
+  signal RANKS          SIGTERM to one rank mid-run: exit 0 with one message, a checkpoint of that
+                        step; -restart latest ends bitwise equal to the uninterrupted run.
+  badinput              -restart of a missing, truncated, corrupted, other-version and other-scene file,
+                        -restart latest with nothing valid, an unwritable -checkpoint_dir: one line, non-
+                        zero exit on every rank (test/badinput/expect-error); -restart latest skips a
+                        corrupted newest file and says so; a write that fails mid-run is one error line
+                        and leaves the previous checkpoint valid.
+SCENE is dem or flow. Usage: test_checkpoint.py VOFDEM CASE ARGS..."""
+import glob
+import os
+import re
+import shutil
+import signal
+import subprocess
+import sys
+import tempfile
+import time
+
+import h5py
+import numpy as np
+
+ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+EXPECT = os.path.join(ROOT, "test", "badinput", "expect-error")
+SCENES = {
+    # 200 spheres with random velocities under gravity in a 1 cm box: contacts, wall contacts, list
+    # rebuilds and, on 2 ranks, particles crossing between ranks within the first 100 steps.
+    "dem": ("-physics dem -grid_cells 4,4,4 -grid_upper 0.01,0.01,0.01 -dem_radius 5e-4 -dem_fill_count 200 -dem_fill_jitter 0.5 "
+            "-dem_fill_velocity_spread 0.3 -seed 7".split(), 100, 500),
+    # F2 at 32 x 32 x 4: the adaptive time step, AB2 history and preconditioner reuse all matter.
+    "flow": (["-options_file_yaml", os.path.join(ROOT, "config", "scenes", "cavity-re100.yaml")] +
+             "-grid_cells 32,32,4 -grid_upper 1,1,0.125".split(), 20, 20),
+}  # (options, N of the bitwise case, N of the rank-count case)
+QUIET = "-monitor_every 1000000 -monitor_timing 0".split()
+ENV = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1", OMP_NUM_THREADS="1")
+failures = []
+
+
+def check(ok, what):
+    print("%s %s" % ("ok" if ok else "not ok", what))
+    if not ok:
+        failures.append(what)
+
+
+def mpi(ranks):
+    return ["mpiexec", "-n", str(ranks), "--oversubscribe", "--bind-to", "none"]
+
+
+def scene_args(scene, ranks):
+    # On 2 ranks the DEM box is split across x, so that both ranks own particles (split along the
+    # height, one rank would hold them all); -grid_ranks may differ between a run and its restart.
+    extra = ["-grid_ranks", "2,1,1"] if scene == "dem" and ranks == 2 else []
+    return SCENES[scene][0] + extra + QUIET
+
+
+def run(exe, ranks, scene, args, expect_ok=True):
+    cmd = mpi(ranks) + [exe] + scene_args(scene, ranks) + args
+    p = subprocess.run(cmd, capture_output=True, text=True, timeout=300, env=ENV)
+    if expect_ok and p.returncode != 0:
+        print(p.stdout + p.stderr)
+        raise SystemExit("FAIL: %s exited %d" % (" ".join(cmd), p.returncode))
+    return p
+
+
+def ckpt(d, step):
+    return os.path.join(d, "checkpoint_%08d.h5" % step)
+
+
+def datasets(path):
+    out = {}
+    with h5py.File(path, "r") as f:
+        f.visititems(lambda name, obj: out.__setitem__(name, obj[()]) if isinstance(obj, h5py.Dataset) else None)
+        for a in ("simulation_step", "simulation_time", "simulation_dt"):
+            out["@" + a] = np.array(f.attrs[a])
+    return out
+
+
+def bitwise_diff(a, b):
+    """Names of the datasets (and clock attributes) that differ in any bit, or exist on one side only."""
+    A, B = datasets(a), datasets(b)
+    diff = sorted(set(A) ^ set(B))
+    for k in sorted(set(A) & set(B)):
+        if A[k].shape != B[k].shape or A[k].tobytes() != B[k].tobytes():
+            diff.append(k)
+    return diff
+
+
+def case_bitwise(exe, scene, ranks):
+    n = SCENES[scene][1]
+    tmp = tempfile.mkdtemp(prefix="vofdem-ckpt-")
+    a, b, c = (os.path.join(tmp, x) for x in "abc")
+    run(exe, ranks, scene, ["-max_steps", str(2 * n), "-checkpoint_dir", a])
+    run(exe, ranks, scene, ["-max_steps", str(n), "-checkpoint_dir", b])
+    p = run(exe, ranks, scene, ["-max_steps", str(2 * n), "-checkpoint_dir", b, "-restart", "latest"])
+    check(re.search(r"^vofdem: restarted from .*checkpoint_%08d\.h5 at step %d," % (n, n), p.stdout, re.M), "restart message names the step-%d file" % n)
+    run(exe, ranks, scene, ["-max_steps", str(2 * n), "-checkpoint_dir", c, "-checkpoint_every", "5", "-checkpoint_keep", "3"])
+    d = bitwise_diff(ckpt(a, 2 * n), ckpt(b, 2 * n))
+    check(not d, "%s on %d rank(s): %d steps = %d steps + restart + %d steps, bitwise (differing: %s)" % (scene, ranks, 2 * n, n, n, d))
+    d = bitwise_diff(ckpt(a, 2 * n), ckpt(c, 2 * n))
+    check(not d, "%s on %d rank(s): checkpoints every 5 steps leave the final state bitwise unchanged (differing: %s)" % (scene, ranks, d))
+    kept = sorted(os.path.basename(x) for x in glob.glob(os.path.join(c, "*")) + glob.glob(os.path.join(c, ".*")))
+    want = ["checkpoint_%08d.h5" % s for s in (2 * n - 10, 2 * n - 5, 2 * n)]
+    check(kept == want, "-checkpoint_keep 3 keeps %s, no temporary files (found %s)" % (want, kept))
+    check(bitwise_diff(ckpt(b, n), ckpt(b, 2 * n)) != [], "control: the comparison sees step %d differ from step %d" % (n, 2 * n))
+    shutil.rmtree(tmp)
+
+
+def rel(x, y, scale):
+    return float(np.abs(x - y).max() / scale) if x.size else 0.0
+
+
+def compare_across(scene, a, b):
+    A, B = datasets(a), datasets(b)
+    if scene == "flow":
+        vel = max(np.abs(A["flow/flow_" + c]).max() for c in "uvw")
+        pre = np.abs(A["flow/flow_pressure"]).max()
+        out = {k: rel(A["flow/flow_" + k], B["flow/flow_" + k], vel) for k in "uvw"}
+        out["p"] = rel(A["flow/flow_pressure"], B["flow/flow_pressure"], pre)
+        return out, 1e-12, True
+    ia, ib = np.argsort(A["dem/swarm_id"].ravel()), np.argsort(B["dem/swarm_id"].ravel())
+    same = np.array_equal(A["dem/swarm_id"].ravel()[ia], B["dem/swarm_id"].ravel()[ib])
+    out = {}
+    for key, scale in (("DMSwarmPIC_coor", 0.01), ("velocity", None), ("omega", None)):
+        x, y = A["dem/swarm_" + key][ia], B["dem/swarm_" + key][ib] if same else None
+        out[key] = rel(x, y, scale or np.abs(x).max()) if same else float("inf")
+    return out, 1e-10, same
+
+
+def case_ranks(exe, scene, r1, r2):
+    n = SCENES[scene][2]  # DEM: long enough that 1 and 2 ranks differ in the last bits
+    tmp = tempfile.mkdtemp(prefix="vofdem-ckpt-")
+    a, b = os.path.join(tmp, "a"), os.path.join(tmp, "b")
+    run(exe, r1, scene, ["-max_steps", str(2 * n), "-checkpoint_dir", a])
+    run(exe, r1, scene, ["-max_steps", str(n), "-checkpoint_dir", b])
+    p = run(exe, r2, scene, ["-max_steps", str(2 * n), "-checkpoint_dir", b, "-restart", ckpt(b, n)])
+    check(("written on %d rank" % r1) in p.stdout, "the restart says the file was written on %d rank(s)" % r1)
+    errors, tol, same = compare_across(scene, ckpt(a, 2 * n), ckpt(b, 2 * n))
+    if scene == "dem":
+        check(same, "dem: the same particle ids after the restart on %d rank(s)" % r2)
+    text = ", ".join("%s %.2e" % kv for kv in errors.items())
+    check(max(errors.values()) <= tol, "%s: written on %d, continued on %d rank(s), %d steps later: %s (limit %g)" % (scene, r1, r2, n, text, tol))
+    shutil.rmtree(tmp)
+
+
+def rank_pids(launcher):
+    """The vofdem processes started by mpiexec (its children, or theirs)."""
+    out = subprocess.run(["ps", "-eo", "pid,ppid,comm"], capture_output=True, text=True).stdout.split("\n")[1:]
+    rows = [l.split() for l in out if l.strip()]
+    kids, frontier = [], {launcher}
+    while frontier:
+        new = {int(r[0]) for r in rows if int(r[1]) in frontier}
+        kids += [int(r[0]) for r in rows if int(r[1]) in frontier and r[2] == "vofdem"]
+        frontier = new
+    return sorted(kids)
+
+
+def case_signal(exe, ranks):
+    scene, steps = "dem", 4000
+    tmp = tempfile.mkdtemp(prefix="vofdem-ckpt-")
+    a, b = os.path.join(tmp, "a"), os.path.join(tmp, "b")
+    run(exe, ranks, scene, ["-max_steps", str(steps), "-checkpoint_dir", a])
+    cmd = mpi(ranks) + [exe] + scene_args(scene, ranks) + ["-max_steps", str(steps), "-checkpoint_dir", b, "-checkpoint_every", "100"]
+    proc = subprocess.Popen(cmd, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, env=ENV)
+    deadline = time.time() + 60
+    while not glob.glob(ckpt(b, 100)) and time.time() < deadline and proc.poll() is None:
+        time.sleep(0.02)
+    pids = rank_pids(proc.pid)
+    check(len(pids) == ranks, "found the %d rank processes (%s)" % (ranks, pids))
+    if pids:
+        os.kill(pids[-1], signal.SIGTERM)  # one rank only: the ranks must agree to stop together
+    out, err = proc.communicate(timeout=120)
+    m = re.search(r"^vofdem: stopped by signal 15 at step (\d+),", out, re.M)
+    check(proc.returncode == 0 and m is not None, "SIGTERM: exit 0 (got %d) with the message (%s)" % (proc.returncode, (out + err).strip().splitlines()[-1:]))
+    if m:
+        stop = int(m.group(1))
+        check(0 < stop < steps and os.path.exists(ckpt(b, stop)), "stopped at step %d with its checkpoint" % stop)
+        run(exe, ranks, scene, ["-max_steps", str(steps), "-checkpoint_dir", b, "-restart", "latest"])
+        d = bitwise_diff(ckpt(a, steps), ckpt(b, steps))
+        check(not d, "stopped by SIGTERM at step %d, restarted: the final state equals the uninterrupted run bitwise (differing: %s)" % (stop, d))
+    shutil.rmtree(tmp)
+
+
+def expect_error(exe, regex, args, scene="dem"):
+    cmd = [sys.executable, EXPECT, "--ranks", "2", "--match", regex, "--", exe] + scene_args(scene, 2) + args
+    p = subprocess.run(cmd, capture_output=True, text=True, env=ENV)
+    check(p.returncode == 0, "bad input %s: %s" % (" ".join(args), (p.stdout.strip().splitlines() or ["?"])[-1]))
+
+
+def case_badinput(exe):
+    tmp = tempfile.mkdtemp(prefix="vofdem-ckpt-")
+    good = os.path.join(tmp, "good")
+    run(exe, 2, "dem", ["-max_steps", "20", "-checkpoint_dir", good, "-checkpoint_every", "10"])
+    f10, f20 = ckpt(good, 10), ckpt(good, 20)
+    size = os.path.getsize(f20)
+    E = r"option -restart: '.*%s': "
+    expect_error(exe, r"option -restart: '.*none\.h5': no such file", ["-restart", os.path.join(tmp, "none.h5"), "-max_steps", "30"])
+    bad = os.path.join(tmp, "bad")
+    os.makedirs(bad)
+    trunc = os.path.join(bad, "truncated.h5")
+    shutil.copy(f20, trunc)
+    subprocess.run(["truncate", "-s", str(size // 2), trunc], check=True)
+    expect_error(exe, (E % "truncated\\.h5") + "cannot open it as HDF5", ["-restart", trunc, "-max_steps", "30"])
+    corrupt = os.path.join(bad, "corrupted.h5")
+    shutil.copy(f20, corrupt)
+    with h5py.File(f20, "r") as f:  # flip bytes inside the particle positions (a chunked dataset: found by its values)
+        pattern = np.ascontiguousarray(f["dem/swarm_DMSwarmPIC_coor"][:4]).tobytes()
+    data = bytearray(open(f20, "rb").read())
+    offset = data.find(pattern)
+    check(offset > 0, "found the particle positions in the file")
+    data[offset + 40:offset + 44] = bytes(b ^ 0xFF for b in data[offset + 40:offset + 44])
+    open(corrupt, "wb").write(data)
+    expect_error(exe, (E % "corrupted\\.h5") + "checksum mismatch", ["-restart", corrupt, "-max_steps", "30"])
+    version = os.path.join(bad, "version.h5")
+    shutil.copy(f20, version)
+    with h5py.File(version, "r+") as f:
+        f.attrs["vofdem_checkpoint_format"] = np.int32(99)
+    expect_error(exe, (E % "version\\.h5") + "format version 99, this vofdem reads version 1", ["-restart", version, "-max_steps", "30"])
+    expect_error(exe, (E % "checkpoint_00000020\\.h5") + "another scene: '-dem_radius 5e-4' in the checkpoint, '-dem_radius 4e-4' in this run",
+                 ["-restart", f20, "-dem_radius", "4e-4", "-max_steps", "30"])
+    expect_error(exe, (E % "checkpoint_00000020\\.h5") + "it is of physics dem, this run flow", ["-restart", f20, "-max_steps", "30"], scene="flow")
+    # latest: nothing valid (the two files of `bad` renamed as checkpoints)
+    junk = os.path.join(tmp, "junk")
+    os.makedirs(junk)
+    shutil.copy(trunc, ckpt(junk, 30))
+    shutil.copy(corrupt, ckpt(junk, 40))
+    expect_error(exe, r"option -restart: no valid checkpoint in '.*junk' \(skipped .*checkpoint_00000040\.h5: checksum mismatch.*; "
+                 r".*checkpoint_00000030\.h5: cannot open", ["-restart", "latest", "-checkpoint_dir", junk, "-max_steps", "50"])
+    # latest skips a corrupted newest file, says so, and continues from the valid one
+    shutil.copy(corrupt, ckpt(good, 25))
+    p = run(exe, 2, "dem", ["-max_steps", "30", "-checkpoint_dir", good, "-restart", "latest"])
+    check(re.search(r"^vofdem: warning: -restart latest: skipped .*checkpoint_00000025\.h5: checksum mismatch", p.stderr, re.M) is not None and
+          "restarted from %s at step 20" % f20 in p.stdout, "-restart latest skips the corrupted step-25 file and continues from step 20")
+    expect_error(exe, r"option -checkpoint_dir: cannot create '/dev/null/x'", ["-checkpoint_dir", "/dev/null/x", "-max_steps", "10"])
+    # A write that fails mid-run (the temporary name is taken by a folder): one error line, a
+    # non-zero exit, and the previous checkpoint stays valid.
+    mid = os.path.join(tmp, "mid")
+    os.makedirs(os.path.join(mid, ".checkpoint_00000020.h5.tmp"))
+    p = run(exe, 2, "dem", ["-max_steps", "30", "-checkpoint_dir", mid, "-checkpoint_every", "10"], expect_ok=False)
+    errs = [l for l in (p.stdout + p.stderr).splitlines() if l.startswith("vofdem: error:")]
+    check(p.returncode != 0 and len(errs) == 1 and "checkpoint: cannot write" in errs[0] and "PETSC ERROR" not in p.stderr,
+          "a failed checkpoint write: one error line, non-zero exit (%s)" % errs)
+    p = run(exe, 2, "dem", ["-max_steps", "30", "-checkpoint_dir", mid, "-restart", "latest", "-checkpoint_final", "0"], expect_ok=False)
+    check(p.returncode == 0 and "restarted from %s at step 10" % ckpt(mid, 10) in p.stdout, "the step-10 checkpoint before the failed write is valid")
+    shutil.rmtree(tmp)
+
+
+def main():
+    exe, case, args = sys.argv[1], sys.argv[2], sys.argv[3:]
+    if case == "bitwise":
+        case_bitwise(exe, args[0], int(args[1]))
+    elif case == "ranks":
+        case_ranks(exe, args[0], int(args[1]), int(args[2]))
+    elif case == "signal":
+        case_signal(exe, int(args[0]))
+    elif case == "badinput":
+        case_badinput(exe)
+    else:
+        raise SystemExit("unknown case " + case)
+    if failures:
+        print("FAIL: %d check(s) failed" % len(failures))
+        sys.exit(1)
+    print("all checks passed")
+
+
+if __name__ == "__main__":
+    main()
