@@ -259,9 +259,12 @@ PetscErrorCode Checkpoint::RemoveOld() {
   PetscCallMPI(MPI_Comm_rank(comm_, &rank));
   if (rank == 0) {
     const std::vector<fs::path> all = Checkpoints(dir_);
-    for (size_t k = (size_t)keep_; k < all.size(); ++k) {
-      std::error_code ec;
-      fs::remove(all[k], ec);
+    std::error_code             ec;
+    for (size_t k = (size_t)keep_; k < all.size(); ++k) fs::remove(all[k], ec);
+    // Temporary files left by a run that was killed while writing (none is being written now).
+    for (fs::directory_iterator it(dir_, ec), end; !ec && it != end; it.increment(ec)) {
+      const std::string n = it->path().filename().string();
+      if (n.size() > 16 && !n.compare(0, 12, ".checkpoint_") && !n.compare(n.size() - 7, 7, ".h5.tmp") && it->is_regular_file(ec)) fs::remove(it->path(), ec);
     }
   }
   PetscFunctionReturn(0);

@@ -2,8 +2,8 @@
 """Checkpoint/restart tests (issue 5), each a CTest of its own (config/cmake/VofdemCheckpointTests.cmake):
 
   bitwise SCENE RANKS   2N steps uninterrupted; N steps, then -restart latest to 2N; 2N steps with a
-                        checkpoint every 5 steps: the final checkpoints (every dataset, the clock) must
-                        be equal bit for bit. A control checks that the comparison sees a difference
+                        checkpoint every 5 steps; 2N steps with one every 0.6 ms of wall time: the final
+                        checkpoints (every dataset, the clock) must be equal bit for bit. A control checks that the comparison sees a difference
                         (the step-N checkpoint against the step-2N one).
   ranks SCENE R1 R2     N steps on R1 ranks, -restart on R2 ranks to 2N, against the uninterrupted 2N
                         steps on R1: flow fields within 1e-12 relative, DEM the same ids with positions
@@ -31,6 +31,8 @@ import h5py
 import numpy as np
 
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+sys.path.insert(0, os.path.join(ROOT, "scripts", "lib"))
+from checkpointtools import bitwise_diff, rank_pids, path as ckpt, read as datasets  # noqa: E402
 EXPECT = os.path.join(ROOT, "test", "badinput", "expect-error")
 SCENES = {
     # 200 spheres with random velocities under gravity in a 1 cm box: contacts, wall contacts, list
@@ -72,29 +74,6 @@ def run(exe, ranks, scene, args, expect_ok=True):
     return p
 
 
-def ckpt(d, step):
-    return os.path.join(d, "checkpoint_%08d.h5" % step)
-
-
-def datasets(path):
-    out = {}
-    with h5py.File(path, "r") as f:
-        f.visititems(lambda name, obj: out.__setitem__(name, obj[()]) if isinstance(obj, h5py.Dataset) else None)
-        for a in ("simulation_step", "simulation_time", "simulation_dt"):
-            out["@" + a] = np.array(f.attrs[a])
-    return out
-
-
-def bitwise_diff(a, b):
-    """Names of the datasets (and clock attributes) that differ in any bit, or exist on one side only."""
-    A, B = datasets(a), datasets(b)
-    diff = sorted(set(A) ^ set(B))
-    for k in sorted(set(A) & set(B)):
-        if A[k].shape != B[k].shape or A[k].tobytes() != B[k].tobytes():
-            diff.append(k)
-    return diff
-
-
 def case_bitwise(exe, scene, ranks):
     n = SCENES[scene][1]
     tmp = tempfile.mkdtemp(prefix="vofdem-ckpt-")
@@ -111,6 +90,10 @@ def case_bitwise(exe, scene, ranks):
     kept = sorted(os.path.basename(x) for x in glob.glob(os.path.join(c, "*")) + glob.glob(os.path.join(c, ".*")))
     want = ["checkpoint_%08d.h5" % s for s in (2 * n - 10, 2 * n - 5, 2 * n)]
     check(kept == want, "-checkpoint_keep 3 keeps %s, no temporary files (found %s)" % (want, kept))
+    w = os.path.join(tmp, "w")  # by wall time, every 0.6 ms: the 2N steps take longer (DEM ~10 ms)
+    run(exe, ranks, scene, ["-max_steps", str(2 * n), "-checkpoint_dir", w, "-checkpoint_minutes", "0.00001", "-checkpoint_keep", "1000"])
+    d = bitwise_diff(ckpt(a, 2 * n), ckpt(w, 2 * n))
+    check(len(os.listdir(w)) >= 2 and not d, "-checkpoint_minutes 0.00001: %d checkpoints, final state bitwise unchanged (differing: %s)" % (len(os.listdir(w)), d))
     check(bitwise_diff(ckpt(b, n), ckpt(b, 2 * n)) != [], "control: the comparison sees step %d differ from step %d" % (n, 2 * n))
     shutil.rmtree(tmp)
 
@@ -150,18 +133,6 @@ def case_ranks(exe, scene, r1, r2):
     text = ", ".join("%s %.2e" % kv for kv in errors.items())
     check(max(errors.values()) <= tol, "%s: written on %d, continued on %d rank(s), %d steps later: %s (limit %g)" % (scene, r1, r2, n, text, tol))
     shutil.rmtree(tmp)
-
-
-def rank_pids(launcher):
-    """The vofdem processes started by mpiexec (its children, or theirs)."""
-    out = subprocess.run(["ps", "-eo", "pid,ppid,comm"], capture_output=True, text=True).stdout.split("\n")[1:]
-    rows = [l.split() for l in out if l.strip()]
-    kids, frontier = [], {launcher}
-    while frontier:
-        new = {int(r[0]) for r in rows if int(r[1]) in frontier}
-        kids += [int(r[0]) for r in rows if int(r[1]) in frontier and r[2] == "vofdem"]
-        frontier = new
-    return sorted(kids)
 
 
 def case_signal(exe, ranks):
@@ -241,10 +212,11 @@ def case_badinput(exe):
     check(re.search(r"^vofdem: warning: -restart latest: skipped .*checkpoint_00000025\.h5: checksum mismatch", p.stderr, re.M) is not None and
           "restarted from %s at step 20" % f20 in p.stdout, "-restart latest skips the corrupted step-25 file and continues from step 20")
     expect_error(exe, r"option -checkpoint_dir: cannot create '/dev/null/x'", ["-checkpoint_dir", "/dev/null/x", "-max_steps", "10"])
-    # A write that fails mid-run (the temporary name is taken by a folder): one error line, a
+    # A write that fails mid-run (the temporary name is taken by a folder, not empty so that the
+    # clean-up of temporary files left by killed runs leaves it): one error line, a
     # non-zero exit, and the previous checkpoint stays valid.
     mid = os.path.join(tmp, "mid")
-    os.makedirs(os.path.join(mid, ".checkpoint_00000020.h5.tmp"))
+    os.makedirs(os.path.join(mid, ".checkpoint_00000020.h5.tmp", "x"))
     p = run(exe, 2, "dem", ["-max_steps", "30", "-checkpoint_dir", mid, "-checkpoint_every", "10"], expect_ok=False)
     errs = [l for l in (p.stdout + p.stderr).splitlines() if l.startswith("vofdem: error:")]
     check(p.returncode != 0 and len(errs) == 1 and "checkpoint: cannot write" in errs[0] and "PETSC ERROR" not in p.stderr,
@@ -255,7 +227,9 @@ def case_badinput(exe):
 
 
 def main():
-    exe, case, args = sys.argv[1], sys.argv[2], sys.argv[3:]
+    exe, case, args = os.path.abspath(sys.argv[1]), sys.argv[2], sys.argv[3:]
+    work = tempfile.mkdtemp(prefix="vofdem-ckpt-")
+    os.chdir(work)  # the runs' own outputs (the cavity scene's profile) stay out of the build folder
     if case == "bitwise":
         case_bitwise(exe, args[0], int(args[1]))
     elif case == "ranks":
@@ -270,6 +244,7 @@ def main():
         print("FAIL: %d check(s) failed" % len(failures))
         sys.exit(1)
     print("all checks passed")
+    shutil.rmtree(work)
 
 
 if __name__ == "__main__":
