@@ -60,7 +60,49 @@ herr_t CollectDataset(hid_t group, const char *name, const H5L_info_t *, void *n
   return 0;
 }
 
-// FNV-1a over every dataset (in name order): its name, then its values in the native layout.
+herr_t CollectAttribute(hid_t, const char *name, const H5A_info_t *, void *names) {
+  if (std::strcmp(name, "checksum")) ((std::vector<std::string> *)names)->push_back(name);
+  return 0;
+}
+
+// The root attributes but "checksum" (format, options, the clock), in name order: name, then value.
+bool HashAttributes(hid_t file, std::uint64_t *sum, std::string *why) {
+  std::vector<std::string> names;
+  hsize_t                  at = 0;
+  if (H5Aiterate2(file, H5_INDEX_NAME, H5_ITER_INC, &at, CollectAttribute, &names) < 0) {
+    *why = "its header cannot be read (corrupted)";
+    return false;
+  }
+  std::sort(names.begin(), names.end());
+  std::vector<char> buf;
+  for (const std::string &name : names) {
+    Hash(sum, name.c_str(), name.size() + 1);
+    hid_t attr  = H5Aopen(file, name.c_str(), H5P_DEFAULT);
+    hid_t ftype = attr >= 0 ? H5Aget_type(attr) : -1;
+    // Strings as stored; numbers in the native layout.
+    hid_t mtype = ftype < 0 ? -1 : H5Tget_class(ftype) == H5T_STRING ? H5Tcopy(ftype) : H5Tget_native_type(ftype, H5T_DIR_ASCEND);
+    hid_t space = attr >= 0 ? H5Aget_space(attr) : -1;
+    const hssize_t n = space >= 0 ? H5Sget_simple_extent_npoints(space) : -1;
+    bool  ok    = mtype >= 0 && n >= 0 && !(H5Tget_class(ftype) == H5T_STRING && H5Tis_variable_str(ftype));
+    if (ok) {
+      buf.assign((size_t)n * H5Tget_size(mtype) + 1, '\0');
+      ok = H5Aread(attr, mtype, buf.data()) >= 0;
+      if (ok) Hash(sum, buf.data(), buf.size() - 1);
+    }
+    if (space >= 0) H5Sclose(space);
+    if (mtype >= 0) H5Tclose(mtype);
+    if (ftype >= 0) H5Tclose(ftype);
+    if (attr >= 0) H5Aclose(attr);
+    if (!ok) {
+      *why = "attribute " + name + " cannot be read (corrupted)";
+      return false;
+    }
+  }
+  return true;
+}
+
+// FNV-1a over the root attributes (HashAttributes), then every dataset (in name order): its name,
+// then its values in the native layout.
 bool Checksum(hid_t file, std::uint64_t *sum, std::string *why) {
   std::vector<std::string> names;
   if (H5Lvisit(file, H5_INDEX_NAME, H5_ITER_INC, CollectDataset, &names) < 0) {
@@ -69,6 +111,7 @@ bool Checksum(hid_t file, std::uint64_t *sum, std::string *why) {
   }
   std::sort(names.begin(), names.end());
   *sum = kFnvOffset;
+  if (!HashAttributes(file, sum, why)) return false;
   std::vector<char> buf;
   for (const std::string &name : names) {
     Hash(sum, name.c_str(), name.size() + 1);

@@ -195,6 +195,11 @@ def case_badinput(exe):
     shutil.copy(f20, version)
     with h5py.File(version, "r+") as f:
         f.attrs["vofdem_checkpoint_format"] = np.int32(99)
+    clock = os.path.join(bad, "clock.h5")  # the header is under the checksum too
+    shutil.copy(f20, clock)
+    with h5py.File(clock, "r+") as f:
+        f.attrs["simulation_dt"] = f.attrs["simulation_dt"] * 1.5
+    expect_error(exe, (E % "clock\\.h5") + "checksum mismatch", ["-restart", clock, "-max_steps", "30"])
     expect_error(exe, (E % "version\\.h5") + "format version 99, this vofdem reads version 1", ["-restart", version, "-max_steps", "30"])
     expect_error(exe, (E % "checkpoint_00000020\\.h5") + "another scene: '-dem_radius 5e-4' in the checkpoint, '-dem_radius 4e-4' in this run",
                  ["-restart", f20, "-dem_radius", "4e-4", "-max_steps", "30"])

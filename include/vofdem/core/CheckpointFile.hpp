@@ -4,7 +4,8 @@
 // Root attributes: "vofdem_checkpoint_format" (kCheckpointFormat), "run_options" (the options that
 // define the run, RunDefiningOptions()), "physics", "ranks" (the rank count that wrote it), the
 // Simulation's clock ("simulation_*", Simulation::SaveState) and, added by SealCheckpoint once every
-// rank has closed the file, "checksum": a 64-bit FNV-1a hash of every dataset's name and values.
+// rank has closed the file, "checksum": a 64-bit FNV-1a hash of the other root attributes and of
+// every dataset's name and values.
 // A file without a checksum (never sealed) or whose data no longer hash to it (truncated,
 // corrupted) fails ReadCheckpointHeader.
 #pragma once
