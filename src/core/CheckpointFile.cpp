@@ -65,78 +65,52 @@ herr_t CollectAttribute(hid_t, const char *name, const H5A_info_t *, void *names
   return 0;
 }
 
-// The root attributes but "checksum" (format, options, the clock), in name order: name, then value.
-bool HashAttributes(hid_t file, std::uint64_t *sum, std::string *why) {
-  std::vector<std::string> names;
+// Hashes the name and the whole value of the attribute (attribute) or dataset `name` of `file`:
+// strings as stored, numbers in the native layout. False when it cannot be read.
+bool HashObject(hid_t file, const std::string &name, bool attribute, std::uint64_t *sum) {
+  Hash(sum, name.c_str(), name.size() + 1);
+  const hid_t id    = attribute ? H5Aopen(file, name.c_str(), H5P_DEFAULT) : H5Dopen2(file, name.c_str(), H5P_DEFAULT);
+  const hid_t ftype = id < 0 ? -1 : attribute ? H5Aget_type(id) : H5Dget_type(id);
+  const hid_t space = id < 0 ? -1 : attribute ? H5Aget_space(id) : H5Dget_space(id);
+  const bool  str   = ftype >= 0 && H5Tget_class(ftype) == H5T_STRING;
+  const hid_t mtype = ftype < 0 || (str && H5Tis_variable_str(ftype)) ? -1 : str ? H5Tcopy(ftype) : H5Tget_native_type(ftype, H5T_DIR_ASCEND);
+  const hssize_t n  = space >= 0 ? H5Sget_simple_extent_npoints(space) : -1;
+  bool           ok = mtype >= 0 && n >= 0;
+  if (ok) {
+    std::vector<char> buf((size_t)n * H5Tget_size(mtype) + 1, '\0');
+    if (n > 0) ok = (attribute ? H5Aread(id, mtype, buf.data()) : H5Dread(id, mtype, H5S_ALL, H5S_ALL, H5P_DEFAULT, buf.data())) >= 0;
+    if (ok) Hash(sum, buf.data(), buf.size() - 1);
+  }
+  if (space >= 0) H5Sclose(space);
+  if (mtype >= 0) H5Tclose(mtype);
+  if (ftype >= 0) H5Tclose(ftype);
+  if (id >= 0) attribute ? H5Aclose(id) : H5Dclose(id);
+  return ok;
+}
+
+// FNV-1a over the root attributes but "checksum" (format, options, the clock), then every dataset,
+// each in name order (HashObject).
+bool Checksum(hid_t file, std::uint64_t *sum, std::string *why) {
+  std::vector<std::string> attributes, datasets;
   hsize_t                  at = 0;
-  if (H5Aiterate2(file, H5_INDEX_NAME, H5_ITER_INC, &at, CollectAttribute, &names) < 0) {
-    *why = "its header cannot be read (corrupted)";
+  if (H5Aiterate2(file, H5_INDEX_NAME, H5_ITER_INC, &at, CollectAttribute, &attributes) < 0 ||
+      H5Lvisit(file, H5_INDEX_NAME, H5_ITER_INC, CollectDataset, &datasets) < 0) {
+    *why = "its structure cannot be read (corrupted)";
     return false;
   }
-  std::sort(names.begin(), names.end());
-  std::vector<char> buf;
-  for (const std::string &name : names) {
-    Hash(sum, name.c_str(), name.size() + 1);
-    hid_t attr  = H5Aopen(file, name.c_str(), H5P_DEFAULT);
-    hid_t ftype = attr >= 0 ? H5Aget_type(attr) : -1;
-    // Strings as stored; numbers in the native layout.
-    hid_t mtype = ftype < 0 ? -1 : H5Tget_class(ftype) == H5T_STRING ? H5Tcopy(ftype) : H5Tget_native_type(ftype, H5T_DIR_ASCEND);
-    hid_t space = attr >= 0 ? H5Aget_space(attr) : -1;
-    const hssize_t n = space >= 0 ? H5Sget_simple_extent_npoints(space) : -1;
-    bool  ok    = mtype >= 0 && n >= 0 && !(H5Tget_class(ftype) == H5T_STRING && H5Tis_variable_str(ftype));
-    if (ok) {
-      buf.assign((size_t)n * H5Tget_size(mtype) + 1, '\0');
-      ok = H5Aread(attr, mtype, buf.data()) >= 0;
-      if (ok) Hash(sum, buf.data(), buf.size() - 1);
-    }
-    if (space >= 0) H5Sclose(space);
-    if (mtype >= 0) H5Tclose(mtype);
-    if (ftype >= 0) H5Tclose(ftype);
-    if (attr >= 0) H5Aclose(attr);
-    if (!ok) {
+  std::sort(attributes.begin(), attributes.end());
+  std::sort(datasets.begin(), datasets.end());
+  *sum = kFnvOffset;
+  for (const std::string &name : attributes)
+    if (!HashObject(file, name, true, sum)) {
       *why = "attribute " + name + " cannot be read (corrupted)";
       return false;
     }
-  }
-  return true;
-}
-
-// FNV-1a over the root attributes (HashAttributes), then every dataset (in name order): its name,
-// then its values in the native layout.
-bool Checksum(hid_t file, std::uint64_t *sum, std::string *why) {
-  std::vector<std::string> names;
-  if (H5Lvisit(file, H5_INDEX_NAME, H5_ITER_INC, CollectDataset, &names) < 0) {
-    *why = "its group structure cannot be read (corrupted)";
-    return false;
-  }
-  std::sort(names.begin(), names.end());
-  *sum = kFnvOffset;
-  if (!HashAttributes(file, sum, why)) return false;
-  std::vector<char> buf;
-  for (const std::string &name : names) {
-    Hash(sum, name.c_str(), name.size() + 1);
-    bool  ok    = false;
-    hid_t dset  = H5Dopen2(file, name.c_str(), H5P_DEFAULT);
-    hid_t ftype = dset >= 0 ? H5Dget_type(dset) : -1;
-    hid_t mtype = ftype >= 0 ? H5Tget_native_type(ftype, H5T_DIR_ASCEND) : -1;
-    hid_t space = dset >= 0 ? H5Dget_space(dset) : -1;
-    if (mtype >= 0 && space >= 0) {
-      const hssize_t n = H5Sget_simple_extent_npoints(space);
-      if (n >= 0) {
-        buf.resize((size_t)n * H5Tget_size(mtype) + 1);
-        ok = n == 0 || H5Dread(dset, mtype, H5S_ALL, H5S_ALL, H5P_DEFAULT, buf.data()) >= 0;
-        if (ok) Hash(sum, buf.data(), buf.size() - 1);
-      }
-    }
-    if (space >= 0) H5Sclose(space);
-    if (mtype >= 0) H5Tclose(mtype);
-    if (ftype >= 0) H5Tclose(ftype);
-    if (dset >= 0) H5Dclose(dset);
-    if (!ok) {
+  for (const std::string &name : datasets)
+    if (!HashObject(file, name, false, sum)) {
       *why = "dataset " + name + " cannot be read (truncated or corrupted)";
       return false;
     }
-  }
   return true;
 }
 
