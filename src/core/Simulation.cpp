@@ -96,6 +96,7 @@ PetscErrorCode Simulation::SetUp() {
     if (!allOk) VofdemInputError(comm_, "option -output_dir: cannot create '%s' or write monitor.csv in it", outputDir_.c_str());
   }
   if (physics_.dem) PetscCall(dem_->SetOutputDir(outputDir_));
+  if (physics_.flow) PetscCall(flow_->SetOutputDir(outputDir_));
   PetscFunctionReturn(0);
 }
 
@@ -155,6 +156,7 @@ PetscErrorCode Simulation::Step() {
   time_ += dt;
   ++step_;
   if (physics_.dem) PetscCall(dem_->WriteOutput(time_));
+  if (physics_.flow) PetscCall(flow_->WriteOutput(step_, time_));
   PetscFunctionReturn(0);
 }
 
@@ -162,6 +164,7 @@ PetscErrorCode Simulation::Run() {
   PetscFunctionBeginUser;
   PetscCall(PetscTime(&wallStart_));
   if (physics_.dem) PetscCall(dem_->WriteOutput(time_));
+  if (physics_.flow) PetscCall(flow_->WriteOutput(step_, time_));
   PetscCall(Monitor());
   while (step_ < maxSteps_ && time_ < finalTime_ * (1 - 1e-12)) {
     if (physics_.flow && dtUser_ == 0) PetscCall(ChooseTimeStep());  // the flow's limit moves with the flow

@@ -42,6 +42,8 @@ PetscErrorCode Flow::SetFromOptions(const Grid &grid) {
     if (visc.size() != 1) VofdemInputError(comm, "option -flow_viscous: give implicit or explicit");
     implicitViscosity_ = visc[0] == "implicit" ? PETSC_TRUE : PETSC_FALSE;
     PetscCall(opt.String("-profile_output", "CSV file for the velocity along the three lines through the box centre at the end of the run (default: none)", &profilePath_));
+    PetscCall(opt.Int("-output_every", "Write the grid fields (XDMF + HDF5, flow.xmf in -output_dir: cell-centred velocity, pressure, density) every this many steps (0: never)",
+                      &outputEvery_, 0));
   }
   PetscOptionsEnd();
   PetscCall(bc_.SetFromOptions(grid));
@@ -401,6 +403,8 @@ PetscErrorCode Flow::Destroy() {
   for (int d = 0; d < 3; ++d)
     for (Vec *v : {&u_[d], &uLocal_[d], &H_[d], &Hold_[d], &L_[d], &rhsFace_[d]}) PetscCall(VecDestroy(v));
   for (Vec *v : {&rho_, &mu_, &eps_, &p_, &phi_, &beta_, &divRhs_, &epsLocal_, &betaLocal_, &emLocal_, &pLocal_, &phiLocal_}) PetscCall(VecDestroy(v));
+  PetscCall(VecDestroy(&cellVelocity_));
+  PetscCall(DMDestroy(&velocityDM_));
   PetscCall(pressure_.Destroy());
   PetscCall(solid_.Destroy());
   if (implicitViscosity_) PetscCall(viscous_.Destroy());
