@@ -13,8 +13,13 @@ def expected(path):
         if grid.get("GridType") != "Uniform":
             continue
         topo = grid.find("Topology")
-        elements = int(topo.get("NumberOfElements"))
-        points = int(grid.find("Geometry/DataItem").get("Dimensions").split()[0])
+        if topo.get("TopologyType") == "3DCoRectMesh":  # a uniform grid: nodes z y x
+            nodes = [int(d) for d in topo.get("Dimensions").split()]
+            points = nodes[0] * nodes[1] * nodes[2]
+            elements = (nodes[0] - 1) * (nodes[1] - 1) * (nodes[2] - 1)
+        else:
+            elements = int(topo.get("NumberOfElements"))
+            points = int(grid.find("Geometry/DataItem").get("Dimensions").split()[0])
         names = [a.get("Name") for a in grid.findall("Attribute")]
         levels.append((float(grid.find("Time").get("Value")), points, elements, names))
     return levels

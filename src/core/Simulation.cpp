@@ -102,6 +102,7 @@ PetscErrorCode Simulation::SetUp() {
     if (!allOk) VofdemInputError(comm_, "option -output_dir: cannot create '%s' or write monitor.csv in it", outputDir_.c_str());
   }
   if (physics_.dem) PetscCall(dem_->SetOutputDir(outputDir_));
+  if (physics_.flow) PetscCall(flow_->SetOutputDir(outputDir_));
   PetscFunctionReturn(0);
 }
 
@@ -161,6 +162,7 @@ PetscErrorCode Simulation::Step() {
   time_ += dt;
   ++step_;
   if (physics_.dem) PetscCall(dem_->WriteOutput(time_));
+  if (physics_.flow) PetscCall(flow_->WriteOutput(step_, time_));
   PetscFunctionReturn(0);
 }
 
@@ -169,6 +171,7 @@ PetscErrorCode Simulation::Run() {
   PetscCall(PetscTime(&wallStart_));
   if (!checkpoint_.Restarting()) {  // a restart's first state was output by the run it continues
     if (physics_.dem) PetscCall(dem_->WriteOutput(time_));
+    if (physics_.flow) PetscCall(flow_->WriteOutput(step_, time_));
     PetscCall(Monitor());
   }
   while (step_ < maxSteps_ && time_ < finalTime_ * (1 - 1e-12)) {

@@ -42,6 +42,8 @@ PetscErrorCode Flow::SetFromOptions(const Grid &grid) {
     if (visc.size() != 1) VofdemInputError(comm, "option -flow_viscous: give implicit or explicit");
     implicitViscosity_ = visc[0] == "implicit" ? PETSC_TRUE : PETSC_FALSE;
     PetscCall(opt.String("-profile_output", "CSV file for the velocity along the three lines through the box centre at the end of the run (default: none)", &profilePath_));
+    PetscCall(opt.Int("-output_every", "Write the grid fields (XDMF + HDF5, flow.xmf in -output_dir: cell-centred velocity, pressure, density) every this many steps (0: never)",
+                      &outputEvery_, 0));
   }
   PetscOptionsEnd();
   PetscCall(bc_.SetFromOptions(grid));
@@ -338,7 +340,8 @@ PetscErrorCode Flow::View(PetscViewer viewer) const {
 
 // Everything the next step's arithmetic depends on: velocity, pressure, the last increment (the
 // pressure solve's initial guess), the explicit terms of the previous step (AB2), its dt, the
-// material fields, and the pressure preconditioner's reference coefficient.
+// material fields, and the pressure preconditioner's reference coefficient and reuse decision; also
+// the ParaView index written so far (-flow_output_every), so that a restart continues it.
 PetscErrorCode Flow::Save(PetscViewer viewer) const {
   Vec scalars;
 
@@ -348,16 +351,33 @@ PetscErrorCode Flow::Save(PetscViewer viewer) const {
   for (Vec v : {p_, phi_, rho_, mu_, eps_}) PetscCall(VecView(v, viewer));
   PetscMPIInt rank;
   PetscCallMPI(MPI_Comm_rank(grid_->Comm(), &rank));
-  PetscCall(VecCreateMPI(grid_->Comm(), rank == 0 ? 2 : 0, 2, &scalars));
+  PetscCall(VecCreateMPI(grid_->Comm(), rank == 0 ? 3 : 0, 3, &scalars));
   PetscCall(PetscObjectSetName((PetscObject)scalars, "flow_scheme_state"));
   if (rank == 0) {
     PetscCall(VecSetValue(scalars, 0, dtOld_, INSERT_VALUES));
     PetscCall(VecSetValue(scalars, 1, haveOld_ ? 1.0 : 0.0, INSERT_VALUES));
+    PetscCall(VecSetValue(scalars, 2, pressure_.PreconditionerReused() ? 1.0 : 0.0, INSERT_VALUES));
   }
   PetscCall(VecAssemblyBegin(scalars));
   PetscCall(VecAssemblyEnd(scalars));
   PetscCall(VecView(scalars, viewer));
   PetscCall(VecDestroy(&scalars));
+  {  // the ParaView index so far (-flow_output_every): count, then step and time of each entry
+    const PetscInt m = (PetscInt)outputEntries_.size();
+    PetscCall(VecCreateMPI(grid_->Comm(), rank == 0 ? 1 + 2 * m : 0, 1 + 2 * m, &scalars));
+    PetscCall(PetscObjectSetName((PetscObject)scalars, "flow_output_entries"));
+    if (rank == 0) {
+      PetscCall(VecSetValue(scalars, 0, (PetscScalar)m, INSERT_VALUES));
+      for (PetscInt k = 0; k < m; ++k) {
+        PetscCall(VecSetValue(scalars, 1 + 2 * k, (PetscScalar)outputEntries_[k].step, INSERT_VALUES));
+        PetscCall(VecSetValue(scalars, 2 + 2 * k, outputEntries_[k].time, INSERT_VALUES));
+      }
+    }
+    PetscCall(VecAssemblyBegin(scalars));
+    PetscCall(VecAssemblyEnd(scalars));
+    PetscCall(VecView(scalars, viewer));
+    PetscCall(VecDestroy(&scalars));
+  }
   PetscCall(pressure_.Save(viewer));
   PetscFunctionReturn(0);
 }
@@ -371,21 +391,40 @@ PetscErrorCode Flow::Load(PetscViewer viewer) {
   for (Vec v : {p_, phi_, rho_, mu_, eps_}) PetscCall(VecLoad(v, viewer));
   PetscMPIInt rank;
   PetscCallMPI(MPI_Comm_rank(grid_->Comm(), &rank));
-  PetscCall(VecCreateMPI(grid_->Comm(), rank == 0 ? 2 : 0, 2, &scalars));
+  PetscCall(VecCreateMPI(grid_->Comm(), rank == 0 ? 3 : 0, 3, &scalars));
   PetscCall(PetscObjectSetName((PetscObject)scalars, "flow_scheme_state"));
   PetscCall(VecLoad(scalars, viewer));
-  PetscReal s[2] = {0, 0};
+  PetscReal s[3] = {0, 0, 0};
   if (rank == 0) {
     const PetscScalar *a;
     PetscCall(VecGetArrayRead(scalars, &a));
-    s[0] = PetscRealPart(a[0]);
-    s[1] = PetscRealPart(a[1]);
+    for (int k = 0; k < 3; ++k) s[k] = PetscRealPart(a[k]);
     PetscCall(VecRestoreArrayRead(scalars, &a));
   }
-  PetscCallMPI(MPI_Bcast(s, 2, MPIU_REAL, 0, grid_->Comm()));
+  PetscCallMPI(MPI_Bcast(s, 3, MPIU_REAL, 0, grid_->Comm()));
   PetscCall(VecDestroy(&scalars));
   dtOld_   = s[0];
   haveOld_ = s[1] > 0 ? PETSC_TRUE : PETSC_FALSE;
+  {  // the ParaView index so far, on every rank (its length comes from the file)
+    Vec        all;
+    VecScatter toAll;
+    PetscCall(VecCreate(grid_->Comm(), &scalars));
+    PetscCall(VecSetType(scalars, VECMPI));
+    PetscCall(PetscObjectSetName((PetscObject)scalars, "flow_output_entries"));
+    PetscCall(VecLoad(scalars, viewer));
+    PetscCall(VecScatterCreateToAll(scalars, &toAll, &all));
+    PetscCall(VecScatterBegin(toAll, scalars, all, INSERT_VALUES, SCATTER_FORWARD));
+    PetscCall(VecScatterEnd(toAll, scalars, all, INSERT_VALUES, SCATTER_FORWARD));
+    const PetscScalar *a;
+    PetscCall(VecGetArrayRead(all, &a));
+    outputEntries_.clear();
+    for (PetscInt k = 0; k < (PetscInt)PetscRealPart(a[0]); ++k)
+      outputEntries_.push_back(OutputEntry((PetscInt)PetscRealPart(a[1 + 2 * k]), PetscRealPart(a[2 + 2 * k])));
+    PetscCall(VecRestoreArrayRead(all, &a));
+    PetscCall(VecScatterDestroy(&toAll));
+    PetscCall(VecDestroy(&all));
+    PetscCall(VecDestroy(&scalars));
+  }
   pressureReady_ = true;
   // The fields above are the material the preconditioner reference is compared with: set them up
   // first (this builds a preconditioner from the current coefficient), then restore the saved
@@ -393,6 +432,7 @@ PetscErrorCode Flow::Load(PetscViewer viewer) {
   PetscCall(UpdateLocals(true));
   PetscCall(pressure_.Load(viewer));
   PetscCall(pressure_.SetCoefficient(beta_, "flow: eps/rho"));
+  PetscCall(pressure_.RestoreReuseFlag(s[2] > 0 ? PETSC_TRUE : PETSC_FALSE));
   PetscFunctionReturn(0);
 }
 
@@ -401,6 +441,8 @@ PetscErrorCode Flow::Destroy() {
   for (int d = 0; d < 3; ++d)
     for (Vec *v : {&u_[d], &uLocal_[d], &H_[d], &Hold_[d], &L_[d], &rhsFace_[d]}) PetscCall(VecDestroy(v));
   for (Vec *v : {&rho_, &mu_, &eps_, &p_, &phi_, &beta_, &divRhs_, &epsLocal_, &betaLocal_, &emLocal_, &pLocal_, &phiLocal_}) PetscCall(VecDestroy(v));
+  PetscCall(VecDestroy(&cellVelocity_));
+  PetscCall(DMDestroy(&velocityDM_));
   PetscCall(pressure_.Destroy());
   PetscCall(solid_.Destroy());
   if (implicitViscosity_) PetscCall(viscous_.Destroy());

@@ -144,8 +144,7 @@ PetscErrorCode Flow::SolidWallTerms() {
   PetscFunctionBeginUser;
   const PetscReal *h = grid_->Spacing();
   PetscCall(sg_.GetLocal(3, emLocal_, &em));
-  for (int d = 0; d < 3; ++d) {
-    if (solid_.Walls(d).empty()) continue;
+  for (int d = 0; d < 3; ++d) {  // on every rank, with or without wall faces (see Flow::ZeroBlocked)
     PetscCall(sg_.GetGlobal(d, u_[d], &u));
     PetscCall(sg_.GetGlobal(d, L_[d], &L));
     for (const SolidMask::WallFace &w : solid_.Walls(d)) {

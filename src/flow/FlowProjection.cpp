@@ -134,7 +134,10 @@ PetscErrorCode Flow::ZeroBlocked(int d, Vec v) const {
   PetscScalar *a;
 
   PetscFunctionBeginUser;
-  if (solid_.Blocked(d).empty()) PetscFunctionReturn(0);
+  // On every rank when there are solids anywhere, even with no blocked face here: VecRestoreArray
+  // changes the vector's state, and VecNorm communicates only where the state changed (its cached
+  // norm is used elsewhere), so a rank-dependent skip deadlocks the next norm.
+  if (!solid_.Any()) PetscFunctionReturn(0);
   PetscCall(VecGetArray(v, &a));
   for (PetscInt o : solid_.Blocked(d)) a[o] = 0;
   PetscCall(VecRestoreArray(v, &a));

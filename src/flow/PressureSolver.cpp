@@ -381,6 +381,13 @@ PetscErrorCode PressureSolver::Load(PetscViewer viewer) {
   PetscFunctionReturn(0);
 }
 
+PetscErrorCode PressureSolver::RestoreReuseFlag(PetscBool reused) {
+  PetscFunctionBeginUser;
+  reused_ = reused;
+  PetscCall(KSPSetReusePreconditioner(ksp_, reused_));
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode PressureSolver::Destroy() {
   PetscFunctionBeginUser;
   PetscCall(KSPDestroy(&ksp_));

@@ -23,6 +23,23 @@ std::string XdmfIndexText(const std::string &name, const std::vector<XdmfEntry> 
     const std::string n = std::to_string(e.nodes);
     std::snprintf(buf, sizeof buf, "   <Grid Name=\"%s %d\" GridType=\"Uniform\">\n    <Time Value=\"%.17g\"/>\n", name.c_str(), (int)e.step, (double)e.time);
     t += buf;
+    if (e.cells[0] >= 0) {  // XDMF orders structured dimensions z, y, x
+      const std::string cellDims = std::to_string(e.cells[2]) + " " + std::to_string(e.cells[1]) + " " + std::to_string(e.cells[0]);
+      std::snprintf(buf, sizeof buf, "    <Topology TopologyType=\"3DCoRectMesh\" Dimensions=\"%d %d %d\"/>\n", (int)e.cells[2] + 1, (int)e.cells[1] + 1, (int)e.cells[0] + 1);
+      t += buf;
+      std::snprintf(buf, sizeof buf,
+                    "    <Geometry GeometryType=\"ORIGIN_DXDYDZ\">\n     <DataItem Dimensions=\"3\" NumberType=\"Float\" Precision=\"8\" Format=\"XML\">%.17g %.17g %.17g</DataItem>\n",
+                    (double)e.origin[2], (double)e.origin[1], (double)e.origin[0]);
+      t += buf;
+      std::snprintf(buf, sizeof buf, "     <DataItem Dimensions=\"3\" NumberType=\"Float\" Precision=\"8\" Format=\"XML\">%.17g %.17g %.17g</DataItem>\n    </Geometry>\n",
+                    (double)e.spacing[2], (double)e.spacing[1], (double)e.spacing[0]);
+      t += buf;
+      for (const XdmfAttribute &a : e.attributes)
+        t += "    <Attribute Name=\"" + a.name + "\" AttributeType=\"" + (a.components == 3 ? "Vector" : "Scalar") + "\" Center=\"Cell\">\n     " +
+             DataItem(a.components == 1 ? cellDims : cellDims + " " + std::to_string(a.components), e.file, a.dataset) + "\n    </Attribute>\n";
+      t += "   </Grid>\n";
+      continue;
+    }
     if (e.segments >= 0) {
       const std::string s = std::to_string(e.segments);
       t += "    <Topology TopologyType=\"Polyline\" NumberOfElements=\"" + s + "\" NodesPerElement=\"2\">\n     " +

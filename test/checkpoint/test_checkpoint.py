@@ -78,11 +78,19 @@ def case_bitwise(exe, scene, ranks):
     n = SCENES[scene][1]
     tmp = tempfile.mkdtemp(prefix="vofdem-ckpt-")
     a, b, c = (os.path.join(tmp, x) for x in "abc")
-    run(exe, ranks, scene, ["-max_steps", str(2 * n), "-checkpoint_dir", a])
-    run(exe, ranks, scene, ["-max_steps", str(n), "-checkpoint_dir", b])
-    p = run(exe, ranks, scene, ["-max_steps", str(2 * n), "-checkpoint_dir", b, "-restart", "latest"])
+    index, every = {"dem": ("particles.xmf", "-dem_output_every"), "flow": ("flow.xmf", "-flow_output_every")}[scene]
+    out = [every, str(n // 4)]  # the ParaView series, whose index a restart must continue
+    run(exe, ranks, scene, ["-max_steps", str(2 * n), "-checkpoint_dir", a, "-output_dir", a + "-out"] + out)
+    run(exe, ranks, scene, ["-max_steps", str(n), "-checkpoint_dir", b, "-output_dir", b + "-out"] + out)
+    p = run(exe, ranks, scene, ["-max_steps", str(2 * n), "-checkpoint_dir", b, "-restart", "latest", "-output_dir", b + "-out"] + out)
     check(re.search(r"^vofdem: restarted from .*checkpoint_%08d\.h5 at step %d," % (n, n), p.stdout, re.M), "restart message names the step-%d file" % n)
-    run(exe, ranks, scene, ["-max_steps", str(2 * n), "-checkpoint_dir", c, "-checkpoint_every", "5", "-checkpoint_keep", "3"])
+    ia, ib = (open(os.path.join(x + "-out", index)).read() for x in (a, b))
+    check(ia == ib and ia.count("<Grid Name=") >= 9, "%s after the restart equals the uninterrupted run's (%d entries)" % (index, ia.count("<Grid Name=") - 1))
+    # monitor.csv without its wall-time column, and without the row of step N (the last line of the
+    # first part, not a line of the uninterrupted run): the restart appends, continuing the table.
+    mon = [[l.split(",")[:13] + l.split(",")[14:] for l in open(os.path.join(x + "-out", "monitor.csv")) if l.split(",")[0] != str(n)] for x in (a, b)]
+    check(mon[0] == mon[1] and len(mon[0]) > 2, "monitor.csv of the restarted run (appended) equals the uninterrupted run's but for wall time (%d rows)" % len(mon[0]))
+    run(exe, ranks, scene, ["-max_steps", str(2 * n), "-checkpoint_dir", c, "-checkpoint_every", "5", "-checkpoint_keep", "3", "-output_dir", c + "-out"] + out)
     d = bitwise_diff(ckpt(a, 2 * n), ckpt(b, 2 * n))
     check(not d, "%s on %d rank(s): %d steps = %d steps + restart + %d steps, bitwise (differing: %s)" % (scene, ranks, 2 * n, n, n, d))
     d = bitwise_diff(ckpt(a, 2 * n), ckpt(c, 2 * n))
@@ -91,7 +99,8 @@ def case_bitwise(exe, scene, ranks):
     want = ["checkpoint_%08d.h5" % s for s in (2 * n - 10, 2 * n - 5, 2 * n)]
     check(kept == want, "-checkpoint_keep 3 keeps %s, no temporary files (found %s)" % (want, kept))
     w = os.path.join(tmp, "w")  # by wall time, every 0.6 ms: the 2N steps take longer (DEM ~10 ms)
-    run(exe, ranks, scene, ["-max_steps", str(2 * n), "-checkpoint_dir", w, "-checkpoint_minutes", "0.00001", "-checkpoint_keep", "1000"])
+    run(exe, ranks, scene, ["-max_steps", str(2 * n), "-checkpoint_dir", w, "-checkpoint_minutes", "0.00001", "-checkpoint_keep", "1000",
+                            "-output_dir", w + "-out"] + out)
     d = bitwise_diff(ckpt(a, 2 * n), ckpt(w, 2 * n))
     check(len(os.listdir(w)) >= 2 and not d, "-checkpoint_minutes 0.00001: %d checkpoints, final state bitwise unchanged (differing: %s)" % (len(os.listdir(w)), d))
     check(bitwise_diff(ckpt(b, n), ckpt(b, 2 * n)) != [], "control: the comparison sees step %d differ from step %d" % (n, 2 * n))

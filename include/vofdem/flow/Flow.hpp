@@ -19,8 +19,10 @@
 #include "vofdem/flow/SolidMask.hpp"
 #include "vofdem/flow/StaggeredGrid.hpp"
 #include "vofdem/flow/ViscousSolver.hpp"
+#include "vofdem/io/Xdmf.hpp"
 
 #include <string>
+#include <vector>
 
 namespace vofdem {
 
@@ -74,6 +76,9 @@ public:
   const std::string   &ProfilePath() const { return profilePath_; }
   // Velocity along the three lines through the box centre, as CSV (line,s,x,y,z,u,v,w) on rank 0.
   PetscErrorCode WriteProfile(const std::string &path) const;
+  // ParaView output (-flow_output_every, FlowOutput.cpp): the folder (-output_dir), then at each step.
+  PetscErrorCode SetOutputDir(const std::string &dir);
+  PetscErrorCode WriteOutput(PetscInt step, PetscReal time);  // collective; writes when step is a multiple
   // Component d interpolated to point x (collective; every rank gets the value).
   PetscErrorCode SampleVelocity(const PetscReal x[3], PetscReal u[3]) const;
 
@@ -100,6 +105,12 @@ private:
   PetscBool   implicitViscosity_ = PETSC_TRUE;
   PetscBool   userPressureAtol_ = PETSC_FALSE;  // else Project sets a scale-aware absolute tolerance
   std::string profilePath_;
+  PetscInt    outputEvery_ = 0;  // -flow_output_every
+  std::string outputDir_;
+  std::vector<XdmfEntry> outputEntries_;
+  XdmfEntry OutputEntry(PetscInt step, PetscReal time) const;  // the index entry of flow_<step>.h5 (FlowOutput.cpp)
+  DM          velocityDM_ = nullptr;  // cell layout with 3 components, for the output
+  Vec         cellVelocity_ = nullptr;
   PetscReal   gravity_[3] = {0, 0, 0};
 
   // fields

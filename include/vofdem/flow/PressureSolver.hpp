@@ -67,6 +67,9 @@ public:
   PetscInt  Iterations() const { return iterations_; }
   PetscReal ResidualNorm() const { return residual_; }
   PetscBool PreconditionerReused() const { return reused_; }
+  // Flow::Load: the saved run's reuse decision, so that the monitor reports it (and the KSP's reuse
+  // setting matches) until the next SetCoefficient decides anew.
+  PetscErrorCode RestoreReuseFlag(PetscBool reused);
   PetscInt  PreconditionerBuilds() const { return builds_; }
   bool      HasNullSpace() const { return nullSpace_ != nullptr; }
   PressureBoundary BoundaryType(int face) const { return bc_[face]; }

@@ -16,7 +16,9 @@ struct XdmfAttribute {
   bool        cell       = false;  // Center="Cell" (per element) instead of "Node"
 };
 
-// One time level: points (Polyvertex) or segments (Polyline of 2 nodes with a connectivity dataset).
+// One time level: points (Polyvertex), segments (Polyline of 2 nodes with a connectivity dataset),
+// or a uniform grid of cells (3DCoRectMesh, `cells` >= 0, with cell-centred attributes whose HDF5
+// datasets are shaped z, y, x[, components], as a DMDA vector is written).
 struct XdmfEntry {
   PetscReal   time = 0;
   PetscInt    step = 0;
@@ -24,6 +26,8 @@ struct XdmfEntry {
   PetscInt    nodes = 0;         // number of points
   PetscInt    segments = -1;     // >= 0: Polyline with this many 2-node elements
   std::string geometry = "/position", connectivity = "/connectivity";
+  PetscInt    cells[3] = {-1, -1, -1};                   // x, y, z cell counts of a uniform grid
+  PetscReal   origin[3] = {0, 0, 0}, spacing[3] = {0, 0, 0};  // its lower corner and cell size, x, y, z
   std::vector<XdmfAttribute> attributes;
 };
 
