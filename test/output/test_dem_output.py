@@ -18,25 +18,17 @@ import tempfile
 import h5py
 import numpy as np
 
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from outputtest import check, failures, run_vofdem  # noqa: E402
+
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 SCENE = ("-physics dem -grid_cells 4,4,4 -grid_upper 0.01,0.01,0.01 -dem_radius 5e-4 -dem_fill_count 200 -dem_fill_jitter 0.5 "
          "-dem_fill_velocity_spread 0.3 -max_steps 200 -monitor_every 50 -monitor_timing 0 -dem_output_every 100 -dem_contacts_every 50").split()
-failures = []
-
-
-def check(ok, what):
-    print("%s %s" % ("ok" if ok else "not ok", what))
-    if not ok:
-        failures.append(what)
 
 
 def run(exe, n, out):
-    env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1", OMP_NUM_THREADS="1")
     cut = ["-grid_ranks", "2,1,1"] if n == 2 else []  # the particles lie at the bottom: cut across x
-    p = subprocess.run(["mpiexec", "-n", str(n), exe] + SCENE + cut + ["-output_dir", out], env=env, capture_output=True, text=True, timeout=300)
-    check(p.returncode == 0, "vofdem on %d rank(s) exits 0" % n)
-    if p.returncode:
-        print(p.stdout, p.stderr)
+    run_vofdem(exe, n, SCENE + cut + ["-output_dir", out])
 
 
 def monitor(out):

@@ -20,26 +20,17 @@ import tempfile
 import h5py
 import numpy as np
 
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from outputtest import check, failures, run_vofdem  # noqa: E402
+
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 SCENE = ["-options_file_yaml", os.path.join(ROOT, "config", "scenes", "cavity-re100.yaml"), "-grid_cells", "32,32,4",
          "-grid_upper", "1,1,0.125", "-max_steps", "20", "-monitor_every", "10", "-monitor_timing", "0", "-flow_output_every", "10",
          "-flow_solid_boxes", "0.35,0.15,-1,0.65,0.45,1", "-flow_pressure_ksp_rtol", "1e-12", "-flow_viscous_ksp_rtol", "1e-12"]
-failures = []
-
-
-def check(ok, what):
-    print("%s %s" % ("ok" if ok else "not ok", what))
-    if not ok:
-        failures.append(what)
 
 
 def run(exe, n, out):
-    env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1", OMP_NUM_THREADS="1")
-    cmd = ["mpiexec", "--oversubscribe", "-n", str(n), exe] + SCENE + ["-output_dir", out, "-flow_profile_output", os.path.join(out, "profile.csv")]
-    p = subprocess.run(cmd, env=env, capture_output=True, text=True, timeout=300)
-    check(p.returncode == 0, "vofdem on %d rank(s) exits 0" % n)
-    if p.returncode:
-        print(p.stdout, p.stderr)
+    run_vofdem(exe, n, SCENE + ["-output_dir", out, "-flow_profile_output", os.path.join(out, "profile.csv")])
 
 
 def fields(out, step):

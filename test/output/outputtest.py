@@ -1,0 +1,22 @@
+"""What the output tests share: a list of failed checks that prints as it goes, and a vofdem run
+under mpiexec whose failure is a failed check (with its output shown)."""
+import os
+import subprocess
+
+ENV = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1", OMP_NUM_THREADS="1")
+failures = []
+
+
+def check(ok, what):
+    print("%s %s" % ("ok" if ok else "not ok", what))
+    if not ok:
+        failures.append(what)
+
+
+def run_vofdem(exe, n, args, timeout=300):
+    """Runs `mpiexec -n N --oversubscribe exe args`; a non-zero exit is a failed check."""
+    p = subprocess.run(["mpiexec", "--oversubscribe", "-n", str(n), exe] + args, env=ENV, capture_output=True, text=True, timeout=timeout)
+    check(p.returncode == 0, "vofdem on %d rank(s) exits 0" % n)
+    if p.returncode:
+        print(p.stdout, p.stderr)
+    return p
