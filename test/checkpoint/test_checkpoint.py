@@ -33,6 +33,7 @@ import numpy as np
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 sys.path.insert(0, os.path.join(ROOT, "scripts", "lib"))
 from checkpointtools import bitwise_diff, rank_pids, path as ckpt, read as datasets  # noqa: E402
+from testcheck import ENV, check, failures  # noqa: E402
 EXPECT = os.path.join(ROOT, "test", "badinput", "expect-error")
 SCENES = {
     # 200 spheres with random velocities under gravity in a 1 cm box: contacts, wall contacts, list
@@ -44,14 +45,6 @@ SCENES = {
              "-grid_cells 32,32,4 -grid_upper 1,1,0.125".split(), 20, 20),
 }  # (options, N of the bitwise case, N of the rank-count case)
 QUIET = "-monitor_every 1000000 -monitor_timing 0".split()
-ENV = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1", OMP_NUM_THREADS="1")
-failures = []
-
-
-def check(ok, what):
-    print("%s %s" % ("ok" if ok else "not ok", what))
-    if not ok:
-        failures.append(what)
 
 
 def mpi(ranks):

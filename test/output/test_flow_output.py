@@ -20,8 +20,8 @@ import tempfile
 import h5py
 import numpy as np
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from outputtest import check, failures, run_vofdem  # noqa: E402
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__)))), "scripts", "lib"))
+from testcheck import check, failures, run_vofdem  # noqa: E402
 
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 SCENE = ["-options_file_yaml", os.path.join(ROOT, "config", "scenes", "cavity-re100.yaml"), "-grid_cells", "32,32,4",

@@ -1,4 +1,4 @@
-"""What the output tests share: a list of failed checks that prints as it goes, and a vofdem run
+"""What the Python tests share (test/output, test/checkpoint): a list of failed checks that prints as it goes, and a vofdem run
 under mpiexec whose failure is a failed check (with its output shown)."""
 import os
 import subprocess
