@@ -1,5 +1,5 @@
 # Checkpoint/restart (issue 5; src/core/Checkpoint.cpp, CheckpointFile.cpp): bitwise continuation on
-# the same rank count, continuation on another rank count, SIGTERM, and bad input
+# the same rank count, continuation on another rank count, signals, a full disk, and bad input
 # (test/checkpoint/test_checkpoint.py says what each case checks).
 set(_ckpt ${VOFDEM_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/test/checkpoint/test_checkpoint.py $<TARGET_FILE:vofdem_app>)
 function(vofdem_checkpoint_test name ranks)
@@ -14,6 +14,9 @@ vofdem_checkpoint_test(ranks_dem_2to1 2 ranks dem 2 1)
 vofdem_checkpoint_test(ranks_dem_1to2 2 ranks dem 1 2)
 vofdem_checkpoint_test(ranks_flow_2to1 2 ranks flow 2 1)
 vofdem_checkpoint_test(ranks_flow_1to2 2 ranks flow 1 2)
-vofdem_checkpoint_test(signal_1 1 signal 1)
-vofdem_checkpoint_test(signal_2 2 signal 2)
+vofdem_checkpoint_test(signal_1 1 signal 1 SIGINT rank)
+vofdem_checkpoint_test(signal_2 2 signal 2 SIGTERM rank)
+vofdem_checkpoint_test(signal_usr1_2 2 signal 2 SIGUSR1 mpiexec)
+vofdem_checkpoint_test(diskfull_1 1 diskfull 1)
+vofdem_checkpoint_test(diskfull_2 2 diskfull 2)
 vofdem_checkpoint_test(bad_input 2 badinput)

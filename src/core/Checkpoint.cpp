@@ -11,8 +11,12 @@
 #include <algorithm>
 #include <cctype>
 #include <csignal>
+#include <cerrno>
 #include <cstdio>
+#include <cstring>
+#include <fcntl.h>
 #include <filesystem>
+#include <unistd.h>
 #include <system_error>
 #include <vector>
 
@@ -25,7 +29,12 @@ namespace {
 // The handler only records the signal; the ranks agree on it after the step (AfterStep).
 volatile std::sig_atomic_t g_signal = 0;
 void OnSignal(int sig) { g_signal = sig; }
-struct sigaction g_oldTerm, g_oldInt;
+// The signals that stop a run with a checkpoint. SIGTERM and SIGINT reach the ranks when sent to
+// them (a batch system's scancel, kill); Open MPI's mpiexec, when it gets them itself (Ctrl-C), kills
+// the ranks one second later (odls_base_sigkill_timeout) but forwards SIGUSR1 and SIGUSR2 untouched:
+// `kill -USR1 <mpiexec>` or Slurm's --signal=USR1@120 stop a run cleanly through mpiexec.
+const int        kStopSignals[] = {SIGTERM, SIGINT, SIGUSR1, SIGUSR2};
+struct sigaction g_oldHandlers[4];
 
 // Step number of a file name checkpoint_<8 digits>.h5, or -1.
 long long StepOf(const fs::path &p) {
@@ -57,6 +66,43 @@ std::vector<fs::path> Checkpoints(const std::string &dir) {
   return paths;
 }
 
+// While a checkpoint is written: the temporary file and what is kept. An error inside the HDF5
+// write (the disk filled up after the space check, or without it) may strike some ranks only, which
+// cannot return: the others would wait for them in the next collective call. Nor can a lone rank go
+// on: HDF5 keeps the file it could not close and crashes in MPI_Finalize. So the job ends here, with
+// one line and MPI_Abort (exit 1 on every rank); the temporary file is removed by the next run.
+std::string g_writing, g_kept;
+PetscErrorCode WriteErrorHandler(MPI_Comm, int, const char *, const char *, PetscErrorCode n, PetscErrorType p, const char *mess, void *) {
+  if (p != PETSC_ERROR_INITIAL) return n;
+  int rank = 0;
+  MPI_Comm_rank(MPI_COMM_WORLD, &rank);
+  std::fprintf(stderr, "vofdem: error: checkpoint: writing '%s' failed on rank %d (%s; disk full?); %s\n", g_writing.c_str(), rank, mess ? mess : "an HDF5 error",
+               g_kept.c_str());
+  std::fflush(stderr);
+  MPI_Abort(MPI_COMM_WORLD, 1);
+  return n;
+}
+
+// Rank 0, before a checkpoint of about `bytes` is written to `path`: the space is there (taken with
+// posix_fallocate, which sees a full disk, a quota and a file-size limit alike, then given back).
+bool ReserveSpace(const std::string &path, PetscInt64 bytes, std::string *why) {
+  const int fd = open(path.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+  if (fd < 0) {
+    *why = std::string("cannot create it: ") + std::strerror(errno);
+    return false;
+  }
+  const int err = posix_fallocate(fd, 0, (off_t)bytes);
+  const bool ok = err == 0 && ftruncate(fd, 0) == 0;
+  close(fd);
+  if (!ok) {
+    char mb[64];
+    std::snprintf(mb, sizeof mb, "%.1f MB", bytes / 1e6);
+    *why = std::string("no room for about ") + mb + " (" + std::strerror(err ? err : errno) + ")";
+    std::remove(path.c_str());
+  }
+  return ok;
+}
+
 // Rank 0's verdict (ok, and the reason when not) on every rank.
 PetscErrorCode Agree(MPI_Comm comm, bool *ok, std::string *why) {
   int len = (int)why->size(), flag = *ok;
@@ -86,6 +132,7 @@ PetscErrorCode Checkpoint::SetFromOptions(MPI_Comm comm, const std::string &outp
     PetscCall(opt.Int("-checkpoint_keep", "Number of newest checkpoints kept; older ones are removed", &keep_, 1));
     PetscCall(opt.String("-checkpoint_dir", "Folder of the checkpoints (default: <-output_dir>/checkpoints, or checkpoints)", &dir_, &dirSet));
     PetscCall(opt.Bool("-checkpoint_final", "Write a checkpoint at the end of the run", &final_));
+    PetscCall(opt.Bool("-checkpoint_space_check", "Before each checkpoint, make sure the disk has room for it (posix_fallocate of its estimated size)", &spaceCheck_));
     PetscCall(opt.String("-restart", "Continue the run from this checkpoint file, or from the newest valid one in -checkpoint_dir (latest)", &restart_));
   }
   PetscOptionsEnd();
@@ -111,13 +158,16 @@ PetscErrorCode Checkpoint::SetUp() {
   }
   PetscCall(Agree(comm_, &ok, &why));
   if (!ok) VofdemInputError(comm_, "option -checkpoint_dir: cannot create '%s' or write a file in it", dir_.c_str());
+  // A file-size limit (ulimit -f) then fails the write (reported) instead of killing the rank.
+  std::signal(SIGXFSZ, SIG_IGN);
   struct sigaction sa = {};
   sa.sa_handler       = OnSignal;
   sigemptyset(&sa.sa_mask);
-  sigaction(SIGTERM, &sa, &g_oldTerm);
-  sigaction(SIGINT, &sa, &g_oldInt);
+  for (int k = 0; k < 4; ++k) sigaction(kStopSignals[k], &sa, &g_oldHandlers[k]);
   handlers_ = true;
   g_signal  = 0;
+  PetscCall(PetscLogEventRegister("CheckpointWrite", PETSC_VIEWER_CLASSID, &evWrite_));
+  PetscCall(PetscLogEventRegister("CheckpointSeal", PETSC_VIEWER_CLASSID, &evSeal_));
   PetscCall(PetscTime(&lastWrite_));
   PetscFunctionReturn(0);
 }
@@ -216,36 +266,49 @@ PetscErrorCode Checkpoint::Write(Simulation &sim) {
   PetscCallMPI(MPI_Comm_size(comm_, &size));
   const PetscInt    step = sim.StepNumber();
   const std::string tmp = dir_ + "/" + Name(step, true), final = dir_ + "/" + Name(step, false);
-  bool              ok = true;
+  PetscInt64        bytes;
+  PetscCall(sim.StateBytes(&bytes));
+  bytes = std::max(bytes, lastBytes_) + std::max(bytes, lastBytes_) / 10;  // HDF5's own structures, growth since the last one
+  bool ok = true;
   if (rank == 0) {  // the folder may have gone or filled up since the start
     std::error_code ec;
     fs::create_directories(dir_, ec);
-    FILE *f = ec ? nullptr : std::fopen(tmp.c_str(), "w");
-    ok      = f != nullptr;
-    if (f) std::fclose(f);
+    ok = ec ? (why = "cannot create the folder: " + ec.message(), false) : spaceCheck_ ? ReserveSpace(tmp, bytes, &why) : true;
   }
   PetscCall(Agree(comm_, &ok, &why));
-  if (!ok) VofdemRunError(comm_, "checkpoint: cannot write '%s' (-checkpoint_dir)", tmp.c_str());
+  const std::string kept = lastStep_ < 0 ? "no checkpoint written yet" : Name(lastStep_, false) + " is kept";
+  if (!ok) VofdemRunError(comm_, "checkpoint: cannot write '%s' (-checkpoint_dir): %s; %s", tmp.c_str(), why.c_str(), kept.c_str());
   PetscCall(RunDefiningOptions(&options));
   const std::string physics = sim.Physics().Describe();
   const PetscInt    ranks   = size;
-  PetscCall(PetscViewerHDF5Open(comm_, tmp.c_str(), FILE_MODE_WRITE, &viewer));
-  PetscCall(PetscViewerHDF5WriteAttribute(viewer, "/", "vofdem_checkpoint_format", PETSC_INT, &format));
-  PetscCall(PetscViewerHDF5WriteAttribute(viewer, "/", "run_options", PETSC_STRING, options.c_str()));
-  PetscCall(PetscViewerHDF5WriteAttribute(viewer, "/", "physics", PETSC_STRING, physics.c_str()));
-  PetscCall(PetscViewerHDF5WriteAttribute(viewer, "/", "ranks", PETSC_INT, &ranks));
-  PetscCall(sim.SaveState(viewer));
-  PetscCall(PetscViewerDestroy(&viewer));  // every rank has closed the file after this
+  g_writing = tmp, g_kept = kept;
+  PetscCall(PetscLogEventBegin(evWrite_, 0, 0, 0, 0));
+  {
+    QuietHdf5 quiet;
+    PetscCall(PetscPushErrorHandler(WriteErrorHandler, nullptr));
+    PetscCall(PetscViewerHDF5Open(comm_, tmp.c_str(), FILE_MODE_WRITE, &viewer));
+    PetscCall(PetscViewerHDF5WriteAttribute(viewer, "/", "vofdem_checkpoint_format", PETSC_INT, &format));
+    PetscCall(PetscViewerHDF5WriteAttribute(viewer, "/", "run_options", PETSC_STRING, options.c_str()));
+    PetscCall(PetscViewerHDF5WriteAttribute(viewer, "/", "physics", PETSC_STRING, physics.c_str()));
+    PetscCall(PetscViewerHDF5WriteAttribute(viewer, "/", "ranks", PETSC_INT, &ranks));
+    PetscCall(sim.SaveState(viewer));
+    PetscCall(PetscViewerDestroy(&viewer));  // every rank has closed the file after this
+    PetscCall(PetscPopErrorHandler());
+  }
   PetscCallMPI(MPI_Barrier(comm_));
+  PetscCall(PetscLogEventEnd(evWrite_, 0, 0, 0, 0));
+  PetscCall(PetscLogEventBegin(evSeal_, 0, 0, 0, 0));
   if (rank == 0) {
     ok = SealCheckpoint(tmp, &why);
     std::error_code ec;
+    if (ok) lastBytes_ = (PetscInt64)fs::file_size(tmp, ec);
     if (ok) fs::rename(tmp, final, ec);
     if (ok && ec) ok = false, why = "cannot rename it: " + ec.message();
     if (!ok) std::remove(tmp.c_str());
   }
   PetscCall(Agree(comm_, &ok, &why));
-  if (!ok) VofdemRunError(comm_, "checkpoint: '%s': %s", tmp.c_str(), why.c_str());
+  PetscCall(PetscLogEventEnd(evSeal_, 0, 0, 0, 0));
+  if (!ok) VofdemRunError(comm_, "checkpoint: '%s': %s; %s", tmp.c_str(), why.c_str(), kept.c_str());
   lastStep_ = step;
   PetscCall(PetscTime(&lastWrite_));
   PetscCall(RemoveOld());
@@ -273,8 +336,7 @@ PetscErrorCode Checkpoint::RemoveOld() {
 PetscErrorCode Checkpoint::Destroy() {
   PetscFunctionBeginUser;
   if (handlers_) {
-    sigaction(SIGTERM, &g_oldTerm, nullptr);
-    sigaction(SIGINT, &g_oldInt, nullptr);
+    for (int k = 0; k < 4; ++k) sigaction(kStopSignals[k], &g_oldHandlers[k], nullptr);
     handlers_ = false;
   }
   PetscFunctionReturn(0);

@@ -5,6 +5,8 @@
 #include <algorithm>
 #include <cctype>
 #include <cstdint>
+#include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <sstream>
 #include <vector>
@@ -28,21 +30,6 @@ bool IsFree(const std::string &name) {
 
 // A token of PetscOptionsGetAll's text is an option name when it is '-' and a letter: "-1e-3" is a value.
 bool IsName(const std::string &t) { return t.size() > 1 && t[0] == '-' && std::isalpha((unsigned char)t[1]); }
-
-// HDF5 prints its own error stack by default; the checks below report one reason instead. The
-// previous printing is put back when the guard goes, so PETSc's HDF5 use is unaffected.
-class QuietHdf5 {
-public:
-  QuietHdf5() {
-    H5Eget_auto2(H5E_DEFAULT, &func_, &data_);
-    H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
-  }
-  ~QuietHdf5() { H5Eset_auto2(H5E_DEFAULT, func_, data_); }
-
-private:
-  H5E_auto2_t func_ = nullptr;
-  void       *data_ = nullptr;
-};
 
 constexpr std::uint64_t kFnvOffset = 1469598103934665603ull, kFnvPrime = 1099511628211ull;
 
@@ -162,13 +149,39 @@ PetscErrorCode RunDefiningOptions(std::string *text) {
   PetscFunctionReturn(0);
 }
 
+namespace {
+
+// A line "-name value" with every number of the value (separated by spaces or commas) printed in
+// one way: 2.5e-4, 0.00025 and 2.50e-04 are the same option value.
+std::string Canonical(const std::string &line) {
+  std::string out, token;
+  auto flush = [&]() {
+    char  *end = nullptr;
+    double v   = token.empty() ? 0 : std::strtod(token.c_str(), &end);
+    if (!token.empty() && end && *end == '\0') {
+      char buf[32];
+      std::snprintf(buf, sizeof buf, "%.17g", v);
+      out += buf;
+    } else out += token;
+    token.clear();
+  };
+  for (char c : line) {
+    if (c == ' ' || c == ',') flush(), out += c;
+    else token += c;
+  }
+  flush();
+  return out;
+}
+
+}  // namespace
+
 std::string FirstDifference(const std::string &saved, const std::string &current) {
   std::istringstream a(saved), b(current);
   std::string        la, lb;
   while (true) {
     const bool ha = (bool)std::getline(a, la), hb = (bool)std::getline(b, lb);
     if (!ha && !hb) return "";
-    if (ha && hb && la == lb) continue;
+    if (ha && hb && Canonical(la) == Canonical(lb)) continue;
     // Sorted lists: the smaller line is the one missing from the other side.
     if (ha && (!hb || la < lb) && la.substr(0, la.find(' ')) != lb.substr(0, lb.find(' ')))
       return "'" + la + "' in the checkpoint, not in this run";

@@ -287,6 +287,22 @@ PetscErrorCode Simulation::SaveState(PetscViewer viewer) {
   PetscFunctionReturn(0);
 }
 
+PetscErrorCode Simulation::StateBytes(PetscInt64 *bytes) const {
+  PetscInt64 part = 0;
+
+  PetscFunctionBeginUser;
+  *bytes = 4096;  // the header attributes
+  if (physics_.dem) {
+    PetscCall(dem_->SavedBytes(&part));
+    *bytes += part;
+  }
+  if (physics_.flow) {
+    PetscCall(flow_->SavedBytes(&part));
+    *bytes += part;
+  }
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode Simulation::LoadState(PetscViewer viewer) {
   char *basis = nullptr;
 

@@ -104,6 +104,29 @@ PetscErrorCode Dem::ArchiveState(RankArchive &ar, SavedState &st) {
   PetscFunctionReturn(0);
 }
 
+// What ArchiveState writes, every value a double: the swarm fields per particle, the pair and wall
+// lists per entry, the halo's send lists, and a constant for the rest.
+PetscErrorCode Dem::SavedBytes(PetscInt64 *bytes) const {
+  PetscInt      bs, n;
+  PetscDataType type;
+  void         *data;
+  PetscInt64    values = 0, perParticle = 0, all;
+
+  PetscFunctionBeginUser;
+  for (int f = 0; f < kNumSwarmFields; ++f) {
+    PetscCall(DMSwarmGetField(swarm_.Dm(), kSwarmFields[f], &bs, &type, &data));
+    PetscCall(DMSwarmRestoreField(swarm_.Dm(), kSwarmFields[f], &bs, &type, &data));
+    perParticle += bs;
+  }
+  PetscCall(DMSwarmGetLocalSize(swarm_.Dm(), &n));
+  values = perParticle * n + (PetscInt64)list_.Size() * (2 + 2 + kSpringWidth + 4) + (PetscInt64)walls_.Size() * (4 + kSpringWidth);
+  for (const auto &s : halo_.SendLists()) values += 1 + (PetscInt64)s.size();
+  if (out_.particleEntries.size() + out_.contactEntries.size()) values += 3 * (PetscInt64)(out_.particleEntries.size() + out_.contactEntries.size());
+  PetscCallMPI(MPI_Allreduce(&values, &all, 1, MPIU_INT64, MPI_SUM, comm_));
+  *bytes = 8 * all + 64 * 1024;
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode Dem::Save(PetscViewer viewer) {
   RankArchive ar;
   SavedState  st;

@@ -342,6 +342,19 @@ PetscErrorCode Flow::View(PetscViewer viewer) const {
 // pressure solve's initial guess), the explicit terms of the previous step (AB2), its dt, the
 // material fields, and the pressure preconditioner's reference coefficient and reuse decision; also
 // the ParaView index written so far (-flow_output_every), so that a restart continues it.
+PetscErrorCode Flow::SavedBytes(PetscInt64 *bytes) const {
+  PetscInt n;
+
+  PetscFunctionBeginUser;
+  *bytes = 0;
+  for (Vec v : {u_[0], u_[1], u_[2], Hold_[0], Hold_[1], Hold_[2], p_, phi_, rho_, mu_, eps_}) {
+    PetscCall(VecGetSize(v, &n));
+    *bytes += 8 * (PetscInt64)n;
+  }
+  *bytes += 64 * 1024 + 3 * 8 * (PetscInt64)outputEntries_.size();  // scalars, the preconditioner's state, the output index
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode Flow::Save(PetscViewer viewer) const {
   Vec scalars;
 

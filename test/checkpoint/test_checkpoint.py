@@ -5,12 +5,15 @@
                         checkpoint every 5 steps; 2N steps with one every 0.6 ms of wall time: the final
                         checkpoints (every dataset, the clock) must be equal bit for bit. A control checks that the comparison sees a difference
                         (the step-N checkpoint against the step-2N one).
-  ranks SCENE R1 R2     N steps on R1 ranks, -restart on R2 ranks to 2N, against the uninterrupted 2N
-                        steps on R1: flow fields within 1e-12 relative, DEM the same ids with positions
+  ranks SCENE R1 R2     N steps on R1 ranks, -restart on R2 ranks to N + M, against the uninterrupted
+                        N + M steps on R1: flow fields within 1e-12 relative, DEM the same ids with positions
                         (relative to the box), velocities and angular velocities (relative to their
                         largest magnitude) within 1e-10.
-  signal RANKS          SIGTERM to one rank mid-run: exit 0 with one message, a checkpoint of that
-                        step; -restart latest ends bitwise equal to the uninterrupted run.
+  signal RANKS SIG TO   SIG (SIGTERM, SIGINT, SIGUSR1) to one rank (TO rank) or to mpiexec (TO mpiexec)
+                        mid-run: exit 0 with one message, a checkpoint of that step; -restart latest
+                        ends bitwise equal to the uninterrupted run.
+  diskfull RANKS        a checkpoint that does not fit (file-size limit; a full tmpfs where mounting is
+                        allowed): one line, non-zero exit, the previous checkpoint intact.
   badinput              -restart of a missing, truncated, corrupted, other-version and other-scene file,
                         -restart latest with nothing valid, an unwritable -checkpoint_dir: one line, non-
                         zero exit on every rank (test/badinput/expect-error); -restart latest skips a
@@ -39,11 +42,11 @@ SCENES = {
     # 200 spheres with random velocities under gravity in a 1 cm box: contacts, wall contacts, list
     # rebuilds and, on 2 ranks, particles crossing between ranks within the first 100 steps.
     "dem": ("-physics dem -grid_cells 4,4,4 -grid_upper 0.01,0.01,0.01 -dem_radius 5e-4 -dem_fill_count 200 -dem_fill_jitter 0.5 "
-            "-dem_fill_velocity_spread 0.3 -seed 7".split(), 100, 500),
+            "-dem_fill_velocity_spread 0.3 -seed 7".split(), 100, (6000, 1000)),
     # F2 at 32 x 32 x 4: the adaptive time step, AB2 history and preconditioner reuse all matter.
     "flow": (["-options_file_yaml", os.path.join(ROOT, "config", "scenes", "cavity-re100.yaml")] +
-             "-grid_cells 32,32,4 -grid_upper 1,1,0.125".split(), 20, 20),
-}  # (options, N of the bitwise case, N of the rank-count case)
+             "-grid_cells 32,32,4 -grid_upper 1,1,0.125".split(), 20, (20, 20)),
+}  # (options, N of the bitwise case, (restart step, steps after it) of the rank-count case)
 QUIET = "-monitor_every 1000000 -monitor_timing 0".split()
 
 
@@ -122,23 +125,31 @@ def compare_across(scene, a, b):
 
 
 def case_ranks(exe, scene, r1, r2):
-    n = SCENES[scene][2]  # DEM: long enough that 1 and 2 ranks differ in the last bits
+    # DEM restarts at step 6000, when ~50 contacts carry tangential springs across the change of rank
+    # count (they must be carried by id pair); 1000 steps later the contact forces' summation order
+    # has moved the trajectories by ~1e-14 (positions) and ~1e-12 (velocities): the tolerance is exercised.
+    n, m = SCENES[scene][2]
     tmp = tempfile.mkdtemp(prefix="vofdem-ckpt-")
     a, b = os.path.join(tmp, "a"), os.path.join(tmp, "b")
-    run(exe, r1, scene, ["-max_steps", str(2 * n), "-checkpoint_dir", a])
+    run(exe, r1, scene, ["-max_steps", str(n + m), "-checkpoint_dir", a])
     run(exe, r1, scene, ["-max_steps", str(n), "-checkpoint_dir", b])
-    p = run(exe, r2, scene, ["-max_steps", str(2 * n), "-checkpoint_dir", b, "-restart", ckpt(b, n)])
+    if scene == "dem":
+        touching = int(np.count_nonzero(datasets(ckpt(b, n))["dem/pair_touching"]))
+        check(touching >= 20, "dem: %d touching pairs with springs in the step-%d checkpoint (>= 20)" % (touching, n))
+    p = run(exe, r2, scene, ["-max_steps", str(n + m), "-checkpoint_dir", b, "-restart", ckpt(b, n)])
     check(("written on %d rank" % r1) in p.stdout, "the restart says the file was written on %d rank(s)" % r1)
-    errors, tol, same = compare_across(scene, ckpt(a, 2 * n), ckpt(b, 2 * n))
+    errors, tol, same = compare_across(scene, ckpt(a, n + m), ckpt(b, n + m))
     if scene == "dem":
         check(same, "dem: the same particle ids after the restart on %d rank(s)" % r2)
     text = ", ".join("%s %.2e" % kv for kv in errors.items())
-    check(max(errors.values()) <= tol, "%s: written on %d, continued on %d rank(s), %d steps later: %s (limit %g)" % (scene, r1, r2, n, text, tol))
+    check(max(errors.values()) <= tol, "%s: written on %d at step %d, continued on %d rank(s), %d steps later: %s (limit %g)" % (scene, r1, n, r2, m, text, tol))
     shutil.rmtree(tmp)
 
 
-def case_signal(exe, ranks):
-    scene, steps = "dem", 4000
+def case_signal(exe, ranks, name, target):
+    """Signal `name` to one rank (target "rank": what a batch system's kill does) or to mpiexec
+    (target "mpiexec": it forwards SIGUSR1/SIGUSR2, and kills the ranks on SIGTERM/SIGINT)."""
+    scene, steps, signum = "dem", 4000, getattr(signal, name)
     tmp = tempfile.mkdtemp(prefix="vofdem-ckpt-")
     a, b = os.path.join(tmp, "a"), os.path.join(tmp, "b")
     run(exe, ranks, scene, ["-max_steps", str(steps), "-checkpoint_dir", a])
@@ -147,19 +158,66 @@ def case_signal(exe, ranks):
     deadline = time.time() + 60
     while not glob.glob(ckpt(b, 100)) and time.time() < deadline and proc.poll() is None:
         time.sleep(0.02)
-    pids = rank_pids(proc.pid)
-    check(len(pids) == ranks, "found the %d rank processes (%s)" % (ranks, pids))
-    if pids:
-        os.kill(pids[-1], signal.SIGTERM)  # one rank only: the ranks must agree to stop together
+    if target == "rank":
+        pids = rank_pids(proc.pid)
+        check(len(pids) == ranks, "found the %d rank processes (%s)" % (ranks, pids))
+        if pids:
+            os.kill(pids[-1], signum)  # one rank only: the ranks must agree to stop together
+    else:
+        proc.send_signal(signum)
     out, err = proc.communicate(timeout=120)
-    m = re.search(r"^vofdem: stopped by signal 15 at step (\d+),", out, re.M)
-    check(proc.returncode == 0 and m is not None, "SIGTERM: exit 0 (got %d) with the message (%s)" % (proc.returncode, (out + err).strip().splitlines()[-1:]))
+    m = re.search(r"^vofdem: stopped by signal %d at step (\d+)," % signum, out, re.M)
+    check(proc.returncode == 0 and m is not None, "%s to %s: exit 0 (got %d) with the message (%s)" % (name, target, proc.returncode, (out + err).strip().splitlines()[-1:]))
     if m:
         stop = int(m.group(1))
         check(0 < stop < steps and os.path.exists(ckpt(b, stop)), "stopped at step %d with its checkpoint" % stop)
         run(exe, ranks, scene, ["-max_steps", str(steps), "-checkpoint_dir", b, "-restart", "latest"])
         d = bitwise_diff(ckpt(a, steps), ckpt(b, steps))
-        check(not d, "stopped by SIGTERM at step %d, restarted: the final state equals the uninterrupted run bitwise (differing: %s)" % (stop, d))
+        check(not d, "stopped by %s at step %d, restarted: the final state equals the uninterrupted run bitwise (differing: %s)" % (name, stop, d))
+    shutil.rmtree(tmp)
+
+
+def one_error_line(p, pattern, what):
+    errs = [l for l in (p.stdout + p.stderr).splitlines() if l.startswith("vofdem: error:")]
+    check(p.returncode != 0 and len(errs) == 1 and re.search(pattern, errs[0]) is not None and "PETSC ERROR" not in p.stderr and
+          "HDF5-DIAG" not in p.stderr, "%s: one error line, non-zero exit (%d): %s" % (what, p.returncode, errs))
+
+
+def case_diskfull(exe, ranks):
+    """A full disk while checkpoints are written: one line, non-zero exit, the previous checkpoint
+    intact (restartable). Two ways: a 1 MB-per-file limit on the ranks (prlimit --fsize; Open MPI's
+    shared memory needs bigger files, so the ranks talk over TCP here) before the space check and,
+    with -checkpoint_space_check 0, inside the HDF5 write; and, where mounting is allowed (root), a
+    real 4 MB tmpfs that fills up at the third checkpoint of a 1.6 MB flow state."""
+    tmp = tempfile.mkdtemp(prefix="vofdem-ckpt-")
+    d = os.path.join(tmp, "ck")
+    run(exe, ranks, "flow", ["-max_steps", "10", "-checkpoint_dir", d, "-checkpoint_every", "10", "-grid_cells", "64,64,4"])
+    limited = ["mpiexec", "-n", str(ranks), "--oversubscribe", "--bind-to", "none", "--mca", "btl", "self,tcp", "prlimit", "--fsize=1000000", exe]
+    for space_check, pattern in (("1", r"checkpoint: cannot write '.*\.checkpoint_00000020\.h5\.tmp' \(-checkpoint_dir\): no room for about 1\.\d MB "
+                                        r"\(File too large\); checkpoint_00000010\.h5 is kept"),
+                                 ("0", r"checkpoint: writing '.*\.checkpoint_00000020\.h5\.tmp' failed on rank \d \(.*; disk full\?\); "
+                                       r"checkpoint_00000010\.h5 is kept")):
+        cmd = limited + scene_args("flow", ranks) + ["-grid_cells", "64,64,4", "-max_steps", "30", "-checkpoint_dir", d, "-checkpoint_every", "10",
+                                                   "-restart", "latest", "-checkpoint_space_check", space_check]
+        p = subprocess.run(cmd, capture_output=True, text=True, timeout=300, env=ENV)
+        one_error_line(p, pattern, "file-size limit, -checkpoint_space_check %s" % space_check)
+        p = run(exe, ranks, "flow", ["-grid_cells", "64,64,4", "-max_steps", "11", "-checkpoint_dir", d, "-restart", "latest", "-checkpoint_final", "0"])
+        check("restarted from %s at step 10" % ckpt(d, 10) in p.stdout, "after the failed write, -restart latest continues from the intact step-10 file")
+    mnt = os.path.join(tmp, "tmpfs")
+    os.makedirs(mnt)
+    if subprocess.run(["mount", "-t", "tmpfs", "-o", "size=4m", "tmpfs", mnt], capture_output=True).returncode != 0:
+        print("note: cannot mount a tmpfs here (not root?): the real full-disk case is not run")
+    else:
+        try:
+            p = run(exe, ranks, "flow", ["-grid_cells", "64,64,4", "-max_steps", "30", "-checkpoint_dir", mnt, "-checkpoint_every", "5"], expect_ok=False)
+            one_error_line(p, r"checkpoint: cannot write '.*\.checkpoint_00000015\.h5\.tmp' \(-checkpoint_dir\): no room for about 1\.\d MB \(No space left "
+                           r"on device\); checkpoint_00000010\.h5 is kept", "4 MB tmpfs")
+            check(sorted(os.listdir(mnt)) == ["checkpoint_00000005.h5", "checkpoint_00000010.h5"], "the tmpfs holds the two complete checkpoints only (%s)"
+                  % sorted(os.listdir(mnt)))
+            p = run(exe, ranks, "flow", ["-grid_cells", "64,64,4", "-max_steps", "12", "-checkpoint_dir", mnt, "-restart", "latest", "-checkpoint_final", "0"])
+            check("restarted from %s at step 10" % ckpt(mnt, 10) in p.stdout, "the full disk's step-10 checkpoint is intact (-restart latest)")
+        finally:
+            subprocess.run(["umount", mnt])
     shutil.rmtree(tmp)
 
 
@@ -205,6 +263,8 @@ def case_badinput(exe):
     expect_error(exe, (E % "version\\.h5") + "format version 99, this vofdem reads version 1", ["-restart", version, "-max_steps", "30"])
     expect_error(exe, (E % "checkpoint_00000020\\.h5") + "another scene: '-dem_radius 5e-4' in the checkpoint, '-dem_radius 4e-4' in this run",
                  ["-restart", f20, "-dem_radius", "4e-4", "-max_steps", "30"])
+    p = run(exe, 2, "dem", ["-restart", f20, "-dem_radius", "0.00050", "-max_steps", "21", "-checkpoint_dir", os.path.join(tmp, "spelled")])
+    check("restarted from" in p.stdout, "a number spelled differently (-dem_radius 0.00050 for 5e-4) is the same scene")
     expect_error(exe, (E % "checkpoint_00000020\\.h5") + "it is of physics dem, this run flow", ["-restart", f20, "-max_steps", "30"], scene="flow")
     # latest: nothing valid (the two files of `bad` renamed as checkpoints)
     junk = os.path.join(tmp, "junk")
@@ -242,7 +302,9 @@ def main():
     elif case == "ranks":
         case_ranks(exe, args[0], int(args[1]), int(args[2]))
     elif case == "signal":
-        case_signal(exe, int(args[0]))
+        case_signal(exe, int(args[0]), args[1], args[2])
+    elif case == "diskfull":
+        case_diskfull(exe, int(args[0]))
     elif case == "badinput":
         case_badinput(exe)
     else:

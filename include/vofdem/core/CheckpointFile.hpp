@@ -10,11 +10,27 @@
 // corrupted) fails ReadCheckpointHeader.
 #pragma once
 
+#include <hdf5.h>
 #include <petscsys.h>
 
 #include <string>
 
 namespace vofdem {
+
+// HDF5 prints its own error stack by default; the checkpoint code reports one reason instead. The
+// previous printing is put back when the guard goes, so PETSc's HDF5 use is unaffected.
+class QuietHdf5 {
+public:
+  QuietHdf5() {
+    H5Eget_auto2(H5E_DEFAULT, &func_, &data_);
+    H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
+  }
+  ~QuietHdf5() { H5Eset_auto2(H5E_DEFAULT, func_, data_); }
+
+private:
+  H5E_auto2_t func_ = nullptr;
+  void       *data_ = nullptr;
+};
 
 // Raised whenever what a checkpoint holds or how it is laid out changes incompatibly.
 constexpr int kCheckpointFormat = 1;

@@ -31,6 +31,8 @@ public:
   // with the saving run's options (Checkpoint::Restore checks them).
   PetscErrorCode SaveState(PetscViewer viewer);
   PetscErrorCode LoadState(PetscViewer viewer);
+  // Collective: about how many bytes SaveState writes (all ranks), for the disk-space check.
+  PetscErrorCode StateBytes(PetscInt64 *bytes) const;
 
   PetscReal Time() const { return time_; }
   PetscReal Dt() const { return dt_; }

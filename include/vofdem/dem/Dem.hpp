@@ -69,6 +69,8 @@ public:
   // SetUp() with the saving run's options; bitwise continuation on the same rank count.
   PetscErrorCode Save(PetscViewer viewer);
   PetscErrorCode Load(PetscViewer viewer);
+  // Collective: about how many bytes Save writes (all ranks), for the checkpoint's disk-space check.
+  PetscErrorCode SavedBytes(PetscInt64 *bytes) const;
   // Output and analysis (DemOutput.cpp). SetOutputDir: after SetUp, with -output_dir (may be
   // empty); WriteOutput: after SetUp and after each step, writes what is due at this step.
   PetscErrorCode SetOutputDir(const std::string &dir);

@@ -51,6 +51,7 @@ public:
   PetscErrorCode View(PetscViewer viewer) const;
   PetscErrorCode Save(PetscViewer viewer) const;
   PetscErrorCode Load(PetscViewer viewer);
+  PetscErrorCode SavedBytes(PetscInt64 *bytes) const;  // about how many bytes Save writes (all ranks)
   PetscErrorCode Destroy();
 
   // Fields, for initial conditions and coupling. Velocity(d): global vector of Staggered().Face(d);
