@@ -19,24 +19,10 @@ import subprocess
 
 import numpy as np
 
+from foam_cavity import write  # noqa: F401  (the FoamFile header)
+
 A = 0.05715  # m, Martin & Moyce's column width (2.25 in)
 G = 9.81
-HEADER = """FoamFile
-{
-    version     2.0;
-    format      ascii;
-    class       %s;
-    object      %s;
-}
-"""
-
-
-def write(path, cls, obj, body):
-    os.makedirs(os.path.dirname(path), exist_ok=True)
-    with open(path, "w") as f:
-        f.write(HEADER % (cls, obj) + body)
-
-
 def scaled_time(t):
     """Martin & Moyce's T = t sqrt(2 g / a)."""
     return t * math.sqrt(2 * G / A)
