@@ -19,7 +19,7 @@ import subprocess
 
 import numpy as np
 
-from foam_cavity import write  # noqa: F401  (the FoamFile header)
+from foam_cavity import write  # the FoamFile header and file writer
 
 A = 0.05715  # m, Martin & Moyce's column width (2.25 in)
 G = 9.81
