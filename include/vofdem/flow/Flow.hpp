@@ -89,6 +89,7 @@ private:
   PetscErrorCode Predict(PetscReal t, PetscReal dt);
   PetscErrorCode Project(PetscReal dt, Vec *uField);
   PetscErrorCode Divergence(Vec rhsOut, PetscReal scale, PetscReal *maxAbs) const;
+  PetscErrorCode BoundaryPressure();  // outflow faces at different pressures: the initial field between them
   PetscErrorCode ZeroBlocked(int d, Vec faceVector) const;  // the faces touching solid cells
   PetscErrorCode SolidWallTerms();  // the wall half a cell away in the explicit viscous term (SolidMask.hpp)
 
