@@ -4,7 +4,7 @@ static const char help[] = "Verification V1 (VERIFICATION.md): the single vortex
                            "(default 32,64) prints the shape error sum |alpha(T) - alpha(0)| dx dy next to the peers' measured values (OpenFOAM\n"
                            "isoAdvector and Basilisk, VERIFICATION.md), the relative volume error and the largest bound violation of alpha\n"
                            "seen after any sweep. Must reach: volume error <= 1e-12, bound violation <= 1e-12, shape error at or below Basilisk\n"
-                           "where a value is known (T = 8 only). Time step dt = -vof_cfl h / max|u(t)| over the step (-adaptive 0: constant, with max|u| = 1).\n-show_time adds the wall time.\n\n";
+                           "where a value is known (T = 8 only). Time step dt = -vof_cfl h / max|u(t)| over the step (-adaptive 0: constant, with max|u| = 1).\n-show_time adds the wall time;\n-peer_check 0 prints the comparison with the peers without making a miss fail the run (scripts/work-precision).\n\n";
 
 #include "vofdem/core/Runtime.hpp"
 #include "vofdem/grid/Grid.hpp"
@@ -127,12 +127,13 @@ PetscErrorCode RunGrid(PetscInt n, PetscReal period, bool adaptive, Result *res)
 PetscErrorCode Run() {
   PetscInt  list[8] = {32, 64}, nlist = 8;
   PetscReal period = 8;
-  PetscBool set, showTime = PETSC_FALSE, adaptiveOpt = PETSC_TRUE;
+  PetscBool set, showTime = PETSC_FALSE, adaptiveOpt = PETSC_TRUE, peerCheck = PETSC_TRUE;
 
   PetscFunctionBeginUser;
   PetscCall(PetscOptionsGetIntArray(nullptr, nullptr, "-cells_list", list, &nlist, &set));
   if (!set) nlist = 2;
   PetscCall(PetscOptionsGetBool(nullptr, nullptr, "-adaptive", &adaptiveOpt, nullptr));
+  PetscCall(PetscOptionsGetBool(nullptr, nullptr, "-peer_check", &peerCheck, nullptr));
   const bool adaptive = adaptiveOpt;
   PetscCall(PetscOptionsGetReal(nullptr, nullptr, "-period", &period, nullptr));
   PetscCall(PetscOptionsGetBool(nullptr, nullptr, "-show_time", &showTime, nullptr));
@@ -150,7 +151,7 @@ PetscErrorCode Run() {
     std::string line = buf;
     if (peer) {
       const bool ok = e.shape <= peer->basilisk;
-      failures += !ok;
+      failures += peerCheck && !ok;
       std::snprintf(buf, sizeof buf, " (Basilisk %.1e, OpenFOAM %.1e; ratio to Basilisk %.2f %s)", (double)peer->basilisk, (double)peer->openfoam, (double)(e.shape / peer->basilisk),
                     ok ? "ok" : "FAIL");
       line += buf;

@@ -20,6 +20,13 @@ PetscErrorCode Vof::SetFromOptions(const Grid &grid) {
                            {"height", "youngs"}, &nm));
     if (nm.size() != 1) VofdemInputError(grid.Comm(), "option -vof_normals: give one method (height or youngs)");
     normals_ = nm[0] == "height" ? VofNormals::Height : VofNormals::Youngs;
+    PetscCall(opt.Real("-density", "Density of phase 1 (alpha = 1, the heavy phase); phase 0 has -flow_density", "kg/m^3", &density_, RealRange::Positive()));
+    PetscCall(opt.Real("-viscosity", "Dynamic viscosity of phase 1; phase 0 has -flow_viscosity", "Pa s", &viscosity_, RealRange::Positive()));
+    PetscCall(opt.RealList("-boxes", "Phase 1 at the start: boxes x0,y0,z0,x1,y1,z1[,...]", "m", &boxes_, 6 * 64));
+    PetscCall(opt.RealList("-spheres", "Phase 1 at the start: spheres cx,cy,cz,r[,...]", "m", &spheres_, 4 * 64));
+    PetscCall(opt.Int("-init_samples", "Sample points per cell and direction for the initial fraction of -vof_boxes/-vof_spheres", &samples_, 1, 64));
+    if (boxes_.size() % 6) VofdemInputError(grid.Comm(), "option -vof_boxes: give 6 numbers per box (x0,y0,z0,x1,y1,z1), got %d", (int)boxes_.size());
+    if (spheres_.size() % 4) VofdemInputError(grid.Comm(), "option -vof_spheres: give 4 numbers per sphere (cx,cy,cz,r), got %d", (int)spheres_.size());
     PetscBool cc = passes_ > 1 ? PETSC_TRUE : PETSC_FALSE;
     PetscCall(opt.Bool("-centred_columns", "With -vof_normals height: where no 7-cell column is a clean transition, try centred 3-cell columns before Youngs", &cc));
     passes_ = cc ? 2 : 1;
@@ -51,7 +58,7 @@ PetscErrorCode Vof::SetUp(const StaggeredGrid &sg) {
   PetscCall(DMDACreate3d(grid_->Comm(), bt[0], bt[1], bt[2], DMDA_STENCIL_BOX, N[0], N[1], N[2], m[0], m[1], m[2], 1, width, l[0], l[1], l[2], &da_));
   PetscCall(DMSetUp(da_));
   PetscCall(DMCreateGlobalVector(da_, &alpha_));
-  PetscCall(PetscObjectSetName((PetscObject)alpha_, "alpha"));
+  PetscCall(PetscObjectSetName((PetscObject)alpha_, "vof_alpha"));
   PetscCall(DMCreateLocalVector(da_, &alphaLocal_));
   for (int d = 0; d < 3; ++d) PetscCall(DMCreateLocalVector(sg.Face(d), &uLocal_[d]));
   PetscInt s[3], n[3];
@@ -157,7 +164,7 @@ PetscErrorCode Vof::Summarize(VofSummary *out) const {
     sum += v;
     mn = std::min(mn, v);
     mx = std::max(mx, v);
-    cells += v > 0 && v < 1;
+    cells += v > tiny_ && v < 1 - tiny_;  // not round-off off full or empty
   }
   PetscCall(VecRestoreArrayRead(alpha_, &a));
   PetscReal loc[2] = {sum, cells}, glob[2], lmax[3] = {-mn, mx, boundViolation_}, gmax[3];
@@ -172,10 +179,60 @@ PetscErrorCode Vof::Summarize(VofSummary *out) const {
   PetscFunctionReturn(0);
 }
 
+PetscErrorCode Vof::Save(PetscViewer viewer) const {
+  Vec         scalars;
+  PetscMPIInt rank;
+
+  PetscFunctionBeginUser;
+  PetscCall(VecView(alpha_, viewer));
+  PetscReal bound;  // each rank holds its own; the file holds the largest
+  PetscCallMPI(MPI_Allreduce(&boundViolation_, &bound, 1, MPIU_REAL, MPI_MAX, grid_->Comm()));
+  PetscCallMPI(MPI_Comm_rank(grid_->Comm(), &rank));
+  PetscCall(VecCreateMPI(grid_->Comm(), rank == 0 ? 3 : 0, 3, &scalars));
+  PetscCall(PetscObjectSetName((PetscObject)scalars, "vof_scheme_state"));
+  if (rank == 0) {
+    PetscCall(VecSetValue(scalars, 0, (PetscScalar)steps_, INSERT_VALUES));
+    PetscCall(VecSetValue(scalars, 1, bound, INSERT_VALUES));
+    PetscCall(VecSetValue(scalars, 2, heightShare_, INSERT_VALUES));
+  }
+  PetscCall(VecAssemblyBegin(scalars));
+  PetscCall(VecAssemblyEnd(scalars));
+  PetscCall(VecView(scalars, viewer));
+  PetscCall(VecDestroy(&scalars));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode Vof::Load(PetscViewer viewer) {
+  Vec         scalars;
+  PetscMPIInt rank;
+  PetscReal   s[3] = {0, 0, 0};
+
+  PetscFunctionBeginUser;
+  PetscCall(VecLoad(alpha_, viewer));
+  PetscCallMPI(MPI_Comm_rank(grid_->Comm(), &rank));
+  PetscCall(VecCreateMPI(grid_->Comm(), rank == 0 ? 3 : 0, 3, &scalars));
+  PetscCall(PetscObjectSetName((PetscObject)scalars, "vof_scheme_state"));
+  PetscCall(VecLoad(scalars, viewer));
+  if (rank == 0) {
+    const PetscScalar *a;
+    PetscCall(VecGetArrayRead(scalars, &a));
+    for (int k = 0; k < 3; ++k) s[k] = PetscRealPart(a[k]);
+    PetscCall(VecRestoreArrayRead(scalars, &a));
+  }
+  PetscCallMPI(MPI_Bcast(s, 3, MPIU_REAL, 0, grid_->Comm()));
+  PetscCall(VecDestroy(&scalars));
+  steps_          = (PetscInt)s[0];
+  boundViolation_ = s[1];  // the largest seen on any rank: a bound, the same on every rank count
+  heightShare_    = s[2];
+  PetscCall(FillGhosts());
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode Vof::View(PetscViewer viewer) const {
   PetscFunctionBeginUser;
-  PetscCall(PetscViewerASCIIPrintf(viewer, "vof: PLIC with %s normals, split geometric advection (Weymouth & Yue), sweep Courant number <= %g\n",
-                                   normals_ == VofNormals::Height ? "height-function" : "Youngs", (double)cfl_));
+  PetscCall(PetscViewerASCIIPrintf(viewer, "vof: PLIC with %s normals, split geometric advection (Weymouth & Yue), sweep Courant number <= %g; phase 1 density %g kg/m^3, viscosity %g Pa s; %d box(es), %d sphere(s) of phase 1 at the start\n",
+                                   normals_ == VofNormals::Height ? "height-function" : "Youngs", (double)cfl_, (double)density_, (double)viscosity_,
+                                   (int)(boxes_.size() / 6), (int)(spheres_.size() / 4)));
   PetscFunctionReturn(0);
 }
 

@@ -23,13 +23,15 @@
 
 namespace vofdem {
 
+class Flow;
+
 enum class VofNormals { Youngs, Height };
 
 struct VofSummary {
   PetscReal volume = 0;          // m^3: sum alpha dV
   PetscReal minAlpha = 0, maxAlpha = 0;  // now
   PetscReal boundViolation = 0;  // max(-alpha, alpha - 1, 0) seen after any sweep since SetUp (no clipping is done)
-  PetscReal interfaceCells = 0;  // cells with 0 < alpha < 1 (as a real: a sum over ranks)
+  PetscReal interfaceCells = 0;  // cells with 1e-12 < alpha < 1 - 1e-12 (as a real: a sum over ranks)
   PetscReal heightNormals = 0;   // fraction of interface cells of the last step whose normal came from heights
 };
 
@@ -46,11 +48,21 @@ public:
   PetscErrorCode StableTimeStep(Vec const u[3], PetscReal *dt, std::string *basis) const;
   PetscErrorCode Summarize(VofSummary *s) const;  // collective
   PetscErrorCode View(PetscViewer viewer) const;
+  // HDF5: alpha (natural ordering) and the scheme's state (sweep-order parity, bound violation so
+  // far, height-normal share): a continued run is bitwise the uninterrupted one.
+  PetscErrorCode Save(PetscViewer viewer) const;
+  PetscErrorCode Load(PetscViewer viewer);
   PetscErrorCode Destroy();
 
   // alpha from a shape function: the fraction of samples[d] points per direction (cell-centred
   // sub-cells) where shape < 0; samples in a direction the shape does not depend on may be 1.
   PetscErrorCode SetFraction(Shape shape, void *ctx, const PetscInt samples[3]);
+  // The scene's initial fraction: the heavy phase fills -vof_boxes and -vof_spheres.
+  PetscErrorCode SetInitialShapes();
+  // The flow's density and viscosity from alpha (phase 1: -vof_density, -vof_viscosity; phase 0: the
+  // flow's -flow_density, -flow_viscosity), then flow.PropertiesChanged().
+  PetscErrorCode UpdateProperties(Flow &flow) const;
+  PetscReal Density() const { return density_; }
   Vec Fraction() const { return alpha_; }  // global vector of FractionDM()
   DM  FractionDM() const { return da_; }
   VofNormals Normals() const { return normals_; }
@@ -74,6 +86,9 @@ private:
   PetscReal   cfl_     = 0.5;
   PetscInt    passes_  = 1;      // -vof_centred_columns: 2 adds 3-cell centred columns before Youngs (experimental)
   PetscReal   tiny_    = 1e-12;  // alpha below tiny (above 1 - tiny) is fluxed as uniform: no plane is fitted to round-off
+  PetscReal   density_ = 1000, viscosity_ = 1e-3;  // phase 1 (alpha = 1)
+  std::vector<PetscReal> boxes_, spheres_;        // initial shapes of phase 1
+  PetscInt    samples_ = 8;                       // per direction and cell, for the initial fraction
   // state
   PetscInt    steps_ = 0;        // alternates the sweep order
   PetscReal   boundViolation_ = 0;
