@@ -150,6 +150,11 @@ PetscErrorCode Simulation::ChooseTimeStep() {
       limit        = f;
       dtLimitName_ = basis;
     }
+    const PetscReal cap = vof_->CapillaryTimeStep(flow_->ReferenceDensity());
+    if (cap < limit) {
+      limit        = cap;
+      dtLimitName_ = "capillary sqrt(rho_mean h^3/(2 pi sigma))";
+    }
   }
   if (!(limit < PETSC_MAX_REAL) && step_ > 0) PetscFunctionReturn(0);  // came to rest: keep the step
   if (!(limit < PETSC_MAX_REAL) && !(dtUser_ > 0))
@@ -180,6 +185,11 @@ PetscErrorCode Simulation::Step() {
   if (physics_.dem) {
     PetscCall(PetscLogStagePush(demStage_));
     PetscCall(dem_->Step(dt));
+    PetscCall(PetscLogStagePop());
+  }
+  if (physics_.vof) {  // surface tension of the current interface, for the flow's predictor (F2)
+    PetscCall(PetscLogStagePush(vofStage_));
+    PetscCall(vof_->SurfaceTension(*flow_));
     PetscCall(PetscLogStagePop());
   }
   if (physics_.flow) {

@@ -22,6 +22,8 @@ PetscErrorCode Vof::SetFromOptions(const Grid &grid) {
     normals_ = nm[0] == "height" ? VofNormals::Height : VofNormals::Youngs;
     PetscCall(opt.Real("-density", "Density of phase 1 (alpha = 1, the heavy phase); phase 0 has -flow_density", "kg/m^3", &density_, RealRange::Positive()));
     PetscCall(opt.Real("-viscosity", "Dynamic viscosity of phase 1; phase 0 has -flow_viscosity", "Pa s", &viscosity_, RealRange::Positive()));
+    PetscCall(opt.Real("-surface_tension", "Surface tension coefficient sigma (0: none); height-function curvature, balanced-force face force", "N/m", &sigma_, RealRange::NonNegative()));
+    PetscCall(opt.Bool("-advect", "Move the interface with the flow (0: a frozen interface, for verification)", &advect_));
     PetscCall(opt.RealList("-boxes", "Phase 1 at the start: boxes x0,y0,z0,x1,y1,z1[,...]", "m", &boxes_, 6 * 64));
     PetscCall(opt.RealList("-spheres", "Phase 1 at the start: spheres cx,cy,cz,r[,...]", "m", &spheres_, 4 * 64));
     PetscCall(opt.Int("-init_samples", "Sample points per cell and direction for the initial fraction of -vof_boxes/-vof_spheres", &samples_, 1, 64));
@@ -70,6 +72,8 @@ PetscErrorCode Vof::SetUp(const StaggeredGrid &sg) {
 PetscErrorCode Vof::Destroy() {
   PetscFunctionBeginUser;
   for (int d = 0; d < 3; ++d) PetscCall(VecDestroy(&uLocal_[d]));
+  PetscCall(VecDestroy(&kappa_));
+  PetscCall(VecDestroy(&kappaLocal_));
   PetscCall(VecDestroy(&alphaLocal_));
   PetscCall(VecDestroy(&alpha_));
   PetscCall(DMDestroy(&da_));
@@ -176,6 +180,7 @@ PetscErrorCode Vof::Summarize(VofSummary *out) const {
   out->maxAlpha       = gmax[1];
   out->boundViolation = std::max({gmax[2], gmax[0], gmax[1] - 1, (PetscReal)0});
   out->heightNormals  = heightShare_;  // already global (Advect)
+  out->missingCurvature = missingCurvature_;
   PetscFunctionReturn(0);
 }
 
@@ -230,8 +235,8 @@ PetscErrorCode Vof::Load(PetscViewer viewer) {
 
 PetscErrorCode Vof::View(PetscViewer viewer) const {
   PetscFunctionBeginUser;
-  PetscCall(PetscViewerASCIIPrintf(viewer, "vof: PLIC with %s normals, split geometric advection (Weymouth & Yue), sweep Courant number <= %g; phase 1 density %g kg/m^3, viscosity %g Pa s; %d box(es), %d sphere(s) of phase 1 at the start\n",
-                                   normals_ == VofNormals::Height ? "height-function" : "Youngs", (double)cfl_, (double)density_, (double)viscosity_,
+  PetscCall(PetscViewerASCIIPrintf(viewer, "vof: PLIC with %s normals, split geometric advection (Weymouth & Yue), sweep Courant number <= %g; phase 1 density %g kg/m^3, viscosity %g Pa s; surface tension %g N/m; %d box(es), %d sphere(s) of phase 1 at the start\n",
+                                   normals_ == VofNormals::Height ? "height-function" : "Youngs", (double)cfl_, (double)density_, (double)viscosity_, (double)sigma_,
                                    (int)(boxes_.size() / 6), (int)(spheres_.size() / 4)));
   PetscFunctionReturn(0);
 }

@@ -189,6 +189,7 @@ PetscErrorCode Vof::Advect(Vec const u[3], PetscReal dt) {
   PetscInt           n;
 
   PetscFunctionBeginUser;
+  if (!advect_) PetscFunctionReturn(0);  // a frozen interface (-vof_advect 0)
   for (int d = 0; d < 3; ++d) PetscCall(DMGlobalToLocal(sg_->Face(d), u[d], INSERT_VALUES, uLocal_[d]));
   PetscCall(FillGhosts());
   // c_i from the state at the start of the step, the same in every sweep (exact conservation).

@@ -63,6 +63,12 @@ public:
   Vec FluidFraction() const { return eps_; }
   PetscErrorCode PropertiesChanged();
   void SetForcing(Forcing f, void *ctx) { forcing_ = f; forcingCtx_ = ctx; }
+  // A force per unit volume at the faces (N/m^3; for surface tension, PHYSICS.md F2), global vectors of
+  // Staggered().Face(d), created on the first call (zero) and kept by Flow. Predict adds it divided by
+  // the same face density as the pressure gradient, (1/rho)_f f_d, so that a force that is a discrete
+  // gradient on the pressure's stencil (a balanced-force surface tension) is cancelled exactly by the
+  // pressure. The caller fills it before each Step; it is not part of Save (recomputed from the state).
+  PetscErrorCode FaceForce(int d, Vec *f);
   // Makes the velocity field satisfy the boundary conditions and div(eps U) = 0 (an initial projection).
   PetscErrorCode ProjectInitialVelocity();
   // Sets the pressure to the one that balances gravity (done by the first Step unless Load came first).
@@ -125,6 +131,7 @@ private:
   PetscBool haveOld_ = PETSC_FALSE;
   bool      pressureReady_ = false;  // InitialPressure done, or the pressure loaded
   Forcing   forcing_ = nullptr;
+  Vec       faceForce_[3] = {nullptr, nullptr, nullptr};  // FaceForce(); null unless asked for
   void     *forcingCtx_ = nullptr;
   // last step, for the monitor
   FlowSummary last_;

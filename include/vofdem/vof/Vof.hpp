@@ -33,6 +33,7 @@ struct VofSummary {
   PetscReal boundViolation = 0;  // max(-alpha, alpha - 1, 0) seen after any sweep since SetUp (no clipping is done)
   PetscReal interfaceCells = 0;  // cells with 1e-12 < alpha < 1 - 1e-12 (as a real: a sum over ranks)
   PetscReal heightNormals = 0;   // fraction of interface cells of the last step whose normal came from heights
+  PetscReal missingCurvature = 0;  // interface cells that got no curvature in the last SurfaceTension
 };
 
 class Vof {
@@ -63,6 +64,13 @@ public:
   // flow's -flow_density, -flow_viscosity), then flow.PropertiesChanged().
   PetscErrorCode UpdateProperties(Flow &flow) const;
   PetscReal Density() const { return density_; }
+  // Surface tension (-vof_surface_tension sigma > 0; VofSurfaceTension.cpp): height-function
+  // curvature and the balanced face force sigma kappa_f (alpha_R - alpha_L)/h into flow.FaceForce().
+  PetscErrorCode SurfaceTension(Flow &flow);
+  PetscReal      SurfaceTensionCoefficient() const { return sigma_; }
+  // The capillary time-step limit sqrt(rho_mean h^3 / (2 pi sigma)) (PETSC_MAX_REAL without sigma).
+  PetscReal CapillaryTimeStep(PetscReal otherDensity) const;
+  Vec       Curvature() const { return kappa_; }  // 1/m, 1e300 where none (after SurfaceTension)
   Vec Fraction() const { return alpha_; }  // global vector of FractionDM()
   DM  FractionDM() const { return da_; }
   VofNormals Normals() const { return normals_; }
@@ -78,6 +86,7 @@ private:
   DM                   da_   = nullptr;
   Vec                  alpha_ = nullptr, alphaLocal_ = nullptr;
   Vec                  uLocal_[3] = {nullptr, nullptr, nullptr};
+  Vec                  kappa_ = nullptr, kappaLocal_ = nullptr;  // SurfaceTension
   std::vector<char>    fullAtStart_;  // c_i of the current step, owned cells
   std::vector<double>  flux_;         // face fluxes of one sweep
 
@@ -87,6 +96,9 @@ private:
   PetscInt    passes_  = 1;      // -vof_centred_columns: 2 adds 3-cell centred columns before Youngs (experimental)
   PetscReal   tiny_    = 1e-12;  // alpha below tiny (above 1 - tiny) is fluxed as uniform: no plane is fitted to round-off
   PetscReal   density_ = 1000, viscosity_ = 1e-3;  // phase 1 (alpha = 1)
+  PetscReal   sigma_ = 0;                         // surface tension coefficient, N/m
+  PetscBool   advect_ = PETSC_TRUE;               // -vof_advect 0: a frozen interface (V3)
+  PetscReal   missingCurvature_ = 0;
   std::vector<PetscReal> boxes_, spheres_;        // initial shapes of phase 1
   PetscInt    samples_ = 8;                       // per direction and cell, for the initial fraction
   // state
