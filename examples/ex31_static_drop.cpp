@@ -4,7 +4,8 @@ static const char help[] = "Verification V3 (VERIFICATION.md): Popinet's (2009) 
                            "the same in both). Runs -viscous_times of the viscous time D^2 rho / mu (default 1) and prints the spurious capillary\n"
                            "number Ca = max|u| mu / sigma ten times on the way, and at the end the pressure jump (inside: cells full within R/2 of\n"
                            "the centre; outside: empty cells beyond 1.5 R) against sigma / R. Must reach: Laplace jump within 1 percent; Ca at\n"
-                           "the end below -ca_max (default 1e-10 at ratio 1, 1e-8 otherwise) and, at ratios above 1, below its value at half time.\n\n";
+                           "the end below -ca_max (default 1e-10 at ratio 1, 1e-8 otherwise) after one viscous time and, at ratios above 1, below its value\n"
+                           "at half time; a run shorter than one viscous time checks only that Ca falls (end below half time).\n\n";
 
 #include "vofdem/core/Runtime.hpp"
 #include "vofdem/core/Simulation.hpp"
@@ -171,11 +172,17 @@ PetscErrorCode Run() {
   vofdem::VofSummary vs;
   PetscCall(sim.Interface()->Summarize(&vs));
   const PetscReal exact = sigma / R, jerr = std::fabs(jump - exact) / exact;
-  const bool      jumpOk = jerr <= 0.01, caOk = ca < caMax, falling = ratio == 1 || times < 1 || ca < caHalf;
+  // VERIFICATION.md V3 judges Ca after one viscous time; a shorter run (the quick tier) must show it
+  // falling (end below half time) and says that the threshold was not judged.
+  const bool full = times >= 1, jumpOk = jerr <= 0.01, caOk = !full || ca < caMax, falling = (full && ratio == 1) || ca < caHalf;
   PetscCall(PetscPrintf(PETSC_COMM_WORLD, "V3 Laplace jump %.6f against sigma/R = %g: error %.3f %% (tolerance 1 %%) %s\n", (double)jump, (double)exact, (double)(100 * jerr),
                         jumpOk ? "ok" : "FAIL"));
-  PetscCall(PetscPrintf(PETSC_COMM_WORLD, "V3 spurious Ca %.3e at t/t_nu = %.2f (tolerance %.0e) %s%s; cells without curvature %d\n", (double)ca, (double)(sim.Time() / tnu), (double)caMax,
-                        caOk ? "ok" : "FAIL", ratio == 1 || times < 1 ? "" : falling ? ", falling ok" : ", not falling FAIL", (int)vs.missingCurvature));
+  if (full)
+    PetscCall(PetscPrintf(PETSC_COMM_WORLD, "V3 spurious Ca %.3e at t/t_nu = %.2f (tolerance %.0e) %s%s; cells without curvature %d\n", (double)ca, (double)(sim.Time() / tnu), (double)caMax,
+                          caOk ? "ok" : "FAIL", ratio == 1 ? "" : falling ? ", falling ok" : ", not falling FAIL", (int)vs.missingCurvature));
+  else
+    PetscCall(PetscPrintf(PETSC_COMM_WORLD, "V3 spurious Ca %.3e at t/t_nu = %.2f, %s (%.3e at half time) %s; the %.0e threshold is judged after one viscous time; cells without curvature %d\n",
+                          (double)ca, (double)(sim.Time() / tnu), falling ? "falling" : "not falling", (double)caHalf, falling ? "ok" : "FAIL", (double)caMax, (int)vs.missingCurvature));
   PetscCall(sim.Destroy());
   PetscFunctionReturn(jumpOk && caOk && falling ? 0 : PETSC_ERR_NOT_CONVERGED);
 }
@@ -186,3 +193,24 @@ int main(int argc, char **argv) {
   if (int code = vofdem::Initialize(&argc, &argv, help)) return code;
   return vofdem::Finalize(Run());
 }
+
+/*TEST
+  rtol: 1e-6
+  test:
+    suffix: 1
+    nsize: 1
+    args: -viscous_times 0.02
+  test:
+    suffix: 2
+    nsize: 2
+    args: -viscous_times 0.02
+    output_file: output/ex31_static_drop_1.out
+  test:
+    suffix: ratio1000
+    nsize: 2
+    args: -ratio 1000 -viscous_times 0.01
+  test:
+    suffix: ratio8000
+    nsize: 2
+    args: -ratio 8000 -viscous_times 0.005
+TEST*/

@@ -80,6 +80,7 @@ PetscErrorCode Simulation::SetUp() {
     PetscCall(vof_->SetUp(flow_->Staggered()));
     PetscCall(vof_->SetInitialShapes());
     PetscCall(vof_->UpdateProperties(*flow_));
+    flow_->AddOutputField(vof_->Fraction());  // alpha in flow_<step>.h5 / flow.xmf (-flow_output_every)
     VofSummary vs;
     PetscCall(vof_->Summarize(&vs));
     vofVolume0_ = vs.volume;

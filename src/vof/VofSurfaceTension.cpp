@@ -91,7 +91,7 @@ double HeightCurvature(const Cells &c, const PetscInt q[3], const PetscReal h[3]
     // The interface must cross the central column within a cell of q (Popinet 2009: a cell takes the
     // curvature of heights that put the interface in it; a neighbour's half cell is allowed, so that a
     // face between a full and an empty cell gets one). H counts cells from the fluid end, q spans [3, 4].
-    if (!ok || std::fabs(H[1][1]) > 1) continue;
+    if (!ok || std::fabs(H[1][1]) > 1.5) continue;
     const double hd = h[d], ha = h[t1], hb = h[t2];
     const double Ha = (H[2][1] - H[0][1]) * hd / (2 * ha), Hb = (H[1][2] - H[1][0]) * hd / (2 * hb);
     const double Haa = (H[2][1] - 2 * H[1][1] + H[0][1]) * hd / (ha * ha), Hbb = (H[1][2] - 2 * H[1][1] + H[1][0]) * hd / (hb * hb);

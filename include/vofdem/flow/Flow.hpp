@@ -85,6 +85,9 @@ public:
   // ParaView output (-flow_output_every, FlowOutput.cpp): the folder (-output_dir), then at each step.
   PetscErrorCode SetOutputDir(const std::string &dir);
   PetscErrorCode WriteOutput(PetscInt step, PetscReal time);  // collective; writes when step is a multiple
+  // Another module's cell field (a global vector with the cells' layout, named: the dataset name) to
+  // write with the flow's fields (e.g. the VOF fraction); not owned. Register before the first output.
+  void AddOutputField(Vec cellField) { outputExtra_.push_back(cellField); }
   // Component d interpolated to point x (collective; every rank gets the value).
   PetscErrorCode SampleVelocity(const PetscReal x[3], PetscReal u[3]) const;
 
@@ -114,6 +117,7 @@ private:
   PetscInt    outputEvery_ = 0;  // -flow_output_every
   std::string outputDir_;
   std::vector<XdmfEntry> outputEntries_;
+  std::vector<Vec>       outputExtra_;  // AddOutputField
   XdmfEntry OutputEntry(PetscInt step, PetscReal time) const;  // the index entry of flow_<step>.h5 (FlowOutput.cpp)
   DM          velocityDM_ = nullptr;  // cell layout with 3 components, for the output
   Vec         cellVelocity_ = nullptr;
