@@ -39,7 +39,8 @@ vofdem_bad_input(malformed_yaml     "malformed\\.yaml:4:[0-9]+: malformed YAML" 
 vofdem_bad_input(scene_not_mapping  "not-a-mapping\\.yaml:1:1: a scene must be a mapping" -options_file_yaml ${_bad}/not-a-mapping.yaml)
 vofdem_bad_input(typo_in_scene      "unknown or unused option -dem_restitusion"    -options_file_yaml ${_bad}/typo.yaml)
 vofdem_bad_input(unknown_physics    "option -physics: unknown name 'magic'"        -physics dem,magic)
-vofdem_bad_input(physics_not_built  "option -physics: 'vof' is not available"      -physics flow,vof)
+vofdem_bad_input(physics_not_built  "option -physics: 'energy' is not available"   -physics flow,energy)
+vofdem_bad_input(vof_without_flow   "option -physics: 'vof' needs 'flow'"           -physics vof)
 vofdem_bad_input(physics_missing    "option -physics is missing"                   -max_steps 1)
 vofdem_bad_input(not_a_number       "option -dem_radius: 'abc' is not a number"    ${_dem} -dem_radius abc)
 vofdem_bad_input(not_an_integer     "option -max_steps: '2.5' is not an integer"   ${_dem} -max_steps 2.5)
@@ -102,3 +103,4 @@ include(VofdemFlowTests)  # the pressure solve (src/flow)
 include(VofdemCavityTests)  # F2 reference tables: the profile checker and the convergence-table helper
 include(VofdemCheckpointTests)  # checkpoint/restart (issue 5)
 include(VofdemGeometryTests)  # scripts/make-stl: blade, hopper, funnel meshes
+include(VofdemVofTests)  # the VOF module (issue 8)

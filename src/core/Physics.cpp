@@ -12,7 +12,7 @@ const std::vector<std::string> &KnownPhysics() {
 }
 
 const std::vector<std::string> &AvailablePhysics() {
-  static const std::vector<std::string> names = {"dem", "flow"};
+  static const std::vector<std::string> names = {"dem", "flow", "vof"};
   return names;
 }
 
@@ -36,7 +36,7 @@ PetscErrorCode MakePhysicsSet(MPI_Comm comm, const std::vector<std::string> &nam
   if (names.empty()) VofdemInputError(comm, "option -physics: name at least one module (known: dem, flow, vof, energy)");
   for (const auto &n : names) {
     if (std::find(available.begin(), available.end(), n) == available.end())
-      VofdemInputError(comm, "option -physics: '%s' is not available in this build of vofdem yet (available: dem, flow)", n.c_str());
+      VofdemInputError(comm, "option -physics: '%s' is not available in this build of vofdem yet (available: dem, flow, vof)", n.c_str());
     set->dem    = set->dem || n == "dem";
     set->flow   = set->flow || n == "flow";
     set->vof    = set->vof || n == "vof";

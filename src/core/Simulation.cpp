@@ -55,6 +55,11 @@ PetscErrorCode Simulation::SetFromOptions() {
     PetscCall(flow_->SetFromOptions(grid_));
     if (!physics_.flow) flow_.reset();
   }
+  if (physics_.vof || help) {
+    vof_ = std::make_unique<Vof>();
+    PetscCall(vof_->SetFromOptions(grid_));
+    if (!physics_.vof) vof_.reset();
+  }
   PetscFunctionReturn(0);
 }
 
@@ -66,6 +71,19 @@ PetscErrorCode Simulation::SetUp() {
     if (flowStage_ < 0) PetscCall(PetscLogStageRegister("Flow", &flowStage_));
     PetscCall(PetscLogStagePush(flowStage_));
     PetscCall(flow_->SetUp(gravity_));
+    PetscCall(PetscLogStagePop());
+  }
+  if (physics_.vof) {  // after the flow: alpha lives on the flow's cells and sets its density and viscosity
+    PetscCall(PetscLogStageGetId("VOF", &vofStage_));
+    if (vofStage_ < 0) PetscCall(PetscLogStageRegister("VOF", &vofStage_));
+    PetscCall(PetscLogStagePush(vofStage_));
+    PetscCall(vof_->SetUp(flow_->Staggered()));
+    PetscCall(vof_->SetInitialShapes());
+    PetscCall(vof_->UpdateProperties(*flow_));
+    flow_->AddOutputField(vof_->Fraction());  // alpha in flow_<step>.h5 / flow.xmf (-flow_output_every)
+    VofSummary vs;
+    PetscCall(vof_->Summarize(&vs));
+    vofVolume0_ = vs.volume;
     PetscCall(PetscLogStagePop());
   }
   // Every option has been read by now (the flow solvers read their KSP options, -flow_pressure_ksp_*
@@ -94,9 +112,10 @@ PetscErrorCode Simulation::SetUp() {
       if (!ec) csv_ = std::fopen(path.c_str(), append ? "a" : "w");
       ok = csv_ != nullptr;
       if (csv_ && !append)
-        std::fprintf(csv_, "step,time_s,dt_s,particles,kinetic_energy_J,rotational_energy_J,pair_contacts,coordination,wall_contacts,max_overlap_per_diameter,floor_force_z_N,inserted,deleted,wall_time_s%s%s%s\n",
+        std::fprintf(csv_, "step,time_s,dt_s,particles,kinetic_energy_J,rotational_energy_J,pair_contacts,coordination,wall_contacts,max_overlap_per_diameter,floor_force_z_N,inserted,deleted,wall_time_s%s%s%s%s\n",
                      physics_.dem ? dem_->WallLoadColumns().c_str() : "", physics_.dem ? dem_->MonitorHeader().c_str() : "",
-                     physics_.flow ? ",flow_kinetic_energy_J,flow_max_velocity_m_s,flow_max_divergence_1_s,flow_cfl,pressure_iterations,pressure_residual,pressure_pc_reused,viscous_iterations" : "");
+                     physics_.flow ? ",flow_kinetic_energy_J,flow_max_velocity_m_s,flow_max_divergence_1_s,flow_cfl,pressure_iterations,pressure_residual,pressure_pc_reused,viscous_iterations" : "",
+                     physics_.vof ? ",vof_volume_m3,vof_volume_relative_change,vof_bound_violation,vof_interface_cells" : "");
     }
     PetscCallMPI(MPI_Allreduce(&ok, &allOk, 1, MPI_INT, MPI_MIN, comm_));
     if (!allOk) VofdemInputError(comm_, "option -output_dir: cannot create '%s' or write monitor.csv in it", outputDir_.c_str());
@@ -121,6 +140,21 @@ PetscErrorCode Simulation::ChooseTimeStep() {
     if (f < limit) {
       limit        = f;
       dtLimitName_ = basis;
+    }
+  }
+  if (physics_.vof) {
+    PetscReal   f;
+    std::string basis;
+    Vec         u[3] = {flow_->Velocity(0), flow_->Velocity(1), flow_->Velocity(2)};
+    PetscCall(vof_->StableTimeStep(u, &f, &basis));
+    if (f < limit) {
+      limit        = f;
+      dtLimitName_ = basis;
+    }
+    const PetscReal cap = vof_->CapillaryTimeStep(flow_->ReferenceDensity());
+    if (cap < limit) {
+      limit        = cap;
+      dtLimitName_ = "capillary sqrt(rho_mean h^3/(2 pi sigma))";
     }
   }
   if (!(limit < PETSC_MAX_REAL) && step_ > 0) PetscFunctionReturn(0);  // came to rest: keep the step
@@ -154,9 +188,23 @@ PetscErrorCode Simulation::Step() {
     PetscCall(dem_->Step(dt));
     PetscCall(PetscLogStagePop());
   }
+  if (physics_.vof) {  // surface tension of the current interface, for the flow's predictor (F2)
+    PetscCall(PetscLogStagePush(vofStage_));
+    PetscCall(vof_->SurfaceTension(*flow_));
+    PetscCall(PetscLogStagePop());
+  }
   if (physics_.flow) {
     PetscCall(PetscLogStagePush(flowStage_));
     PetscCall(flow_->Step(time_, dt));
+    PetscCall(PetscLogStagePop());
+  }
+  if (physics_.vof) {
+    // The interface moves with the projected (divergence-free) velocity of the step just taken, then
+    // sets the density and viscosity of the next one (ARCHITECTURE.md, the coupled step, 4-5).
+    PetscCall(PetscLogStagePush(vofStage_));
+    Vec u[3] = {flow_->Velocity(0), flow_->Velocity(1), flow_->Velocity(2)};
+    PetscCall(vof_->Advect(u, dt));
+    PetscCall(vof_->UpdateProperties(*flow_));
     PetscCall(PetscLogStagePop());
   }
   time_ += dt;
@@ -212,6 +260,17 @@ PetscErrorCode Simulation::Monitor() {
                   (int)fs.pressureIterations, (double)fs.pressureResidual, (int)fs.preconditionerReused, (int)fs.viscousIterations);
     extraCsv += fb;
   }
+  if (physics_.vof) {
+    VofSummary vs;
+    PetscCall(vof_->Summarize(&vs));
+    char vb[300];
+    const PetscReal volErr = vofVolume0_ > 0 ? (vs.volume - vofVolume0_) / vofVolume0_ : 0;
+    std::snprintf(vb, sizeof vb, "  | vof volume %.10e m^3  rel. change %.2e  bounds %.1e  interface cells %d", (double)vs.volume, (double)volErr, (double)vs.boundViolation,
+                  (int)vs.interfaceCells);
+    flowScreen += vb;
+    std::snprintf(vb, sizeof vb, ",%.16e,%.6e,%.6e,%d", (double)vs.volume, (double)volErr, (double)vs.boundViolation, (int)vs.interfaceCells);
+    extraCsv += vb;
+  }
   std::string line;
   char        buf[512];
   std::snprintf(buf, sizeof buf, "step %6d  t %.6e s  dt %.3e s", (int)step_, (double)time_, (double)dt_);
@@ -260,6 +319,7 @@ PetscErrorCode Simulation::View(PetscViewer viewer) const {
   PetscCall(grid_.View(viewer));
   if (dem_) PetscCall(dem_->View(viewer));
   if (flow_) PetscCall(flow_->View(viewer));
+  if (vof_) PetscCall(vof_->View(viewer));
   if (physics_.dem) PetscCall(PetscViewerASCIIPrintf(viewer, "time step limits: dem %g s\n", (double)dem_->StableTimeStep()));
   if (physics_.flow) {
     PetscReal   f;
@@ -282,6 +342,12 @@ PetscErrorCode Simulation::SaveState(PetscViewer viewer) {
   if (physics_.flow) {
     PetscCall(PetscViewerHDF5PushGroup(viewer, "flow"));
     PetscCall(flow_->Save(viewer));
+    PetscCall(PetscViewerHDF5PopGroup(viewer));
+  }
+  if (physics_.vof) {
+    PetscCall(PetscViewerHDF5PushGroup(viewer, "vof"));
+    PetscCall(vof_->Save(viewer));
+    PetscCall(PetscViewerHDF5WriteAttribute(viewer, "/vof", "vof_initial_volume", PETSC_REAL, &vofVolume0_));
     PetscCall(PetscViewerHDF5PopGroup(viewer));
   }
   PetscFunctionReturn(0);
@@ -321,6 +387,12 @@ PetscErrorCode Simulation::LoadState(PetscViewer viewer) {
     PetscCall(flow_->Load(viewer));
     PetscCall(PetscViewerHDF5PopGroup(viewer));
   }
+  if (physics_.vof) {  // after the flow: the flow's loaded density and viscosity already match alpha
+    PetscCall(PetscViewerHDF5PushGroup(viewer, "vof"));
+    PetscCall(vof_->Load(viewer));
+    PetscCall(PetscViewerHDF5ReadAttribute(viewer, "/vof", "vof_initial_volume", PETSC_REAL, nullptr, &vofVolume0_));
+    PetscCall(PetscViewerHDF5PopGroup(viewer));
+  }
   PetscFunctionReturn(0);
 }
 
@@ -331,6 +403,8 @@ PetscErrorCode Simulation::Destroy() {
   csv_ = nullptr;
   if (dem_) PetscCall(dem_->Destroy());
   dem_.reset();
+  if (vof_) PetscCall(vof_->Destroy());
+  vof_.reset();
   if (flow_) PetscCall(flow_->Destroy());
   flow_.reset();
   PetscCall(grid_.Destroy());

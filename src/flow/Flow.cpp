@@ -197,6 +197,16 @@ PetscErrorCode Flow::BoundaryPressure() {
   PetscFunctionReturn(0);
 }
 
+PetscErrorCode Flow::FaceForce(int d, Vec *f) {
+  PetscFunctionBeginUser;
+  if (!faceForce_[d]) {
+    PetscCall(VecDuplicate(u_[d], &faceForce_[d]));
+    PetscCall(VecSet(faceForce_[d], 0));
+  }
+  *f = faceForce_[d];
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode Flow::PropertiesChanged() {
   PetscFunctionBeginUser;
   propertiesDirty_ = true;
@@ -489,7 +499,7 @@ PetscErrorCode Flow::Load(PetscViewer viewer) {
 PetscErrorCode Flow::Destroy() {
   PetscFunctionBeginUser;
   for (int d = 0; d < 3; ++d)
-    for (Vec *v : {&u_[d], &uLocal_[d], &H_[d], &Hold_[d], &L_[d], &rhsFace_[d]}) PetscCall(VecDestroy(v));
+    for (Vec *v : {&u_[d], &uLocal_[d], &H_[d], &Hold_[d], &L_[d], &rhsFace_[d], &faceForce_[d]}) PetscCall(VecDestroy(v));
   for (Vec *v : {&rho_, &mu_, &eps_, &p_, &phi_, &beta_, &divRhs_, &epsLocal_, &betaLocal_, &emLocal_, &pLocal_, &phiLocal_}) PetscCall(VecDestroy(v));
   PetscCall(VecDestroy(&cellVelocity_));
   PetscCall(DMDestroy(&velocityDM_));

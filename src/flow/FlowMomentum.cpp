@@ -202,6 +202,8 @@ PetscErrorCode Flow::Predict(PetscReal t, PetscReal dt) {
     PetscCall(sg_.GetGlobal(d, haveOld_ ? Hold_[d] : H_[d], &Ho));
     PetscCall(sg_.GetGlobal(d, L_[d], &L));
     PetscCall(sg_.GetGlobal(d, rhsFace_[d], &R));
+    LocalField F;  // FaceForce(), when a module asked for it
+    if (faceForce_[d]) PetscCall(sg_.GetGlobal(d, faceForce_[d], &F));
     sg_.Owned(d, s, n);
     const PetscInt  last = sg_.Points(d, d) - 1, cs = beta.stride[d];  // cs: the cell below a face
     const bool      walls = !grid_->Periodic(d);
@@ -211,6 +213,7 @@ PetscErrorCode Flow::Predict(PetscReal t, PetscReal dt) {
         PetscScalar       *uq = &u.at(s[0], j, k), *Rq = &R.at(s[0], j, k);
         const PetscScalar *Hq = &H.at(s[0], j, k), *Hoq = &Ho.at(s[0], j, k), *Lq = &L.at(s[0], j, k);
         const PetscScalar *bq = &beta.at(s[0], j, k), *eq = &eps.at(s[0], j, k), *pq = &p.at(s[0], j, k);
+        const PetscScalar *Fq = faceForce_[d] ? &F.at(s[0], j, k) : nullptr;
         const PetscInt     qd = d == 1 ? j : k;  // the face index along d when d is not x
         const bool         rowOnWall = walls && d != 0 && (qd == 0 || qd == last);
         for (PetscInt i = 0; i < n[0]; ++i) {
@@ -223,6 +226,7 @@ PetscErrorCode Flow::Predict(PetscReal t, PetscReal dt) {
           const PetscReal invRho = bF / eF, epsRho = eF * eF / bF;
           PetscReal       acc = c1 * PetscRealPart(Hq[i]) + c0 * PetscRealPart(Hoq[i]) + gravity_[d];
           acc -= invRho * PetscRealPart(pq[i] - pq[i - cs]) / h[d];
+          if (Fq) acc += invRho * PetscRealPart(Fq[i]);  // balanced with the pressure gradient
           if (forcing_) {
             const PetscInt q[3] = {s[0] + i, j, k};
             PetscReal      x[3];
@@ -238,6 +242,7 @@ PetscErrorCode Flow::Predict(PetscReal t, PetscReal dt) {
           } else Rq[i] = uq[i] + dt * acc;
         }
       }
+    if (faceForce_[d]) PetscCall(sg_.RestoreGlobal(d, faceForce_[d], &F));
     PetscCall(sg_.RestoreGlobal(d, rhsFace_[d], &R));
     PetscCall(sg_.RestoreGlobal(d, L_[d], &L));
     PetscCall(sg_.RestoreGlobal(d, haveOld_ ? Hold_[d] : H_[d], &Ho));

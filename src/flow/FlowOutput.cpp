@@ -34,6 +34,11 @@ XdmfEntry Flow::OutputEntry(PetscInt step, PetscReal time) const {
   }
   e.attributes = {{"velocity", "/velocity", 3, true}, {"pressure", "/flow_pressure", 1, true}, {"density", "/flow_density", 1, true}};
   if (solid_.Any()) e.attributes.push_back({"solid", "/flow_solid", 1, true});
+  for (Vec v : outputExtra_) {
+    const char *name = nullptr;
+    PetscObjectGetName((PetscObject)v, &name);
+    e.attributes.push_back({name, std::string("/") + name, 1, true});
+  }
   return e;
 }
 
@@ -76,6 +81,7 @@ PetscErrorCode Flow::WriteOutput(PetscInt step, PetscReal time) {
   PetscCall(VecView(p_, viewer));
   PetscCall(VecView(rho_, viewer));
   if (solid_.Any()) PetscCall(VecView(solid_.Cells(), viewer));
+  for (Vec x : outputExtra_) PetscCall(VecView(x, viewer));
   PetscCall(PetscViewerDestroy(&viewer));
 
   outputEntries_.push_back(e);

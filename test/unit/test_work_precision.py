@@ -48,3 +48,22 @@ class CasesTest(unittest.TestCase):
 
 if __name__ == "__main__":
     unittest.main()
+
+
+# ex28 -cells_list 32,64 -show_time, as printed (two lines per grid)
+V1_OUT = """V1 single vortex, T = 8., velocity-adapted time step
+grid 32^2: steps 328  shape error 5.2264e-02 (Basilisk 7.0e-02, OpenFOAM 7.8e-02; ratio to Basilisk 0.75 ok)
+  volume error <= 1e-12 ok, bound violation <= 1e-12 ok, height-function normals 89 %  volume error 1.77e-15 bound 4.44e-16  wall 0.571 s
+grid 64^2: steps 656  shape error 9.7189e-03 (Basilisk 1.5e-02, OpenFOAM 1.5e-02; ratio to Basilisk 0.65 ok)  order 2.43
+  volume error <= 1e-12 ok, bound violation <= 1e-12 ok, height-function normals 81 %  volume error 4.91e-15 bound 4.44e-16  wall 3.451 s
+V1 ok
+"""
+
+
+class V1ParseTest(unittest.TestCase):
+    def test_reads_the_grid_asked_for(self):
+        self.assertEqual(wp.v1_parse(V1_OUT, 64), {"steps": 656, "error": 9.7189e-03, "wall": 3.451})
+        self.assertEqual(wp.v1_parse(V1_OUT, 32), {"steps": 328, "error": 5.2264e-02, "wall": 0.571})
+
+    def test_without_time_is_none(self):
+        self.assertIsNone(wp.v1_parse(V1_OUT.replace("  wall 3.451 s", ""), 64))

@@ -8,6 +8,7 @@
 #include "vofdem/dem/Dem.hpp"
 #include "vofdem/flow/Flow.hpp"
 #include "vofdem/grid/Grid.hpp"
+#include "vofdem/vof/Vof.hpp"
 
 #include <petsclog.h>
 
@@ -24,10 +25,13 @@ public:
   PetscErrorCode SetUp();          // unused-option check, then modules and the time step
   PetscErrorCode Run();            // steps until -max_steps or -final_time
   PetscErrorCode Step();           // one coupled step of size Dt()
+  // The time step Run() takes next (the modules' stable limits, or -dt): call before Step() to step
+  // as Run() does.
+  PetscErrorCode ChooseTimeStep();
   PetscErrorCode View(PetscViewer viewer) const;  // the start-up banner
   PetscErrorCode Destroy();
   // Collective, HDF5 viewer: the clock and the time-step controller's state (root attributes
-  // "simulation_*"), then every module's Save/Load (groups "dem", "flow"). LoadState after SetUp()
+  // "simulation_*"), then every module's Save/Load (groups "dem", "flow", "vof"). LoadState after SetUp()
   // with the saving run's options (Checkpoint::Restore checks them).
   PetscErrorCode SaveState(PetscViewer viewer);
   PetscErrorCode LoadState(PetscViewer viewer);
@@ -40,10 +44,10 @@ public:
   const PhysicsSet &Physics() const { return physics_; }
   Dem       *Particles() { return dem_.get(); }
   Flow      *Fluid() { return flow_.get(); }
+  Vof       *Interface() { return vof_.get(); }
   const Grid &GetGrid() const { return grid_; }
 
 private:
-  PetscErrorCode ChooseTimeStep();
   PetscErrorCode Monitor();
 
   MPI_Comm   comm_ = MPI_COMM_NULL;
@@ -51,6 +55,8 @@ private:
   Grid       grid_;
   std::unique_ptr<Dem> dem_;
   std::unique_ptr<Flow> flow_;
+  std::unique_ptr<Vof>  vof_;
+  PetscReal  vofVolume0_ = 0;  // phase-1 volume at the start (monitor: volume error)
   Checkpoint checkpoint_;
 
   PetscReal time_ = 0, dt_ = 0, dtUser_ = 0, finalTime_ = PETSC_MAX_REAL;
@@ -62,7 +68,7 @@ private:
   std::string dtLimitName_;
   FILE     *csv_ = nullptr;
   PetscLogDouble wallStart_ = 0;
-  PetscLogStage  demStage_  = -1, flowStage_ = -1;
+  PetscLogStage  demStage_  = -1, flowStage_ = -1, vofStage_ = -1;
 };
 
 }  // namespace vofdem

@@ -64,6 +64,12 @@ public:
   Vec FluidFraction() const { return eps_; }
   PetscErrorCode PropertiesChanged();
   void SetForcing(Forcing f, void *ctx) { forcing_ = f; forcingCtx_ = ctx; }
+  // A force per unit volume at the faces (N/m^3; for surface tension, PHYSICS.md F2), global vectors of
+  // Staggered().Face(d), created on the first call (zero) and kept by Flow. Predict adds it divided by
+  // the same face density as the pressure gradient, (1/rho)_f f_d, so that a force that is a discrete
+  // gradient on the pressure's stencil (a balanced-force surface tension) is cancelled exactly by the
+  // pressure. The caller fills it before each Step; it is not part of Save (recomputed from the state).
+  PetscErrorCode FaceForce(int d, Vec *f);
   // Makes the velocity field satisfy the boundary conditions and div(eps U) = 0 (an initial projection).
   PetscErrorCode ProjectInitialVelocity();
   // Sets the pressure to the one that balances gravity (done by the first Step unless Load came first).
@@ -80,6 +86,9 @@ public:
   // ParaView output (-flow_output_every, FlowOutput.cpp): the folder (-output_dir), then at each step.
   PetscErrorCode SetOutputDir(const std::string &dir);
   PetscErrorCode WriteOutput(PetscInt step, PetscReal time);  // collective; writes when step is a multiple
+  // Another module's cell field (a global vector with the cells' layout, named: the dataset name) to
+  // write with the flow's fields (e.g. the VOF fraction); not owned. Register before the first output.
+  void AddOutputField(Vec cellField) { outputExtra_.push_back(cellField); }
   // Component d interpolated to point x (collective; every rank gets the value).
   PetscErrorCode SampleVelocity(const PetscReal x[3], PetscReal u[3]) const;
 
@@ -110,6 +119,7 @@ private:
   PetscInt    outputEvery_ = 0;  // -flow_output_every
   std::string outputDir_;
   std::vector<XdmfEntry> outputEntries_;
+  std::vector<Vec>       outputExtra_;  // AddOutputField
   XdmfEntry OutputEntry(PetscInt step, PetscReal time) const;  // the index entry of flow_<step>.h5 (FlowOutput.cpp)
   DM          velocityDM_ = nullptr;  // cell layout with 3 components, for the output
   Vec         cellVelocity_ = nullptr;
@@ -127,6 +137,7 @@ private:
   PetscBool haveOld_ = PETSC_FALSE;
   bool      pressureReady_ = false;  // InitialPressure done, or the pressure loaded
   Forcing   forcing_ = nullptr;
+  Vec       faceForce_[3] = {nullptr, nullptr, nullptr};  // FaceForce(); null unless asked for
   void     *forcingCtx_ = nullptr;
   // last step, for the monitor
   FlowSummary last_;

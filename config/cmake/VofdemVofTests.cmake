@@ -1,0 +1,19 @@
+# The VOF module (included by VofdemTests.cmake). Its examples (ex28 V1, ex29 V2) are example tests;
+# here: the two-phase scenes through the program.
+
+# V3 still tank at density ratios 1000 and 8000 on 1 and 2 ranks, 1000 steps: max|u| below 1e-12 of
+# sqrt(g H), volume and bounds to 1e-12.
+foreach(ratio 1000 8000)
+  foreach(ranks 1 2)
+    add_test(NAME vof/v3_still_tank_${ratio}_${ranks}
+             COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/test/vof/still_tank.sh $<TARGET_FILE:vofdem_app> ${ranks} ${CMAKE_CURRENT_SOURCE_DIR}/config/scenes/still-tank.yaml
+                     -vof_density ${ratio})
+    set_tests_properties(vof/v3_still_tank_${ratio}_${ranks} PROPERTIES LABELS "quick;vof" PROCESSORS ${ranks} TIMEOUT 600
+                         ENVIRONMENT "OMPI_ALLOW_RUN_AS_ROOT=1;OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1;OMP_NUM_THREADS=1")
+  endforeach()
+endforeach()
+
+set(_vof -physics flow,vof -grid_cells 8,8,8 -max_steps 1)
+vofdem_bad_input(vof_boxes_count   "option -vof_boxes: give 6 numbers per box" ${_vof} -vof_boxes 0,0,0,1,1)
+vofdem_bad_input(vof_normals       "option -vof_normals: unknown name 'elvira'" ${_vof} -vof_normals elvira)
+vofdem_bad_input(vof_cfl           "option -vof_cfl: 0.6 is out of range" ${_vof} -vof_cfl 0.6)

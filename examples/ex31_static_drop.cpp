@@ -1,0 +1,216 @@
+static const char help[] = "Verification V3 (VERIFICATION.md): Popinet's (2009) static drop through the program's step (-physics flow,vof). A drop\n"
+                           "(a cylinder: quasi-2-D, 2 cells in z) of diameter D = 0.4 in the unit box, sigma = 1, Laplace number La = rho sigma D /\n"
+                           "mu^2 = 12000 (-laplace), -resolution N cells across the box (25.6 cells per D at 64), -ratio rho_drop / rho_gas (mu\n"
+                           "the same in both). Runs -viscous_times of the viscous time D^2 rho / mu (default 1) and prints the spurious capillary\n"
+                           "number Ca = max|u| mu / sigma ten times on the way, and at the end the pressure jump (inside: cells full within R/2 of\n"
+                           "the centre; outside: empty cells beyond 1.5 R) against sigma / R. Must reach: Laplace jump within 1 percent; Ca at\n"
+                           "the end below -ca_max (default 1e-10 at ratio 1, 1e-8 otherwise) after one viscous time and, at ratios above 1, below its value\n"
+                           "at half time; a run shorter than one viscous time checks only that Ca falls (end below half time).\n\n";
+
+#include "vofdem/core/Runtime.hpp"
+#include "vofdem/core/Simulation.hpp"
+
+#include <cmath>
+#include <string>
+
+namespace {
+
+PetscErrorCode Default(const char *name, const std::string &value) {
+  PetscBool set;
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscOptionsHasName(nullptr, nullptr, name, &set));
+  if (!set) PetscCall(PetscOptionsSetValue(nullptr, name, value.c_str()));
+  PetscFunctionReturn(0);
+}
+
+std::string Str(PetscReal v) {
+  char b[64];
+  std::snprintf(b, sizeof b, "%.17g", (double)v);
+  return b;
+}
+
+// Mean pressure inside (full cells within R/2 of the centre) and outside (empty cells beyond 1.5 R).
+PetscErrorCode PressureJump(vofdem::Simulation &sim, PetscReal R, PetscReal *jump) {
+  PetscScalar ***a, ***p;
+  PetscInt       s[3], n[3];
+  PetscReal      loc[4] = {0, 0, 0, 0}, glob[4];
+
+  PetscFunctionBeginUser;
+  vofdem::Vof  *vof  = sim.Interface();
+  vofdem::Flow *flow = sim.Fluid();
+  const PetscReal *h = sim.GetGrid().Spacing();
+  PetscCall(DMDAGetCorners(vof->FractionDM(), &s[0], &s[1], &s[2], &n[0], &n[1], &n[2]));
+  PetscCall(DMDAVecGetArray(vof->FractionDM(), vof->Fraction(), &a));
+  PetscCall(DMDAVecGetArray(flow->Staggered().Cells(), flow->Pressure(), &p));
+  for (PetscInt k = s[2]; k < s[2] + n[2]; ++k)
+    for (PetscInt j = s[1]; j < s[1] + n[1]; ++j)
+      for (PetscInt i = s[0]; i < s[0] + n[0]; ++i) {
+        const PetscReal r = std::hypot((i + 0.5) * h[0] - 0.5, (j + 0.5) * h[1] - 0.5), v = PetscRealPart(a[k][j][i]);
+        if (r < 0.5 * R && v >= 1 - 1e-12) loc[0] += PetscRealPart(p[k][j][i]), loc[1] += 1;
+        if (r > 1.5 * R && v <= 1e-12) loc[2] += PetscRealPart(p[k][j][i]), loc[3] += 1;
+      }
+  PetscCall(DMDAVecRestoreArray(flow->Staggered().Cells(), flow->Pressure(), &p));
+  PetscCall(DMDAVecRestoreArray(vof->FractionDM(), vof->Fraction(), &a));
+  PetscCallMPI(MPI_Allreduce(loc, glob, 4, MPIU_REAL, MPIU_SUM, PETSC_COMM_WORLD));
+  *jump = glob[0] / glob[1] - glob[2] / glob[3];
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode Run() {
+  vofdem::Simulation sim;
+  PetscInt           N = 64;
+  PetscReal          La = 12000, ratio = 1, times = 1, caMax = 0;
+  const PetscReal    D = 0.4, R = 0.5 * D, sigma = 1;
+
+  PetscFunctionBeginUser;
+  PetscBool show = PETSC_FALSE;
+  PetscCall(PetscOptionsGetBool(nullptr, nullptr, "-show_drop", &show, nullptr));
+  PetscCall(PetscOptionsGetInt(nullptr, nullptr, "-resolution", &N, nullptr));
+  PetscCall(PetscOptionsGetReal(nullptr, nullptr, "-laplace", &La, nullptr));
+  PetscCall(PetscOptionsGetReal(nullptr, nullptr, "-ratio", &ratio, nullptr));
+  PetscCall(PetscOptionsGetReal(nullptr, nullptr, "-viscous_times", &times, nullptr));
+  caMax = ratio == 1 ? 1e-10 : 1e-8;
+  PetscCall(PetscOptionsGetReal(nullptr, nullptr, "-ca_max", &caMax, nullptr));
+  const PetscReal rho = ratio, mu = std::sqrt(rho * sigma * D / La), tnu = D * D * rho / mu, h = 1.0 / N;
+  PetscCall(Default("-physics", "flow,vof"));
+  PetscCall(Default("-grid_cells", std::to_string(N) + "," + std::to_string(N) + ",2"));
+  PetscCall(Default("-grid_upper", "1,1," + Str(2 * h)));
+  PetscCall(Default("-gravity", "0,0,0"));
+  PetscCall(Default("-flow_density", "1"));
+  PetscCall(Default("-flow_viscosity", Str(mu)));
+  PetscCall(Default("-flow_pressure_pc", "boomeramg"));
+  PetscCall(Default("-flow_pressure_ksp_rtol", "1e-12"));
+  PetscCall(Default("-vof_density", Str(rho)));
+  PetscCall(Default("-vof_viscosity", Str(mu)));
+  PetscCall(Default("-vof_surface_tension", Str(sigma)));
+  PetscCall(Default("-vof_spheres", "0.5,0.5," + Str(h) + "," + Str(R)));
+  PetscCall(Default("-vof_init_samples", "32"));
+  PetscCall(Default("-max_steps", "100000000"));
+  PetscCall(Default("-monitor_every", "100000000"));
+  PetscCall(Default("-monitor_timing", "0"));
+  PetscCall(sim.Create(PETSC_COMM_WORLD));
+  PetscCall(sim.SetFromOptions());
+  PetscCall(sim.SetUp());
+  const PetscReal tEnd = times * tnu;
+  PetscCall(PetscPrintf(PETSC_COMM_WORLD, "V3 static drop: %d^2 cells (%.1f per diameter), La %g, density ratio %g, viscous time %.4g s, run to %.4g s\n", (int)N, (double)(D * N), (double)La,
+                        (double)ratio, (double)tnu, (double)tEnd));
+  if (show) {  // the curvature the first step uses
+    PetscCall(sim.Interface()->SurfaceTension(*sim.Fluid()));
+    const PetscScalar *k;
+    PetscInt           n;
+    PetscReal          lo = 1e300, hi = -1e300, sum = 0, cnt = 0;
+    PetscCall(VecGetLocalSize(sim.Interface()->Curvature(), &n));
+    PetscCall(VecGetArrayRead(sim.Interface()->Curvature(), &k));
+    for (PetscInt i = 0; i < n; ++i)
+      if (PetscRealPart(k[i]) < 1e299) lo = std::fmin(lo, PetscRealPart(k[i])), hi = std::fmax(hi, PetscRealPart(k[i])), sum += PetscRealPart(k[i]), cnt += 1;
+    PetscCall(VecRestoreArrayRead(sim.Interface()->Curvature(), &k));
+    PetscCall(PetscPrintf(PETSC_COMM_WORLD, "curvature: %d cells, min %g max %g mean %g (exact %g)\n", (int)cnt, (double)lo, (double)hi, (double)(sum / cnt), (double)(1 / R)));
+  }
+  vofdem::FlowSummary fs;
+  PetscReal           caHalf = 0, ca = 0;
+  int                 report = 1;
+  while (sim.Time() < tEnd * (1 - 1e-12)) {
+    PetscCall(sim.ChooseTimeStep());
+    PetscCall(sim.Step());
+    if (sim.Time() >= report * tEnd / 10 * (1 - 1e-12) || sim.Time() >= tEnd * (1 - 1e-12)) {
+      PetscCall(sim.Fluid()->Summarize(&fs));
+      ca = fs.maxSpeed * mu / sigma;
+      if (report == 5) caHalf = ca;
+      vofdem::VofSummary vs;
+      PetscReal          jump = 0;
+      PetscCall(sim.Interface()->Summarize(&vs));
+      PetscCall(PressureJump(sim, R, &jump));
+      PetscReal klo = 0, khi = 0;
+      if (sim.Interface()->Curvature()) {
+        Vec k = sim.Interface()->Curvature(), m;
+        PetscCall(VecDuplicate(k, &m));
+        PetscCall(VecCopy(k, m));
+        PetscCall(VecMax(m, nullptr, &khi));
+        PetscCall(VecScale(m, -1));
+        PetscInt at;
+        PetscCall(VecMax(m, &at, &klo));
+        klo = -klo;
+        if (show && klo < 4) {  // one rank: where, and alpha around it
+          PetscScalar ***a;
+          const PetscInt ci = at % N, cj = (at / N) % N;
+          PetscCall(PetscPrintf(PETSC_COMM_WORLD, "lowest curvature at cell %d,%d\n", (int)ci, (int)cj));
+          PetscCall(DMDAVecGetArray(sim.Interface()->FractionDM(), sim.Interface()->Fraction(), &a));
+          for (PetscInt j = cj + 4; j >= cj - 4; --j) {
+            std::string row;
+            for (PetscInt i = ci - 4; i <= ci + 4; ++i) {
+              char b[32];
+              std::snprintf(b, sizeof b, " %9.2e", (double)PetscRealPart(a[0][j][i]));
+              row += b;
+            }
+            PetscCall(PetscPrintf(PETSC_COMM_WORLD, "%s\n", row.c_str()));
+          }
+          PetscCall(DMDAVecRestoreArray(sim.Interface()->FractionDM(), sim.Interface()->Fraction(), &a));
+        }
+        PetscCall(VecDestroy(&m));
+      }
+      PetscCall(PetscPrintf(PETSC_COMM_WORLD, "  t/t_nu %.2f  step %d  Ca %.3e  pressure jump %.6f  drop area %.10f  curvature min %.4g\n", (double)(sim.Time() / tnu), (int)sim.StepNumber(), (double)ca, (double)jump,
+                            (double)(vs.volume / (2 * h)), (double)klo));
+      ++report;
+    }
+  }
+  PetscReal jump = 0;
+  PetscCall(PressureJump(sim, R, &jump));
+  if (show) {  // one rank: alpha of the first z layer as characters (. empty, # full, digits tenths)
+    PetscScalar ***a;
+    PetscCall(DMDAVecGetArray(sim.Interface()->FractionDM(), sim.Interface()->Fraction(), &a));
+    for (PetscInt j = N - 1; j >= 0; --j) {
+      std::string row;
+      for (PetscInt i = 0; i < N; ++i) {
+        const PetscReal v = PetscRealPart(a[0][j][i]);
+        row += v <= 1e-12 ? '.' : v >= 1 - 1e-12 ? '#' : (char)('0' + (int)(v * 10));
+      }
+      PetscCall(PetscPrintf(PETSC_COMM_WORLD, "%s\n", row.c_str()));
+    }
+    PetscCall(DMDAVecRestoreArray(sim.Interface()->FractionDM(), sim.Interface()->Fraction(), &a));
+  }
+  vofdem::VofSummary vs;
+  PetscCall(sim.Interface()->Summarize(&vs));
+  const PetscReal exact = sigma / R, jerr = std::fabs(jump - exact) / exact;
+  // VERIFICATION.md V3 judges Ca after one viscous time; a shorter run (the quick tier) must show it
+  // falling (end below half time) and says that the threshold was not judged.
+  const bool full = times >= 1, jumpOk = jerr <= 0.01, caOk = !full || ca < caMax, falling = (full && ratio == 1) || ca < caHalf;
+  PetscCall(PetscPrintf(PETSC_COMM_WORLD, "V3 Laplace jump %.6f against sigma/R = %g: error %.3f %% (tolerance 1 %%) %s\n", (double)jump, (double)exact, (double)(100 * jerr),
+                        jumpOk ? "ok" : "FAIL"));
+  if (full)
+    PetscCall(PetscPrintf(PETSC_COMM_WORLD, "V3 spurious Ca %.3e at t/t_nu = %.2f (tolerance %.0e) %s%s; cells without curvature %d\n", (double)ca, (double)(sim.Time() / tnu), (double)caMax,
+                          caOk ? "ok" : "FAIL", ratio == 1 ? "" : falling ? ", falling ok" : ", not falling FAIL", (int)vs.missingCurvature));
+  else
+    PetscCall(PetscPrintf(PETSC_COMM_WORLD, "V3 spurious Ca %.3e at t/t_nu = %.2f, %s (%.3e at half time) %s; the %.0e threshold is judged after one viscous time; cells without curvature %d\n",
+                          (double)ca, (double)(sim.Time() / tnu), falling ? "falling" : "not falling", (double)caHalf, falling ? "ok" : "FAIL", (double)caMax, (int)vs.missingCurvature));
+  PetscCall(sim.Destroy());
+  PetscFunctionReturn(jumpOk && caOk && falling ? 0 : PETSC_ERR_NOT_CONVERGED);
+}
+
+}  // namespace
+
+int main(int argc, char **argv) {
+  if (int code = vofdem::Initialize(&argc, &argv, help)) return code;
+  return vofdem::Finalize(Run());
+}
+
+/*TEST
+  rtol: 1e-6
+  test:
+    suffix: 1
+    nsize: 1
+    args: -viscous_times 0.02
+  test:
+    suffix: 2
+    nsize: 2
+    args: -viscous_times 0.02
+    output_file: output/ex31_static_drop_1.out
+  test:
+    suffix: ratio1000
+    nsize: 2
+    args: -ratio 1000 -viscous_times 0.01
+  test:
+    suffix: ratio8000
+    nsize: 2
+    args: -ratio 8000 -viscous_times 0.005
+TEST*/

@@ -1,0 +1,21 @@
+// PLIC geometry of one cell (PHYSICS.md F1b, F4): the fluid in a cell is the part of the unit cube
+// [0,1]^3 (the cell in cell units) where n.x <= alpha, n pointing out of the fluid. These functions
+// relate the plane constant alpha to the volume fraction the plane cuts off, exactly (piecewise cubic,
+// written in a form without cancellation when components of n are tiny or zero), and give the fluid
+// fraction of a sub-box (the volume a face flux carries in a split sweep).
+#pragma once
+
+namespace vofdem {
+namespace plic {
+
+// Fluid fraction of the unit cube below the plane n.x = alpha (any signs of n; n = 0 gives 0 or 1).
+double Volume(const double n[3], double alpha);
+// The plane constant alpha with Volume(n, alpha) = v, v in [0, 1] (n != 0); Newton with bisection
+// safeguard, converged to round-off.
+double Alpha(const double n[3], double v);
+// Fluid fraction of the box [lo, hi] (inside the unit cube) under the plane n.x = alpha, relative to
+// the box's own volume.
+double BoxFraction(const double n[3], double alpha, const double lo[3], const double hi[3]);
+
+}  // namespace plic
+}  // namespace vofdem

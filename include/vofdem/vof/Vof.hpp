@@ -1,0 +1,110 @@
+// The interface module (VOF), switched on by -physics flow,vof; options under -vof_.
+//
+// alpha, the volume fraction of the heavy phase (metal), is a cell field (PHYSICS.md F1b) on a DMDA
+// with the cell grid's ownership ranges and a 4-wide ghost layer: a flux at a rank's first face needs
+// the reconstruction of the neighbour's cell, whose height-function normal reaches 3 cells further.
+//
+// Reconstruction (F4): PLIC, a plane n.x = c per cell (Plic.hpp), n from Youngs' gradient or from
+// height functions (-vof_normals), which fall back to Youngs where a column is not a clean transition.
+// Advection: direction-split geometric fluxes (Weymouth & Yue 2010, J. Comput. Phys. 229): in each
+// sweep along d
+//   alpha <- alpha - dt/h (F_{i+1/2} - F_{i-1/2}) + c_i dt/h (u_{i+1/2} - u_{i-1/2}),
+// F = u * (fluid fraction of the volume the face sweeps, cut by the upwind cell's plane), c_i = 1 where
+// alpha > 1/2 at the start of the step (else 0). The c-terms of the sweeps add up to c_i dt div(u) = 0,
+// so volume is conserved to round-off, and a full or empty cell stays exactly full or empty; with the
+// Courant number of each sweep <= 1/2 alpha stays in [0, 1] without clipping. The sweep order
+// alternates (x,y,z then z,y,x).
+#pragma once
+
+#include "vofdem/flow/StaggeredGrid.hpp"
+
+#include <string>
+#include <vector>
+
+namespace vofdem {
+
+class Flow;
+
+enum class VofNormals { Youngs, Height };
+
+struct VofSummary {
+  PetscReal volume = 0;          // m^3: sum alpha dV
+  PetscReal minAlpha = 0, maxAlpha = 0;  // now
+  PetscReal boundViolation = 0;  // max(-alpha, alpha - 1, 0) seen after any sweep since SetUp (no clipping is done)
+  PetscReal interfaceCells = 0;  // cells with 1e-12 < alpha < 1 - 1e-12 (as a real: a sum over ranks)
+  PetscReal heightNormals = 0;   // fraction of interface cells of the last step whose normal came from heights
+  PetscReal missingCurvature = 0;  // interface cells that got no curvature in the last SurfaceTension
+};
+
+class Vof {
+public:
+  // Is x inside the heavy phase? (Initial conditions: SetFraction samples it.) Negative: inside.
+  using Shape = PetscReal (*)(void *ctx, const PetscReal x[3]);
+
+  PetscErrorCode SetFromOptions(const Grid &grid);
+  PetscErrorCode SetUp(const StaggeredGrid &sg);
+  // Advances alpha from t to t + dt with the MAC face velocities u[d] (global vectors of sg.Face(d)).
+  PetscErrorCode Advect(Vec const u[3], PetscReal dt);
+  // Stable time step for the velocities u: each sweep's Courant number max|u_d| dt/h_d <= -vof_cfl.
+  PetscErrorCode StableTimeStep(Vec const u[3], PetscReal *dt, std::string *basis) const;
+  PetscErrorCode Summarize(VofSummary *s) const;  // collective
+  PetscErrorCode View(PetscViewer viewer) const;
+  // HDF5: alpha (natural ordering) and the scheme's state (sweep-order parity, bound violation so
+  // far, height-normal share): a continued run is bitwise the uninterrupted one.
+  PetscErrorCode Save(PetscViewer viewer) const;
+  PetscErrorCode Load(PetscViewer viewer);
+  PetscErrorCode Destroy();
+
+  // alpha from a shape function: the fraction of samples[d] points per direction (cell-centred
+  // sub-cells) where shape < 0; samples in a direction the shape does not depend on may be 1.
+  PetscErrorCode SetFraction(Shape shape, void *ctx, const PetscInt samples[3]);
+  // The scene's initial fraction: the heavy phase fills -vof_boxes and -vof_spheres.
+  PetscErrorCode SetInitialShapes();
+  // The flow's density and viscosity from alpha (phase 1: -vof_density, -vof_viscosity; phase 0: the
+  // flow's -flow_density, -flow_viscosity), then flow.PropertiesChanged().
+  PetscErrorCode UpdateProperties(Flow &flow) const;
+  PetscReal Density() const { return density_; }
+  // Surface tension (-vof_surface_tension sigma > 0; VofSurfaceTension.cpp): height-function
+  // curvature and the balanced face force sigma kappa_f (alpha_R - alpha_L)/h into flow.FaceForce().
+  PetscErrorCode SurfaceTension(Flow &flow);
+  PetscReal      SurfaceTensionCoefficient() const { return sigma_; }
+  // The capillary time-step limit sqrt(rho_mean h^3 / (2 pi sigma)) (PETSC_MAX_REAL without sigma).
+  PetscReal CapillaryTimeStep(PetscReal otherDensity) const;
+  Vec       Curvature() const { return kappa_; }  // 1/m, 1e300 where none (after SurfaceTension)
+  Vec Fraction() const { return alpha_; }  // global vector of FractionDM()
+  DM  FractionDM() const { return da_; }
+  VofNormals Normals() const { return normals_; }
+
+private:
+  PetscErrorCode FillGhosts();  // alpha_ -> alphaLocal_, boundary layers by zero gradient
+  PetscErrorCode Sweep(int d, Vec const uLocal[3], PetscReal dt, PetscReal *heightCells, PetscReal *interfaceCells);
+  // The PLIC plane of the cell at q in cell units (n, c); false for a full, empty or flat-field cell.
+  bool Reconstruct(const LocalField &a, const PetscInt q[3], double n[3], double *c, bool *fromHeights) const;
+
+  const Grid          *grid_ = nullptr;
+  const StaggeredGrid *sg_   = nullptr;
+  DM                   da_   = nullptr;
+  Vec                  alpha_ = nullptr, alphaLocal_ = nullptr;
+  Vec                  uLocal_[3] = {nullptr, nullptr, nullptr};
+  Vec                  kappa_ = nullptr, kappaLocal_ = nullptr;  // SurfaceTension
+  std::vector<char>    fullAtStart_;  // c_i of the current step, owned cells
+  std::vector<double>  flux_;         // face fluxes of one sweep
+
+  // options
+  VofNormals  normals_ = VofNormals::Height;
+  PetscReal   cfl_     = 0.5;
+  PetscInt    passes_  = 1;      // -vof_centred_columns: 2 adds 3-cell centred columns before Youngs (experimental)
+  PetscReal   tiny_    = 1e-12;  // alpha below tiny (above 1 - tiny) is fluxed as uniform: no plane is fitted to round-off
+  PetscReal   density_ = 1000, viscosity_ = 1e-3;  // phase 1 (alpha = 1)
+  PetscReal   sigma_ = 0;                         // surface tension coefficient, N/m
+  PetscBool   advect_ = PETSC_TRUE;               // -vof_advect 0: a frozen interface (V3)
+  PetscReal   missingCurvature_ = 0;
+  std::vector<PetscReal> boxes_, spheres_;        // initial shapes of phase 1
+  PetscInt    samples_ = 8;                       // per direction and cell, for the initial fraction
+  // state
+  PetscInt    steps_ = 0;        // alternates the sweep order
+  PetscReal   boundViolation_ = 0;
+  PetscReal   heightShare_ = 0;
+};
+
+}  // namespace vofdem

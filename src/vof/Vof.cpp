@@ -1,0 +1,244 @@
+// Set-up, initial fraction, ghost layers, time-step limit and summaries of the VOF module (Vof.hpp).
+#include "vofdem/vof/Vof.hpp"
+
+#include "vofdem/core/Options.hpp"
+#include "vofdem/core/Runtime.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace vofdem {
+
+PetscErrorCode Vof::SetFromOptions(const Grid &grid) {
+  PetscFunctionBeginUser;
+  grid_ = &grid;
+  PetscOptionsBegin(grid.Comm(), "vof_", "VOF: volume fraction alpha of the heavy phase, PLIC, split geometric advection (PHYSICS.md F1b, F4)", "Vof");
+  {
+    OptionReader             opt(PetscOptionsObject);
+    std::vector<std::string> nm = {normals_ == VofNormals::Height ? "height" : "youngs"};
+    PetscCall(opt.NameList("-normals", "Interface normals: height (height functions, second order where a 7-cell column is a clean transition, else Youngs) or youngs (gradient of alpha)",
+                           {"height", "youngs"}, &nm));
+    if (nm.size() != 1) VofdemInputError(grid.Comm(), "option -vof_normals: give one method (height or youngs)");
+    normals_ = nm[0] == "height" ? VofNormals::Height : VofNormals::Youngs;
+    PetscCall(opt.Real("-density", "Density of phase 1 (alpha = 1, the heavy phase); phase 0 has -flow_density", "kg/m^3", &density_, RealRange::Positive()));
+    PetscCall(opt.Real("-viscosity", "Dynamic viscosity of phase 1; phase 0 has -flow_viscosity", "Pa s", &viscosity_, RealRange::Positive()));
+    PetscCall(opt.Real("-surface_tension", "Surface tension coefficient sigma (0: none); height-function curvature, balanced-force face force", "N/m", &sigma_, RealRange::NonNegative()));
+    PetscCall(opt.Bool("-advect", "Move the interface with the flow (0: a frozen interface, for verification)", &advect_));
+    PetscCall(opt.RealList("-boxes", "Phase 1 at the start: boxes x0,y0,z0,x1,y1,z1[,...]", "m", &boxes_, 6 * 64));
+    PetscCall(opt.RealList("-spheres", "Phase 1 at the start: spheres cx,cy,cz,r[,...]", "m", &spheres_, 4 * 64));
+    PetscCall(opt.Int("-init_samples", "Sample points per cell and direction for the initial fraction of -vof_boxes/-vof_spheres", &samples_, 1, 64));
+    if (boxes_.size() % 6) VofdemInputError(grid.Comm(), "option -vof_boxes: give 6 numbers per box (x0,y0,z0,x1,y1,z1), got %d", (int)boxes_.size());
+    if (spheres_.size() % 4) VofdemInputError(grid.Comm(), "option -vof_spheres: give 4 numbers per sphere (cx,cy,cz,r), got %d", (int)spheres_.size());
+    PetscBool cc = passes_ > 1 ? PETSC_TRUE : PETSC_FALSE;
+    PetscCall(opt.Bool("-centred_columns", "With -vof_normals height: where no 7-cell column is a clean transition, try centred 3-cell columns before Youngs", &cc));
+    passes_ = cc ? 2 : 1;
+    PetscCall(opt.Real("-cfl", "Courant number of each split sweep, max |u_d| dt / h_d; at most 1/2 keeps alpha in [0, 1] (Weymouth & Yue 2010)", "-", &cfl_,
+                       RealRange::LeftOpen(0, 0.5)));
+  }
+  PetscOptionsEnd();
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode Vof::SetUp(const StaggeredGrid &sg) {
+  const PetscInt *l[3];
+  PetscInt        m[3];
+
+  PetscFunctionBeginUser;
+  sg_ = &sg;
+  DM cells = sg.Cells();
+  PetscCall(DMDAGetInfo(cells, nullptr, nullptr, nullptr, nullptr, &m[0], &m[1], &m[2], nullptr, nullptr, nullptr, nullptr, nullptr, nullptr));
+  PetscCall(DMDAGetOwnershipRanges(cells, &l[0], &l[1], &l[2]));
+  const PetscInt width = 4;
+  for (int d = 0; d < 3; ++d)
+    for (PetscInt r = 0; r < m[d]; ++r)
+      if (grid_->Periodic(d) && l[d][r] < width)
+        VofdemInputError(grid_->Comm(), "option -grid_cells: the VOF module needs at least %d cells per rank along a periodic direction, but %c has %" PetscInt_FMT " cells on %" PetscInt_FMT " ranks",
+                         (int)width, "xyz"[d], grid_->Cells()[d], m[d]);
+  DMBoundaryType bt[3];
+  for (int d = 0; d < 3; ++d) bt[d] = grid_->Periodic(d) ? DM_BOUNDARY_PERIODIC : DM_BOUNDARY_GHOSTED;
+  const PetscInt *N = grid_->Cells();
+  PetscCall(DMDACreate3d(grid_->Comm(), bt[0], bt[1], bt[2], DMDA_STENCIL_BOX, N[0], N[1], N[2], m[0], m[1], m[2], 1, width, l[0], l[1], l[2], &da_));
+  PetscCall(DMSetUp(da_));
+  PetscCall(DMCreateGlobalVector(da_, &alpha_));
+  PetscCall(PetscObjectSetName((PetscObject)alpha_, "vof_alpha"));
+  PetscCall(DMCreateLocalVector(da_, &alphaLocal_));
+  for (int d = 0; d < 3; ++d) PetscCall(DMCreateLocalVector(sg.Face(d), &uLocal_[d]));
+  PetscInt s[3], n[3];
+  PetscCall(DMDAGetCorners(da_, &s[0], &s[1], &s[2], &n[0], &n[1], &n[2]));
+  fullAtStart_.assign((size_t)(n[0] * n[1] * n[2]), 0);
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode Vof::Destroy() {
+  PetscFunctionBeginUser;
+  for (int d = 0; d < 3; ++d) PetscCall(VecDestroy(&uLocal_[d]));
+  PetscCall(VecDestroy(&kappa_));
+  PetscCall(VecDestroy(&kappaLocal_));
+  PetscCall(VecDestroy(&alphaLocal_));
+  PetscCall(VecDestroy(&alpha_));
+  PetscCall(DMDestroy(&da_));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode Vof::SetFraction(Shape shape, void *ctx, const PetscInt samples[3]) {
+  PetscScalar ***a;
+  PetscInt       s[3], n[3];
+
+  PetscFunctionBeginUser;
+  const PetscReal *h = grid_->Spacing(), *lo = grid_->Lower();
+  PetscCall(DMDAGetCorners(da_, &s[0], &s[1], &s[2], &n[0], &n[1], &n[2]));
+  PetscCall(DMDAVecGetArray(da_, alpha_, &a));
+  const PetscReal total = (PetscReal)(samples[0] * samples[1] * samples[2]);
+  for (PetscInt k = s[2]; k < s[2] + n[2]; ++k)
+    for (PetscInt j = s[1]; j < s[1] + n[1]; ++j)
+      for (PetscInt i = s[0]; i < s[0] + n[0]; ++i) {
+        const PetscInt q[3] = {i, j, k};
+        PetscInt       inside = 0;
+        for (PetscInt c = 0; c < samples[2]; ++c)
+          for (PetscInt b = 0; b < samples[1]; ++b)
+            for (PetscInt e = 0; e < samples[0]; ++e) {
+              const PetscInt r[3] = {e, b, c};
+              PetscReal      x[3];
+              for (int d = 0; d < 3; ++d) x[d] = lo[d] + (q[d] + (r[d] + 0.5) / samples[d]) * h[d];
+              inside += shape(ctx, x) < 0;
+            }
+        a[k][j][i] = inside / total;
+      }
+  PetscCall(DMDAVecRestoreArray(da_, alpha_, &a));
+  PetscCall(FillGhosts());
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode Vof::FillGhosts() {
+  PetscScalar ***a;
+  PetscInt       gs[3], gm[3];
+
+  PetscFunctionBeginUser;
+  PetscCall(DMGlobalToLocal(da_, alpha_, INSERT_VALUES, alphaLocal_));
+  PetscCall(DMDAGetGhostCorners(da_, &gs[0], &gs[1], &gs[2], &gm[0], &gm[1], &gm[2]));
+  PetscCall(DMDAVecGetArray(da_, alphaLocal_, &a));
+  const PetscInt *N = grid_->Cells();
+  // Walls and open faces: zero normal gradient (a 90 degree contact angle); direction by direction
+  // over the whole ghosted extent, so edges and corners come out consistent.
+  for (int d = 0; d < 3; ++d) {
+    if (grid_->Periodic(d)) continue;
+    for (int side = 0; side < 2; ++side) {  // only the layers outside the box, where this rank has them
+      PetscInt lo[3] = {gs[0], gs[1], gs[2]}, hi[3] = {gs[0] + gm[0], gs[1] + gm[1], gs[2] + gm[2]};
+      if (side == 0) hi[d] = std::min(hi[d], (PetscInt)0);
+      else lo[d] = std::max(lo[d], N[d]);
+      for (PetscInt k = lo[2]; k < hi[2]; ++k)
+        for (PetscInt j = lo[1]; j < hi[1]; ++j)
+          for (PetscInt i = lo[0]; i < hi[0]; ++i) {
+            PetscInt q[3] = {i, j, k};
+            q[d]          = side == 0 ? 0 : N[d] - 1;
+            a[k][j][i]    = a[q[2]][q[1]][q[0]];
+          }
+    }
+  }
+  PetscCall(DMDAVecRestoreArray(da_, alphaLocal_, &a));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode Vof::StableTimeStep(Vec const u[3], PetscReal *dt, std::string *basis) const {
+  PetscReal rate = 0;
+
+  PetscFunctionBeginUser;
+  const PetscReal *h = grid_->Spacing();
+  for (int d = 0; d < 3; ++d) {
+    PetscReal mx;
+    PetscCall(VecNorm(u[d], NORM_INFINITY, &mx));
+    rate = std::max(rate, mx / h[d]);
+  }
+  *dt = rate > 0 ? cfl_ / rate : PETSC_MAX_REAL;
+  if (basis) *basis = "VOF sweep Courant number (-vof_cfl)";
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode Vof::Summarize(VofSummary *out) const {
+  const PetscScalar *a;
+  PetscInt           n;
+
+  PetscFunctionBeginUser;
+  const PetscReal *h = grid_->Spacing();
+  PetscCall(VecGetLocalSize(alpha_, &n));
+  PetscCall(VecGetArrayRead(alpha_, &a));
+  PetscReal sum = 0, mn = PETSC_MAX_REAL, mx = PETSC_MIN_REAL, cells = 0;
+  for (PetscInt i = 0; i < n; ++i) {
+    const PetscReal v = PetscRealPart(a[i]);
+    sum += v;
+    mn = std::min(mn, v);
+    mx = std::max(mx, v);
+    cells += v > tiny_ && v < 1 - tiny_;  // not round-off off full or empty
+  }
+  PetscCall(VecRestoreArrayRead(alpha_, &a));
+  PetscReal loc[2] = {sum, cells}, glob[2], lmax[3] = {-mn, mx, boundViolation_}, gmax[3];
+  PetscCallMPI(MPI_Allreduce(loc, glob, 2, MPIU_REAL, MPIU_SUM, grid_->Comm()));
+  PetscCallMPI(MPI_Allreduce(lmax, gmax, 3, MPIU_REAL, MPI_MAX, grid_->Comm()));
+  out->volume         = glob[0] * h[0] * h[1] * h[2];
+  out->interfaceCells = glob[1];
+  out->minAlpha       = -gmax[0];
+  out->maxAlpha       = gmax[1];
+  out->boundViolation = std::max({gmax[2], gmax[0], gmax[1] - 1, (PetscReal)0});
+  out->heightNormals  = heightShare_;  // already global (Advect)
+  out->missingCurvature = missingCurvature_;
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode Vof::Save(PetscViewer viewer) const {
+  Vec         scalars;
+  PetscMPIInt rank;
+
+  PetscFunctionBeginUser;
+  PetscCall(VecView(alpha_, viewer));
+  PetscReal bound;  // each rank holds its own; the file holds the largest
+  PetscCallMPI(MPI_Allreduce(&boundViolation_, &bound, 1, MPIU_REAL, MPI_MAX, grid_->Comm()));
+  PetscCallMPI(MPI_Comm_rank(grid_->Comm(), &rank));
+  PetscCall(VecCreateMPI(grid_->Comm(), rank == 0 ? 3 : 0, 3, &scalars));
+  PetscCall(PetscObjectSetName((PetscObject)scalars, "vof_scheme_state"));
+  if (rank == 0) {
+    PetscCall(VecSetValue(scalars, 0, (PetscScalar)steps_, INSERT_VALUES));
+    PetscCall(VecSetValue(scalars, 1, bound, INSERT_VALUES));
+    PetscCall(VecSetValue(scalars, 2, heightShare_, INSERT_VALUES));
+  }
+  PetscCall(VecAssemblyBegin(scalars));
+  PetscCall(VecAssemblyEnd(scalars));
+  PetscCall(VecView(scalars, viewer));
+  PetscCall(VecDestroy(&scalars));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode Vof::Load(PetscViewer viewer) {
+  Vec         scalars;
+  PetscMPIInt rank;
+  PetscReal   s[3] = {0, 0, 0};
+
+  PetscFunctionBeginUser;
+  PetscCall(VecLoad(alpha_, viewer));
+  PetscCallMPI(MPI_Comm_rank(grid_->Comm(), &rank));
+  PetscCall(VecCreateMPI(grid_->Comm(), rank == 0 ? 3 : 0, 3, &scalars));
+  PetscCall(PetscObjectSetName((PetscObject)scalars, "vof_scheme_state"));
+  PetscCall(VecLoad(scalars, viewer));
+  if (rank == 0) {
+    const PetscScalar *a;
+    PetscCall(VecGetArrayRead(scalars, &a));
+    for (int k = 0; k < 3; ++k) s[k] = PetscRealPart(a[k]);
+    PetscCall(VecRestoreArrayRead(scalars, &a));
+  }
+  PetscCallMPI(MPI_Bcast(s, 3, MPIU_REAL, 0, grid_->Comm()));
+  PetscCall(VecDestroy(&scalars));
+  steps_          = (PetscInt)s[0];
+  boundViolation_ = s[1];  // the largest seen on any rank: a bound, the same on every rank count
+  heightShare_    = s[2];
+  PetscCall(FillGhosts());
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode Vof::View(PetscViewer viewer) const {
+  PetscFunctionBeginUser;
+  PetscCall(PetscViewerASCIIPrintf(viewer, "vof: PLIC with %s normals, split geometric advection (Weymouth & Yue), sweep Courant number <= %g; phase 1 density %g kg/m^3, viscosity %g Pa s; surface tension %g N/m; %d box(es), %d sphere(s) of phase 1 at the start\n",
+                                   normals_ == VofNormals::Height ? "height-function" : "Youngs", (double)cfl_, (double)density_, (double)viscosity_, (double)sigma_,
+                                   (int)(boxes_.size() / 6), (int)(spheres_.size() / 4)));
+  PetscFunctionReturn(0);
+}
+
+}  // namespace vofdem

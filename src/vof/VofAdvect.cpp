@@ -1,0 +1,213 @@
+// Reconstruction and split geometric advection of the VOF module (Vof.hpp; PHYSICS.md F1b, F4).
+#include "vofdem/vof/Vof.hpp"
+
+#include "vofdem/vof/Plic.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace vofdem {
+
+namespace {
+
+struct CellArray {  // ghosted local array of the alpha DMDA, global indices
+  const PetscScalar *data;
+  PetscInt           g0[3], stride[3];
+  double at(PetscInt i, PetscInt j, PetscInt k) const {
+    return PetscRealPart(data[(i - g0[0]) * stride[0] + (j - g0[1]) * stride[1] + (k - g0[2]) * stride[2]]);
+  }
+  double at(const PetscInt q[3]) const { return at(q[0], q[1], q[2]); }
+};
+
+// Youngs: minus the gradient of alpha in cell units from the 27-cell block, each difference weighted
+// (1,2,1) x (1,2,1) across (the average of the 8 corner gradients). In cell units the plane's normal
+// is this index-space gradient whatever the spacings (x_d = h_d xi_d).
+void Youngs(const CellArray &a, const PetscInt q[3], double n[3]) {
+  static const double w[3] = {1, 2, 1};
+  n[0] = n[1] = n[2] = 0;
+  for (int c = -1; c <= 1; ++c)
+    for (int b = -1; b <= 1; ++b) {
+      const double wt = w[b + 1] * w[c + 1];
+      n[0] -= wt * (a.at(q[0] + 1, q[1] + b, q[2] + c) - a.at(q[0] - 1, q[1] + b, q[2] + c));
+      n[1] -= wt * (a.at(q[0] + b, q[1] + 1, q[2] + c) - a.at(q[0] + b, q[1] - 1, q[2] + c));
+      n[2] -= wt * (a.at(q[0] + b, q[1] + c, q[2] + 1) - a.at(q[0] + b, q[1] + c, q[2] - 1));
+    }
+}
+
+const double kFull = 1 - 1e-8;
+
+// Sum of alpha over the column of 2 half + 1 cells along d through q + o (o a transverse offset).
+// With `strict`, false unless the column is a clean transition: its fluid end (side -sign) full and
+// its other end empty (PHYSICS.md F4: heights only where the interface is resolved).
+bool ColumnSum(const CellArray &a, const PetscInt q[3], int d, int sign, const PetscInt o[3], int half, bool strict, double *H) {
+  PetscInt p[3] = {q[0] + o[0], q[1] + o[1], q[2] + o[2]};
+  double   sum  = 0;
+  for (int s = -half; s <= half; ++s) {
+    PetscInt r[3] = {p[0], p[1], p[2]};
+    r[d] += s;
+    sum += a.at(r);
+  }
+  *H = sum;
+  if (!strict) return true;
+  PetscInt lo[3] = {p[0], p[1], p[2]}, hi[3] = {p[0], p[1], p[2]};
+  lo[d] -= half * sign;  // fluid end
+  hi[d] += half * sign;
+  return a.at(lo) >= kFull && a.at(hi) <= 1 - kFull;
+}
+
+// The normal from column sums along d (heights in cells): the surface x_d = H(x_t) has the normal
+// (-dH/dt, 1) times the side of the fluid, the transverse part the same for either side. Returns
+// false when a strict column is not a clean transition; *slope = sum |dH/dt|.
+bool ColumnNormal(const CellArray &a, const PetscInt q[3], int d, int sign, int half, bool strict, double m[3], double *slope) {
+  m[d]   = sign;
+  *slope = 0;
+  for (int t = 0; t < 3; ++t) {
+    if (t == d) continue;
+    double   Hm, Hp, H0;
+    PetscInt om[3] = {0, 0, 0}, op[3] = {0, 0, 0}, oz[3] = {0, 0, 0};
+    om[t] = -1;
+    op[t] = 1;
+    if (!(ColumnSum(a, q, d, sign, om, half, strict, &Hm) && ColumnSum(a, q, d, sign, op, half, strict, &Hp) && ColumnSum(a, q, d, sign, oz, half, strict, &H0)))
+      return false;
+    m[t] = -0.5 * (Hp - Hm);
+    *slope += std::fabs(m[t]);
+  }
+  return true;
+}
+
+}  // namespace
+
+bool Vof::Reconstruct(const LocalField &f, const PetscInt q[3], double n[3], double *c, bool *fromHeights) const {
+  const CellArray a = {f.data, {f.g0[0], f.g0[1], f.g0[2]}, {f.stride[0], f.stride[1], f.stride[2]}};
+  const double    v = a.at(q);
+  *fromHeights      = false;
+  if (v <= tiny_ || v >= 1 - tiny_) return false;
+  Youngs(a, q, n);
+  if (n[0] == 0 && n[1] == 0 && n[2] == 0) return false;
+  if (normals_ == VofNormals::Height) {
+    // Heights along each direction the interface faces (Youngs' component not 0; the side of the
+    // fluid from Youngs): of the directions whose 7-cell columns are all clean transitions, the one
+    // with the smallest slopes (columns most nearly across the interface). Where none is (thin
+    // filaments, high curvature), centred 3-cell columns (Aulisa et al. 2007) the same way.
+    for (int pass = 0; pass < passes_ && !*fromHeights; ++pass) {
+      double best[3] = {0, 0, 0}, bestSlope = PETSC_MAX_REAL;
+      for (int d = 0; d < 3; ++d) {
+        double m[3], slope;
+        if (n[d] != 0 && ColumnNormal(a, q, d, n[d] > 0 ? 1 : -1, pass == 0 ? 3 : 1, pass == 0, m, &slope) && slope < bestSlope) {
+          bestSlope = slope;
+          for (int e = 0; e < 3; ++e) best[e] = m[e];
+        }
+      }
+      if (bestSlope < PETSC_MAX_REAL) {
+        for (int e = 0; e < 3; ++e) n[e] = best[e];
+        *fromHeights = pass == 0;
+        if (pass == 1) break;
+      }
+    }
+  }
+  *c = plic::Alpha(n, v);
+  return true;
+}
+
+PetscErrorCode Vof::Sweep(int d, Vec const uLocal[3], PetscReal dt, PetscReal *heightCells, PetscReal *interfaceCells) {
+  LocalField a, u, g;
+  PetscInt   s[3], n[3], gs[3], gm[3];
+
+  PetscFunctionBeginUser;
+  const PetscReal h = grid_->Spacing()[d], r = dt / h;
+  PetscCall(DMDAGetCorners(da_, &s[0], &s[1], &s[2], &n[0], &n[1], &n[2]));
+  PetscCall(DMDAGetGhostCorners(da_, &gs[0], &gs[1], &gs[2], &gm[0], &gm[1], &gm[2]));
+  PetscCall(VecGetArray(alphaLocal_, &a.data));
+  for (int e = 0; e < 3; ++e) a.g0[e] = gs[e];
+  a.stride[0] = 1;
+  a.stride[1] = gm[0];
+  a.stride[2] = gm[0] * gm[1];
+  PetscCall(sg_->GetLocal(d, uLocal[d], &u));
+  // Face fluxes (fraction of a cell's volume crossing, positive along +d) of the owned cells' faces:
+  // face index f lies between cells f-1 and f.
+  PetscInt nf[3] = {n[0], n[1], n[2]};
+  nf[d] += 1;
+  flux_.assign((size_t)(nf[0] * nf[1] * nf[2]), 0.0);
+  PetscInt idx = 0;
+  for (PetscInt k = s[2]; k < s[2] + nf[2]; ++k)
+    for (PetscInt j = s[1]; j < s[1] + nf[1]; ++j)
+      for (PetscInt i = s[0]; i < s[0] + nf[0]; ++i, ++idx) {
+        const PetscInt  q[3] = {i, j, k};
+        const PetscReal vel  = PetscRealPart(u.at(q));
+        if (vel == 0) continue;
+        const double cour = vel * r;  // signed Courant number
+        PetscInt     donor[3] = {i, j, k};
+        if (vel > 0) donor[d] -= 1;
+        const double v = PetscRealPart(a.at(donor));
+        double       nrm[3], c;
+        bool         heights;
+        if (!Reconstruct(a, donor, nrm, &c, &heights)) {
+          flux_[idx] = cour * v;  // full, empty or without a gradient: uniform
+          continue;
+        }
+        double lo[3] = {0, 0, 0}, hi[3] = {1, 1, 1};
+        if (vel > 0) lo[d] = 1 - cour;
+        else hi[d] = -cour;
+        flux_[idx] = cour * plic::BoxFraction(nrm, c, lo, hi);
+      }
+  // Counts for the summary: the owned interface cells and how many got height-function normals.
+  for (PetscInt k = s[2]; k < s[2] + n[2]; ++k)
+    for (PetscInt j = s[1]; j < s[1] + n[1]; ++j)
+      for (PetscInt i = s[0]; i < s[0] + n[0]; ++i) {
+        const PetscInt q[3] = {i, j, k};
+        double         nrm[3], c;
+        bool           heights;
+        if (d == 0 && Reconstruct(a, q, nrm, &c, &heights)) {
+          *interfaceCells += 1;
+          *heightCells += heights;
+        }
+      }
+  PetscCall(sg_->GetGlobal(3, alpha_, &g));
+  PetscInt   sf[3] = {1, nf[0], nf[0] * nf[1]};
+  PetscReal  worst = boundViolation_;
+  for (PetscInt k = s[2]; k < s[2] + n[2]; ++k)
+    for (PetscInt j = s[1]; j < s[1] + n[1]; ++j)
+      for (PetscInt i = s[0]; i < s[0] + n[0]; ++i) {
+        const PetscInt q[3] = {i, j, k}, f0 = (i - s[0]) * sf[0] + (j - s[1]) * sf[1] + (k - s[2]) * sf[2];
+        PetscInt       qp[3] = {i, j, k};
+        qp[d] += 1;
+        const size_t   cell  = (size_t)((i - s[0]) + n[0] * ((j - s[1]) + n[1] * (k - s[2])));
+        const double   divU  = r * (PetscRealPart(u.at(qp)) - PetscRealPart(u.at(q)));
+        const double   v     = PetscRealPart(a.at(q)) - (flux_[f0 + sf[d]] - flux_[f0]) + (fullAtStart_[cell] ? divU : 0.0);
+        g.at(q)              = v;
+        worst                = std::max(worst, std::max(-v, v - 1));
+      }
+  boundViolation_ = worst;
+  PetscCall(sg_->RestoreGlobal(3, alpha_, &g));
+  PetscCall(sg_->RestoreLocal(d, uLocal[d], &u));
+  PetscCall(VecRestoreArray(alphaLocal_, &a.data));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode Vof::Advect(Vec const u[3], PetscReal dt) {
+  const PetscScalar *a;
+  PetscInt           n;
+
+  PetscFunctionBeginUser;
+  if (!advect_) PetscFunctionReturn(0);  // a frozen interface (-vof_advect 0)
+  for (int d = 0; d < 3; ++d) PetscCall(DMGlobalToLocal(sg_->Face(d), u[d], INSERT_VALUES, uLocal_[d]));
+  PetscCall(FillGhosts());
+  // c_i from the state at the start of the step, the same in every sweep (exact conservation).
+  PetscCall(VecGetLocalSize(alpha_, &n));
+  PetscCall(VecGetArrayRead(alpha_, &a));
+  for (PetscInt i = 0; i < n; ++i) fullAtStart_[(size_t)i] = PetscRealPart(a[i]) > 0.5;
+  PetscCall(VecRestoreArrayRead(alpha_, &a));
+  const int order[2][3] = {{0, 1, 2}, {2, 1, 0}};
+  PetscReal counts[2]   = {0, 0}, total[2];
+  for (int p = 0; p < 3; ++p) {
+    const int d = order[steps_ % 2][p];
+    PetscCall(Sweep(d, uLocal_, dt, &counts[0], &counts[1]));
+    PetscCall(FillGhosts());
+  }
+  PetscCallMPI(MPI_Allreduce(counts, total, 2, MPIU_REAL, MPIU_SUM, grid_->Comm()));
+  heightShare_ = total[1] > 0 ? total[0] / total[1] : 0;
+  ++steps_;
+  PetscFunctionReturn(0);
+}
+
+}  // namespace vofdem
