@@ -101,3 +101,4 @@ include(VofdemStatisticsTests)  # D6 long horizon: rank counts against a 1-rank 
 include(VofdemFlowTests)  # the pressure solve (src/flow)
 include(VofdemCavityTests)  # F2 reference tables: the profile checker and the convergence-table helper
 include(VofdemCheckpointTests)  # checkpoint/restart (issue 5)
+include(VofdemAnalysisTests)  # powder-bed analysis (issue 6)
