@@ -102,3 +102,4 @@ include(VofdemFlowTests)  # the pressure solve (src/flow)
 include(VofdemCavityTests)  # F2 reference tables: the profile checker and the convergence-table helper
 include(VofdemCheckpointTests)  # checkpoint/restart (issue 5)
 include(VofdemAnalysisTests)  # powder-bed analysis (issue 6)
+include(VofdemClumpTests)  # rigid multi-sphere clumps (P10)
