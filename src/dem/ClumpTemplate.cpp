@@ -74,39 +74,50 @@ bool Intersection(const ClumpSphere &a, const ClumpSphere &b, Circle *k) {
 
 }  // namespace
 
-void SymmetricEigen3(const PetscReal A[9], PetscReal values[3], PetscReal vectors[9]) {
-  double a[3][3], v[3][3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
-  for (int i = 0; i < 3; ++i)
-    for (int j = 0; j < 3; ++j) a[i][j] = 0.5 * (A[3 * i + j] + A[3 * j + i]);
-  for (int sweep = 0; sweep < 50; ++sweep) {
-    const double off = a[0][1] * a[0][1] + a[0][2] * a[0][2] + a[1][2] * a[1][2];
-    if (off <= 1e-30 * (a[0][0] * a[0][0] + a[1][1] * a[1][1] + a[2][2] * a[2][2]) || off == 0) break;
-    for (int p = 0; p < 2; ++p)
-      for (int q = p + 1; q < 3; ++q) {
-        if (a[p][q] == 0) continue;
-        const double theta = (a[q][q] - a[p][p]) / (2 * a[p][q]);
+void SymmetricEigen(int n, const PetscReal *A, PetscReal *values, PetscReal *vectors) {
+  // Cyclic Jacobi rotations on a copy; vectors accumulate the rotations (columns).
+  std::vector<double> a(n * n), v(n * n, 0.0);
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < n; ++j) a[i * n + j] = 0.5 * (A[i * n + j] + A[j * n + i]);
+  for (int i = 0; i < n; ++i) v[i * n + i] = 1;
+  for (int sweep = 0; sweep < 100; ++sweep) {
+    double off = 0, diag = 0;
+    for (int i = 0; i < n; ++i) {
+      diag += a[i * n + i] * a[i * n + i];
+      for (int j = i + 1; j < n; ++j) off += a[i * n + j] * a[i * n + j];
+    }
+    if (off == 0 || off <= 1e-30 * diag) break;
+    for (int p = 0; p < n - 1; ++p)
+      for (int q = p + 1; q < n; ++q) {
+        if (a[p * n + q] == 0) continue;
+        const double theta = (a[q * n + q] - a[p * n + p]) / (2 * a[p * n + q]);
         const double t     = (theta >= 0 ? 1 : -1) / (std::fabs(theta) + std::sqrt(theta * theta + 1));
         const double c = 1 / std::sqrt(t * t + 1), s = t * c;
-        for (int k = 0; k < 3; ++k) {  // A <- A J (columns p, q)
-          const double akp = a[k][p], akq = a[k][q];
-          a[k][p] = c * akp - s * akq, a[k][q] = s * akp + c * akq;
+        for (int k = 0; k < n; ++k) {  // A <- A J (columns p, q)
+          const double akp = a[k * n + p], akq = a[k * n + q];
+          a[k * n + p] = c * akp - s * akq, a[k * n + q] = s * akp + c * akq;
         }
-        for (int k = 0; k < 3; ++k) {  // A <- J^T A (rows p, q)
-          const double apk = a[p][k], aqk = a[q][k];
-          a[p][k] = c * apk - s * aqk, a[q][k] = s * apk + c * aqk;
+        for (int k = 0; k < n; ++k) {  // A <- J^T A (rows p, q)
+          const double apk = a[p * n + k], aqk = a[q * n + k];
+          a[p * n + k] = c * apk - s * aqk, a[q * n + k] = s * apk + c * aqk;
         }
-        for (int k = 0; k < 3; ++k) {
-          const double vkp = v[k][p], vkq = v[k][q];
-          v[k][p] = c * vkp - s * vkq, v[k][q] = s * vkp + c * vkq;
+        for (int k = 0; k < n; ++k) {
+          const double vkp = v[k * n + p], vkq = v[k * n + q];
+          v[k * n + p] = c * vkp - s * vkq, v[k * n + q] = s * vkp + c * vkq;
         }
       }
   }
-  int order[3] = {0, 1, 2};
-  std::sort(order, order + 3, [&](int i, int j) { return a[i][i] < a[j][j]; });
-  for (int c = 0; c < 3; ++c) {
-    values[c] = a[order[c]][order[c]];
-    for (int k = 0; k < 3; ++k) vectors[3 * k + c] = v[k][order[c]];
+  std::vector<int> order(n);
+  for (int i = 0; i < n; ++i) order[i] = i;
+  std::sort(order.begin(), order.end(), [&](int i, int j) { return a[i * n + i] < a[j * n + j]; });
+  for (int c = 0; c < n; ++c) {
+    values[c] = a[order[c] * n + order[c]];
+    for (int k = 0; k < n; ++k) vectors[k * n + c] = v[k * n + order[c]];
   }
+}
+
+void SymmetricEigen3(const PetscReal A[9], PetscReal values[3], PetscReal vectors[9]) {
+  SymmetricEigen(3, A, values, vectors);
   // Right-handed: third column = first x second.
   const PetscReal *e = vectors;
   const PetscReal  cx = e[3] * e[7] - e[6] * e[4], cy = e[6] * e[1] - e[0] * e[7], cz = e[0] * e[4] - e[3] * e[1];

@@ -43,6 +43,33 @@ void QuatFromMatrix(const PetscReal R[9], PetscReal q[4]) {
   for (int k = 0; k < 4; ++k) q[k] /= n;
 }
 
+void QuatMultiply(const PetscReal a[4], const PetscReal b[4], PetscReal r[4]) {
+  r[0] = a[0] * b[0] - a[1] * b[1] - a[2] * b[2] - a[3] * b[3];
+  r[1] = a[0] * b[1] + b[0] * a[1] + a[2] * b[3] - a[3] * b[2];
+  r[2] = a[0] * b[2] + b[0] * a[2] + a[3] * b[1] - a[1] * b[3];
+  r[3] = a[0] * b[3] + b[0] * a[3] + a[1] * b[2] - a[2] * b[1];
+}
+
+void BestRotation(int n, const PetscReal *P, const PetscReal *Q, PetscReal q[4]) {
+  // Horn (1987): with S = sum (p - pbar)(q - qbar)^T, the unit quaternion of the rotation taking the
+  // p to the q is the eigenvector of the largest eigenvalue of this symmetric 4 x 4 matrix.
+  PetscReal pb[3] = {0, 0, 0}, qb[3] = {0, 0, 0}, S[3][3] = {{0}};
+  for (int k = 0; k < n; ++k)
+    for (int d = 0; d < 3; ++d) pb[d] += P[3 * k + d] / n, qb[d] += Q[3 * k + d] / n;
+  for (int k = 0; k < n; ++k)
+    for (int a = 0; a < 3; ++a)
+      for (int b = 0; b < 3; ++b) S[a][b] += (P[3 * k + a] - pb[a]) * (Q[3 * k + b] - qb[b]);
+  const PetscReal N[16] = {S[0][0] + S[1][1] + S[2][2], S[1][2] - S[2][1], S[2][0] - S[0][2], S[0][1] - S[1][0],
+                           S[1][2] - S[2][1], S[0][0] - S[1][1] - S[2][2], S[0][1] + S[1][0], S[2][0] + S[0][2],
+                           S[2][0] - S[0][2], S[0][1] + S[1][0], -S[0][0] + S[1][1] - S[2][2], S[1][2] + S[2][1],
+                           S[0][1] - S[1][0], S[2][0] + S[0][2], S[1][2] + S[2][1], -S[0][0] - S[1][1] + S[2][2]};
+  PetscReal values[4], vectors[16];
+  SymmetricEigen(4, N, values, vectors);
+  for (int k = 0; k < 4; ++k) q[k] = vectors[4 * k + 3];
+  const PetscReal len = std::sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3]);
+  for (int k = 0; k < 4; ++k) q[k] /= len;
+}
+
 }  // namespace rigid
 
 namespace {
@@ -81,7 +108,13 @@ void Clumps::Group(const ParticleArrays &a) const {
 }
 
 PetscErrorCode Clumps::SetUp(const ParticleArrays &a, const std::vector<PetscReal> &typeDensity, PetscInt *count) {
-  std::map<std::vector<long long>, ClumpTemplate> cache;  // exact repeats of a shape (same orientation)
+  // Shapes computed so far, keyed by radii and member distances (invariant under rotation), with the
+  // member positions relative to the first member they were computed from.
+  struct Shape {
+    ClumpTemplate          t;
+    std::vector<PetscReal> rel;
+  };
+  std::map<std::vector<long long>, std::vector<Shape>> cache;
 
   PetscFunctionBeginUser;
   Group(a);
@@ -89,38 +122,62 @@ PetscErrorCode Clumps::SetUp(const ParticleArrays &a, const std::vector<PetscRea
   for (auto &kv : members_) {
     std::vector<PetscInt> &m = kv.second;
     std::sort(m.begin(), m.end(), [&](PetscInt i, PetscInt j) { return a.id[i] < a.id[j]; });
-    const PetscInt   p0 = m[0];
+    const PetscInt   p0 = m[0], n = (PetscInt)m.size();
     const PetscReal *x0 = &a.x[3 * p0], unit = 1e-9 * a.radius[p0];
+    std::vector<PetscReal> rel(3 * n);
+    for (PetscInt k = 0; k < n; ++k)
+      for (int d = 0; d < 3; ++d) rel[3 * k + d] = a.x[3 * m[k] + d] - x0[d];
     std::vector<long long> key;
-    for (PetscInt p : m) {
-      for (int d = 0; d < 3; ++d) key.push_back(std::llround((a.x[3 * p + d] - x0[d]) / unit));
-      key.push_back(std::llround(a.radius[p] / unit));
+    for (PetscInt k = 0; k < n; ++k) {
+      key.push_back(std::llround(a.radius[m[k]] / unit));
+      for (PetscInt j = k + 1; j < n; ++j)
+        key.push_back(std::llround(std::hypot(rel[3 * j] - rel[3 * k], rel[3 * j + 1] - rel[3 * k + 1], rel[3 * j + 2] - rel[3 * k + 2]) / unit));
     }
-    auto it = cache.find(key);
-    if (it == cache.end()) {
-      ClumpTemplate t;
-      for (PetscInt p : m) {
-        ClumpSphere s;
-        for (int d = 0; d < 3; ++d) s.x[d] = a.x[3 * p + d] - x0[d];
-        s.r = a.radius[p];
-        t.spheres.push_back(s);
+    // An earlier shape that maps onto this clump by a rotation: q = rotation x that shape's orientation.
+    const Shape *shape = nullptr;
+    PetscReal    q[4];
+    for (const Shape &sh : cache[key]) {
+      PetscReal r[4], worst = 0;
+      rigid::BestRotation((int)n, sh.rel.data(), rel.data(), r);
+      for (PetscInt k = 0; k < n; ++k) {
+        PetscReal y[3];
+        rigid::QuatRotate(r, &sh.rel[3 * k], y);
+        for (int d = 0; d < 3; ++d) worst = std::max(worst, std::fabs(y[d] - rel[3 * k + d]));
       }
-      t.Compute();
-      it = cache.emplace(key, t).first;
+      if (worst > 1e-6 * a.radius[p0]) continue;
+      PetscReal q0[4];
+      rigid::QuatFromMatrix(sh.t.axes, q0);
+      rigid::QuatMultiply(r, q0, q);
+      shape = &sh;
+      break;
     }
-    const ClumpTemplate &t   = it->second;
+    if (!shape) {
+      Shape sh;
+      for (PetscInt k = 0; k < n; ++k) {
+        ClumpSphere s;
+        for (int d = 0; d < 3; ++d) s.x[d] = rel[3 * k + d];
+        s.r = a.radius[m[k]];
+        sh.t.spheres.push_back(s);
+      }
+      sh.t.Compute();
+      ++shapes_;
+      sh.rel = rel;
+      cache[key].push_back(sh);
+      shape = &cache[key].back();
+      rigid::QuatFromMatrix(shape->t.axes, q);
+    }
+    const ClumpTemplate &t   = shape->t;
     const PetscReal      rho = typeDensity[a.type[p0]], M = rho * t.volume;
-    PetscReal            q[4], V[3] = {0, 0, 0}, w[3] = {0, 0, 0};
-    rigid::QuatFromMatrix(t.axes, q);
+    PetscReal            V[3] = {0, 0, 0}, w[3] = {0, 0, 0};
     for (PetscInt p : m)
-      for (int d = 0; d < 3; ++d) V[d] += a.v[3 * p + d] / m.size(), w[d] += a.omega[3 * p + d] / m.size();
-    for (size_t k = 0; k < m.size(); ++k) {
+      for (int d = 0; d < 3; ++d) V[d] += a.v[3 * p + d] / n, w[d] += a.omega[3 * p + d] / n;
+    for (PetscInt k = 0; k < n; ++k) {
       const PetscInt p = m[k];
       PetscReal     *g = &a.rigid[kRigidWidth * p], rb[3], wxr[3];
       for (int c = 0; c < 4; ++c) g[rigid::kQ + c] = q[c];
       for (int d = 0; d < 3; ++d) g[rigid::kBody + d] = t.body[3 * k + d], g[rigid::kInertia + d] = rho * t.principal[d];
       g[rigid::kMass] = M;
-      a.mass[p]       = M / m.size();
+      a.mass[p]       = M / n;
       rigid::QuatRotate(q, &g[rigid::kBody], rb);
       Cross(w, rb, wxr);
       for (int d = 0; d < 3; ++d) a.v[3 * p + d] = V[d] + wxr[d], a.omega[3 * p + d] = w[d];

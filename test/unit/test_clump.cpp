@@ -112,3 +112,75 @@ TEST(ClumpTemplate, FourSpheresConverged) {
       EXPECT_NEAR(v, i == j ? t.principal[i] : 0.0, 1e-12 * t.principal[2]);
     }
 }
+
+#include "vofdem/dem/Clumps.hpp"
+
+namespace {
+// Local particle arrays for Clumps::SetUp: n spheres at rest.
+struct Arrays {
+  std::vector<PetscReal>  x, v, f, r, m, w, t, rigid;
+  std::vector<PetscInt64> id, clump;
+  std::vector<PetscInt>   type;
+  void Add(const PetscReal p[3], PetscReal radius, PetscInt64 c) {
+    for (int d = 0; d < 3; ++d) x.push_back(p[d]), v.push_back(0), f.push_back(0), w.push_back(0), t.push_back(0);
+    r.push_back(radius), m.push_back(0), id.push_back((PetscInt64)id.size()), clump.push_back(c), type.push_back(0);
+    for (int k = 0; k < vofdem::kRigidWidth; ++k) rigid.push_back(0);
+  }
+  vofdem::ParticleArrays View() {
+    vofdem::ParticleArrays a;
+    a.n = (PetscInt)r.size(), a.x = x.data(), a.v = v.data(), a.f = f.data(), a.radius = r.data(), a.mass = m.data(), a.omega = w.data();
+    a.torque = t.data(), a.id = id.data(), a.clump = clump.data(), a.type = type.data(), a.rigid = rigid.data();
+    return a;
+  }
+};
+}  // namespace
+
+TEST(Clumps, RepeatedShapeByRotation) {
+  // Clump 0: four spheres, not in a plane; clump 1: the same rotated (axis (1,2,2)/3, 1 rad) and moved;
+  // clump 2: its mirror image in x (no rotation maps it: computed anew, same moments).
+  const PetscReal s[4][4] = {{0, 0, 0, 4e-5}, {4.5e-5, 1e-5, 0, 3e-5}, {-1e-5, 3.5e-5, 2e-5, 2.5e-5}, {1e-5, -1e-5, 3.5e-5, 2.2e-5}};
+  const PetscReal qr[4]   = {std::cos(0.5), std::sin(0.5) / 3, 2 * std::sin(0.5) / 3, 2 * std::sin(0.5) / 3};
+  Arrays          A;
+  for (const auto &e : s) {
+    PetscReal p[3] = {1e-3 + e[0], 1e-3 + e[1], 1e-3 + e[2]}, y[3];
+    A.Add(p, e[3], 0);
+    vofdem::rigid::QuatRotate(qr, e, y);
+    const PetscReal py[3] = {2e-3 + y[0], 1e-3 + y[1], 1e-3 + y[2]}, pm[3] = {3e-3 - e[0], 1e-3 + e[1], 1e-3 + e[2]};
+    A.Add(py, e[3], 1);
+    A.Add(pm, e[3], 2);
+  }
+  vofdem::Clumps         clumps;
+  vofdem::ParticleArrays a = A.View();
+  PetscInt               count;
+  ASSERT_EQ(clumps.SetUp(a, {2500}, &count), 0);
+  EXPECT_EQ(count, 3);
+  EXPECT_EQ(clumps.ShapesComputed(), 2);  // clump 1 is clump 0 rotated
+  const PetscReal *g0 = &A.rigid[0], *g1 = &A.rigid[vofdem::kRigidWidth], *g2 = &A.rigid[2 * vofdem::kRigidWidth];
+  for (int k = 0; k < 4; ++k) EXPECT_NEAR(g1[vofdem::rigid::kInertia + k % 3], g0[vofdem::rigid::kInertia + k % 3], 1e-9 * g0[vofdem::rigid::kInertia + 2]);
+  EXPECT_NEAR(g1[vofdem::rigid::kMass], g0[vofdem::rigid::kMass], 1e-12 * g0[vofdem::rigid::kMass]);
+  EXPECT_NEAR(g2[vofdem::rigid::kMass], g0[vofdem::rigid::kMass], 1e-9 * g0[vofdem::rigid::kMass]);
+  for (int k = 0; k < 3; ++k) EXPECT_NEAR(g2[vofdem::rigid::kInertia + k], g0[vofdem::rigid::kInertia + k], 1e-9 * g0[vofdem::rigid::kInertia + 2]);
+  // Every clump: member k - member 0 = R(q) (b_k - b_0), and the centroid x_k - R(q) b_k is that of the
+  // union computed directly from the clump's own positions.
+  for (int c = 0; c < 3; ++c) {
+    ClumpTemplate direct;
+    for (int k = 0; k < 4; ++k) {
+      vofdem::ClumpSphere m;
+      for (int d = 0; d < 3; ++d) m.x[d] = A.x[3 * (3 * k + c) + d];
+      m.r = A.r[3 * k + c];
+      direct.spheres.push_back(m);
+    }
+    direct.Compute();
+    for (int k = 0; k < 4; ++k) {
+      const PetscReal *g = &A.rigid[vofdem::kRigidWidth * (3 * k + c)];
+      PetscReal        rb[3];
+      vofdem::rigid::QuatRotate(g + vofdem::rigid::kQ, g + vofdem::rigid::kBody, rb);
+      for (int d = 0; d < 3; ++d) EXPECT_NEAR(A.x[3 * (3 * k + c) + d] - rb[d], direct.centroid[d], 1e-12) << "clump " << c << " member " << k;
+    }
+  }
+  // Clump 1's orientation is the rotation times clump 0's.
+  PetscReal expect[4];
+  vofdem::rigid::QuatMultiply(qr, g0 + vofdem::rigid::kQ, expect);
+  const PetscReal sign = expect[0] * g1[0] + expect[1] * g1[1] + expect[2] * g1[2] + expect[3] * g1[3] > 0 ? 1 : -1;
+  for (int k = 0; k < 4; ++k) EXPECT_NEAR(g1[vofdem::rigid::kQ + k], sign * expect[k], 1e-9);
+}

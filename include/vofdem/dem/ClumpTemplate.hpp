@@ -39,7 +39,9 @@ struct ClumpTemplate {
   void Compute(int nodes = 32);
 };
 
-// Symmetric 3x3 eigen-decomposition (cyclic Jacobi): values ascending, vectors as columns.
+// Symmetric n x n eigen-decomposition (cyclic Jacobi): values ascending, vectors as columns (row-major).
+void SymmetricEigen(int n, const PetscReal *A, PetscReal *values, PetscReal *vectors);
+// The 3 x 3 case with a right-handed set of vectors.
 void SymmetricEigen3(const PetscReal A[9], PetscReal values[3], PetscReal vectors[9]);
 
 }  // namespace vofdem

@@ -30,16 +30,24 @@ constexpr int kQ = 0, kBody = 4, kMass = 7, kInertia = 8;  // offsets in a membe
 void QuatRotate(const PetscReal q[4], const PetscReal v[3], PetscReal out[3]);         // R(q) v
 void QuatRotateInverse(const PetscReal q[4], const PetscReal v[3], PetscReal out[3]);  // R(q)^T v
 void QuatFromMatrix(const PetscReal R[9], PetscReal q[4]);                             // R row-major, proper rotation
+void QuatMultiply(const PetscReal a[4], const PetscReal b[4], PetscReal r[4]);          // a b: b first, then a
+// The rotation that best takes the n points P onto the n points Q after centring both (Horn 1987).
+void BestRotation(int n, const PetscReal *P, const PetscReal *Q, PetscReal q[4]);
 }  // namespace rigid
 
 class Clumps {
 public:
   // After the particles of a file are placed (all members of a clump local): computes each clump's
-  // template from its members as placed (shapes that repeat exactly are computed once), sets the
+  // template from its members as placed, sets the
   // members' rigid state and mass shares, and makes their velocities rigid (V, w: the means of the
   // members' given v and w). `density` of each member's type. Returns the number of local clumps.
+  // A shape is computed once: a clump whose radii and member distances (in member order) repeat
+  // an earlier one's is that one rotated; the rotation (BestRotation) is checked to map every
+  // member onto its place within 1e-6 of the first radius, else the clump is computed anew (a mirror
+  // image, say).
   PetscErrorCode SetUp(const ParticleArrays &a, const std::vector<PetscReal> &typeDensity, PetscInt *count);
-  bool Any() const { return any_; }
+  bool     Any() const { return any_; }
+  PetscInt ShapesComputed() const { return shapes_; }  // union quadratures SetUp ran (the rest were rotations)
   void SetAny(bool any) { any_ = any; }
   // Half kick of every local clump with its members' forces and torques (then, with drift, the move).
   void Kick(const ParticleArrays &a, PetscReal dt, bool drift) const;
@@ -48,7 +56,8 @@ public:
 
 private:
   void Group(const ParticleArrays &a) const;  // members_ of each local clump (a cache, hence mutable)
-  bool any_ = false;
+  bool     any_    = false;
+  PetscInt shapes_ = 0;
   mutable std::unordered_map<PetscInt64, std::vector<PetscInt>> members_;
 };
 
