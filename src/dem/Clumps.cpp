@@ -107,7 +107,7 @@ void Clumps::Group(const ParticleArrays &a) const {
   for (auto it = members_.begin(); it != members_.end();) it = it->second.empty() ? members_.erase(it) : std::next(it);
 }
 
-PetscErrorCode Clumps::SetUp(const ParticleArrays &a, const std::vector<PetscReal> &typeDensity, PetscInt *count) {
+PetscErrorCode Clumps::SetUp(const ParticleArrays &a, const std::vector<PetscReal> &typeDensity, const PetscReal gravity[3], PetscInt *count) {
   // Shapes computed so far, keyed by radii and member distances (invariant under rotation), with the
   // member positions relative to the first member they were computed from.
   struct Shape {
@@ -117,6 +117,7 @@ PetscErrorCode Clumps::SetUp(const ParticleArrays &a, const std::vector<PetscRea
   std::map<std::vector<long long>, std::vector<Shape>> cache;
 
   PetscFunctionBeginUser;
+  for (int d = 0; d < 3; ++d) gravity_[d] = gravity[d];
   Group(a);
   *count = (PetscInt)members_.size();
   for (auto &kv : members_) {
@@ -196,8 +197,10 @@ void Clumps::Kick(const ParticleArrays &a, PetscReal dt, bool drift) const {
     const PetscReal             *g = &a.rigid[kRigidWidth * p0], *q = g + rigid::kQ, *I = g + rigid::kInertia, M = g[rigid::kMass];
     PetscReal                    F[3] = {0, 0, 0}, T[3] = {0, 0, 0}, rb[3], c[3], V[3], L[3], wb[3], Lb[3];
     for (PetscInt p : m) {
+      // The member's weight m_k g is its share of M g, which acts at the centroid: no torque.
+      const PetscReal fc[3] = {a.f[3 * p] - a.mass[p] * gravity_[0], a.f[3 * p + 1] - a.mass[p] * gravity_[1], a.f[3 * p + 2] - a.mass[p] * gravity_[2]};
       rigid::QuatRotate(q, &a.rigid[kRigidWidth * p + rigid::kBody], rb);
-      Cross(rb, &a.f[3 * p], c);
+      Cross(rb, fc, c);
       for (int d = 0; d < 3; ++d) F[d] += a.f[3 * p + d], T[d] += a.torque[3 * p + d] + c[d];
     }
     // The body's velocity and angular momentum, from its first member.

@@ -174,7 +174,7 @@ PetscErrorCode Dem::SetUp(Grid &grid, const PetscReal gravity[3], std::uint64_t 
     PetscInt               local;
     for (const DemMaterial &m : types_) density.push_back(m.density);
     PetscCall(swarm_.GetArrays(&a));
-    PetscCall(clumps_.SetUp(a, density, &local));
+    PetscCall(clumps_.SetUp(a, density, gravity_, &local));
     PetscCall(swarm_.RestoreArrays(&a));
     PetscCallMPI(MPI_Allreduce(&local, &clumpCount_, 1, MPIU_INT, MPI_SUM, comm_));
     clumps_.SetAny(clumpCount_ > 0);

@@ -5,8 +5,8 @@
     |L| / I_perp of torque-free motion, with I_perp and I_axis of the union computed here independently
     (slices of the union are discs);
   - two dumbbells collide off-centre across the rank boundary: momentum kept, energy lost, both spin;
-  - a three-sphere clump dropped across the rank boundary onto the floor stays rigid and whole, comes to
-    rest, and 1 and 2 ranks agree.
+  - a three-sphere clump dropped across the rank boundary onto the floor falls without turning (its weight
+    acts at its centroid), stays rigid and whole, comes to rest, and 1 and 2 ranks agree.
   test_clump_dynamics.py VOFDEM"""
 import csv
 import math
@@ -104,10 +104,15 @@ def drop(exe, tmp):
     ends = {}
     for n in (1, 2):
         out = os.path.join(tmp, "drop%d" % n)
-        run_vofdem(exe, n, BASE + ["-dem_particles_file", path, "-dem_restitution", "0.3", "-dem_friction", "0.5", "-max_steps", "40000", "-monitor_every", "5000",
+        run_vofdem(exe, n, BASE + ["-dem_particles_file", path, "-dem_restitution", "0.3", "-dem_friction", "0.5", "-max_steps", "40000", "-monitor_every", "500",
                                    "-dem_youngs_modulus", "1e7",
                                    "-grid_ranks", "%d,1,1" % n, "-output_dir", out, "-dem_save_particles", out + "-end.csv"])
         end = ends[n] = read(out + "-end.csv")
+        # Before the first contact the clump falls without turning: its weight acts at its centroid.
+        falling = [r for r in monitor(out) if int(r["wall_contacts"]) == 0 and float(r["time_s"]) < 0.005]
+        check(len(falling) > 5 and all(float(r["rotational_energy_J"]) == 0 for r in falling),
+              "drop on %d rank(s): no rotation in free fall (%d monitor rows, largest rotational energy %.1e J)"
+              % (n, len(falling), max(float(r["rotational_energy_J"]) for r in falling)))
         check(len(end) == 4, "drop on %d rank(s): 4 spheres at the end" % n)
         x = np.array([[p["x"], p["y"], p["z"]] for p in end[:3]])
         x0 = np.array([r[:3] for r in rows[:3]])

@@ -152,7 +152,8 @@ TEST(Clumps, RepeatedShapeByRotation) {
   vofdem::Clumps         clumps;
   vofdem::ParticleArrays a = A.View();
   PetscInt               count;
-  ASSERT_EQ(clumps.SetUp(a, {2500}, &count), 0);
+  const PetscReal        g[3] = {0, 0, -9.81};
+  ASSERT_EQ(clumps.SetUp(a, {2500}, g, &count), 0);
   EXPECT_EQ(count, 3);
   EXPECT_EQ(clumps.ShapesComputed(), 2);  // clump 1 is clump 0 rotated
   const PetscReal *g0 = &A.rigid[0], *g1 = &A.rigid[vofdem::kRigidWidth], *g2 = &A.rigid[2 * vofdem::kRigidWidth];

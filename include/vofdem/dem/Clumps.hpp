@@ -9,7 +9,8 @@
 // M/n (totals stay right; the contact laws damp with that share).
 //
 // Integration (velocity Verlet, as for spheres): half kick V += dt/2 F/M, L += dt/2 T with F, T the
-// sums over the members (T about the centroid: sum tau_k + R b_k x f_k); drift X += dt V and the
+// sums over the members (T about the centroid: sum tau_k + R b_k x (f_k - m_k g): gravity acts at the
+// centroid); drift X += dt V and the
 // orientation by the implicit-midpoint quaternion update with L fixed:
 //   q_mid = q exp(dt/2 w_b(q)),  q' = q exp(dt w_b(q_mid)),  w_b(q) = I^-1 R(q)^T L,
 // which keeps |L| exactly and the energy of a torque-free body to O(dt^2) without drift.
@@ -45,7 +46,9 @@ public:
   // an earlier one's is that one rotated; the rotation (BestRotation) is checked to map every
   // member onto its place within 1e-6 of the first radius, else the clump is computed anew (a mirror
   // image, say).
-  PetscErrorCode SetUp(const ParticleArrays &a, const std::vector<PetscReal> &typeDensity, PetscInt *count);
+  // `gravity`: the acceleration the force loop gives every sphere (m g), which acts on a clump at its
+  // centroid (M g, no torque), not at its members.
+  PetscErrorCode SetUp(const ParticleArrays &a, const std::vector<PetscReal> &typeDensity, const PetscReal gravity[3], PetscInt *count);
   bool     Any() const { return any_; }
   PetscInt ShapesComputed() const { return shapes_; }  // union quadratures SetUp ran (the rest were rotations)
   void SetAny(bool any) { any_ = any; }
@@ -58,6 +61,7 @@ private:
   void Group(const ParticleArrays &a) const;  // members_ of each local clump (a cache, hence mutable)
   bool     any_    = false;
   PetscInt shapes_ = 0;
+  PetscReal gravity_[3] = {0, 0, 0};
   mutable std::unordered_map<PetscInt64, std::vector<PetscInt>> members_;
 };
 
