@@ -1,4 +1,4 @@
-static const char help[] = "The particle layout is ready for rigid clumps (P10; their dynamics come with the powder scenes):\n"
+static const char help[] = "The particle layout of rigid clumps (P10; their rigid-body dynamics: src/dem/Clumps.cpp, test/clumps):\n"
                            "two overlapping spheres of one clump feel no contact with each other, while two free overlapping spheres\n"
                            "push each other apart; the clump's spheres live on one rank even when they straddle a rank boundary, and stay\n"
                            "together through migrations (the clump is located by its lowest-id sphere). Exits non-zero on failure.\n\n";

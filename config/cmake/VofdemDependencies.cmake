@@ -37,6 +37,15 @@ add_library(vofdem::metis INTERFACE IMPORTED)
 target_include_directories(vofdem::metis INTERFACE ${METIS_INCLUDE_DIR})
 target_link_libraries(vofdem::metis INTERFACE ${METIS_LIBRARY})
 
+# CGAL (header-only since 5.0; its target brings GMP and MPFR): only the analysis library uses it.
+# Its imported include directories are SYSTEM, so -Wall -Wextra stay quiet about its headers.
+set(CGAL_DO_NOT_WARN_ABOUT_CMAKE_BUILD_TYPE TRUE)
+find_package(CGAL QUIET)
+if(NOT CGAL_FOUND)
+  message(FATAL_ERROR "CGAL not found: install the Debian package 'libcgal-dev' (scripts/install-deps)")
+endif()
+message(STATUS "vofdem: CGAL ${CGAL_VERSION}")
+
 find_package(GTest QUIET)
 if(NOT GTest_FOUND)
   message(FATAL_ERROR "GoogleTest not found: install the Debian package 'libgtest-dev' (scripts/install-deps)")

@@ -4,7 +4,7 @@ include(GoogleTest)
 # ---- unit tests (GoogleTest) ----------------------------------------------------------------
 file(GLOB VOFDEM_UNIT_TESTS CONFIGURE_DEPENDS ${CMAKE_CURRENT_SOURCE_DIR}/test/unit/*.cpp)
 add_executable(vofdem_unit_tests ${VOFDEM_UNIT_TESTS})
-target_link_libraries(vofdem_unit_tests PRIVATE vofdem GTest::gtest GTest::gtest_main)
+target_link_libraries(vofdem_unit_tests PRIVATE vofdem vofdem_analysis GTest::gtest GTest::gtest_main)
 # gtest_add_tests scans the sources at configure time and returns the names, so both labels apply.
 gtest_add_tests(TARGET vofdem_unit_tests TEST_PREFIX "unit/" TEST_LIST _unit_tests)
 set_tests_properties(${_unit_tests} PROPERTIES LABELS "quick;unit")
@@ -104,3 +104,5 @@ include(VofdemCavityTests)  # F2 reference tables: the profile checker and the c
 include(VofdemCheckpointTests)  # checkpoint/restart (issue 5)
 include(VofdemGeometryTests)  # scripts/make-stl: blade, hopper, funnel meshes
 include(VofdemVofTests)  # the VOF module (issue 8)
+include(VofdemAnalysisTests)  # powder-bed analysis (issue 6)
+include(VofdemClumpTests)  # rigid multi-sphere clumps (P10)

@@ -168,6 +168,17 @@ PetscErrorCode Dem::SetUp(Grid &grid, const PetscReal gravity[3], std::uint64_t 
   PetscCall(wallSet_.SetUp(grid.Lower(), grid.Upper()));
   PetscCall(Fill(seed));
   PetscCall(ReadParticles());
+  {  // Clumps (P10) of the particles file: templates, rigid state, rigid velocities (Clumps.hpp).
+    ParticleArrays         a;
+    std::vector<PetscReal> density;
+    PetscInt               local;
+    for (const DemMaterial &m : types_) density.push_back(m.density);
+    PetscCall(swarm_.GetArrays(&a));
+    PetscCall(clumps_.SetUp(a, density, gravity_, &local));
+    PetscCall(swarm_.RestoreArrays(&a));
+    PetscCallMPI(MPI_Allreduce(&local, &clumpCount_, 1, MPIU_INT, MPI_SUM, comm_));
+    clumps_.SetAny(clumpCount_ > 0);
+  }
   PetscCall(swarm_.GlobalCount(&inserted_));
   {  // The sizes present: R_min sets the Rayleigh time (P9), R_max the neighbour cut-off.
     ParticleArrays a;
@@ -206,9 +217,11 @@ PetscErrorCode Dem::SetUp(Grid &grid, const PetscReal gravity[3], std::uint64_t 
   PetscFunctionReturn(0);
 }
 
-// Half a velocity-Verlet kick: v += dt/2 F/m, w += dt/2 T/I with I = 2/5 m R^2 (spheres).
+// Half a velocity-Verlet kick: v += dt/2 F/m, w += dt/2 T/I with I = 2/5 m R^2 (spheres; clump
+// members move with their clump, Clumps::Kick).
 static void HalfKick(const ParticleArrays &a, PetscReal dt) {
   for (PetscInt p = 0; p < a.n; ++p) {
+    if (a.clump[p] >= 0) continue;
     const PetscReal h = 0.5 * dt / a.mass[p], hI = h / (0.4 * a.radius[p] * a.radius[p]);
     for (int d = 0; d < 3; ++d) {
       a.v[3 * p + d] += h * a.f[3 * p + d];
@@ -228,7 +241,10 @@ PetscErrorCode Dem::Step(PetscReal dt) {
   PetscCall(PetscLogEventBegin(evIntegrate_, 0, 0, 0, 0));
   PetscCall(swarm_.GetArrays(&a));
   HalfKick(a, dt);
-  for (PetscInt k = 0; k < 3 * a.n; ++k) a.x[k] += dt * a.v[k];
+  for (PetscInt p = 0; p < a.n; ++p)
+    if (a.clump[p] < 0)
+      for (int d = 0; d < 3; ++d) a.x[3 * p + d] += dt * a.v[3 * p + d];
+  clumps_.Kick(a, dt, true);
   PetscCall(swarm_.RestoreArrays(&a));
   time_ += dt;
   PetscCall(swarm_.NeedsRebuild(0.5 * skin_, &rebuild));
@@ -253,6 +269,7 @@ PetscErrorCode Dem::Step(PetscReal dt) {
   PetscCall(PetscLogEventBegin(evIntegrate_, 0, 0, 0, 0));
   PetscCall(swarm_.GetArrays(&a));
   HalfKick(a, dt);
+  clumps_.Kick(a, dt, false);
   PetscCall(swarm_.RestoreArrays(&a));
   PetscCall(PetscLogEventEnd(evIntegrate_, 0, 0, 0, 0));
   PetscFunctionReturn(0);
@@ -267,10 +284,14 @@ PetscErrorCode Dem::Summarize(DemSummary *s) const {
   PetscCall(swarm_.GetArrays(&a));
   for (PetscInt p = 0; p < a.n; ++p) {
     const PetscReal *v = &a.v[3 * p], *w = &a.omega[3 * p];
+    sums[3 + 18] += a.mass[p];
+    if (a.clump[p] >= 0) continue;  // clumps: the rigid body's energy below
     sums[0] += 0.5 * a.mass[p] * (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
     sums[1] += 0.2 * a.mass[p] * a.radius[p] * a.radius[p] * (w[0] * w[0] + w[1] * w[1] + w[2] * w[2]);
-    sums[3 + 18] += a.mass[p];
   }
+  PetscReal clumpKinetic, clumpRotational;
+  clumps_.Energy(a, &clumpKinetic, &clumpRotational);
+  sums[0] += clumpKinetic, sums[1] += clumpRotational;
   PetscCall(swarm_.RestoreArrays(&a));
   sums[2] = stats_.elastic;
   for (int f = 0; f < 6; ++f)
@@ -325,6 +346,8 @@ PetscErrorCode Dem::View(PetscViewer viewer) const {
   PetscCall(PetscViewerASCIIPrintf(viewer, "dem: %" PetscInt_FMT " spheres of radius %g to %g m, density %g kg/m^3, E %g Pa, nu %g, e %g, mu %g; Rayleigh time %g s; skin %g m\n",
                                    inserted_, (double)rMin_, (double)rMax_, (double)material_.density, (double)material_.youngs, (double)material_.poisson,
                                    (double)material_.restitution, (double)material_.friction, (double)rayleighTime_, (double)skin_));
+  if (clumpCount_ > 0)
+    PetscCall(PetscViewerASCIIPrintf(viewer, "dem: %" PetscInt_FMT " rigid clumps of overlapping spheres (P10): mass and inertia of each shape's union, quaternion rotation\n", clumpCount_));
   if (types_.size() > 1) {
     const PetscInt nt = (PetscInt)types_.size();
     for (PetscInt t = 0; t < nt; ++t) {

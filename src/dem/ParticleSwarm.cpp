@@ -24,6 +24,7 @@ PetscErrorCode ParticleSwarm::Create(const Grid &grid) {
   PetscCall(DMSwarmRegisterPetscDatatypeField(swarm_, field::torque, 3, PETSC_REAL));
   PetscCall(DMSwarmRegisterPetscDatatypeField(swarm_, field::type, 1, PETSC_INT));
   PetscCall(DMSwarmRegisterPetscDatatypeField(swarm_, field::clump, 1, PETSC_INT64));
+  PetscCall(DMSwarmRegisterPetscDatatypeField(swarm_, field::rigid, kRigidWidth, PETSC_REAL));
 
   PetscCall(DMSwarmFinalizeFieldRegister(swarm_));
   PetscCall(DMSwarmSetLocalSizes(swarm_, 0, 64));
@@ -50,6 +51,7 @@ PetscErrorCode ParticleSwarm::GetArrays(ParticleArrays *a) const {
   PetscCall(DMSwarmGetField(swarm_, field::torque, nullptr, nullptr, (void **)&a->torque));
   PetscCall(DMSwarmGetField(swarm_, field::type, nullptr, nullptr, (void **)&a->type));
   PetscCall(DMSwarmGetField(swarm_, field::clump, nullptr, nullptr, (void **)&a->clump));
+  PetscCall(DMSwarmGetField(swarm_, field::rigid, nullptr, nullptr, (void **)&a->rigid));
 
   PetscFunctionReturn(0);
 }
@@ -57,6 +59,7 @@ PetscErrorCode ParticleSwarm::GetArrays(ParticleArrays *a) const {
 PetscErrorCode ParticleSwarm::RestoreArrays(ParticleArrays *a) const {
   PetscFunctionBeginUser;
 
+  PetscCall(DMSwarmRestoreField(swarm_, field::rigid, nullptr, nullptr, (void **)&a->rigid));
   PetscCall(DMSwarmRestoreField(swarm_, field::clump, nullptr, nullptr, (void **)&a->clump));
   PetscCall(DMSwarmRestoreField(swarm_, field::type, nullptr, nullptr, (void **)&a->type));
   PetscCall(DMSwarmRestoreField(swarm_, field::torque, nullptr, nullptr, (void **)&a->torque));
@@ -80,8 +83,14 @@ PetscErrorCode ParticleSwarm::GlobalCount(PetscInt *n) const {
 
 PetscErrorCode ParticleSwarm::AddLocal(PetscInt n, PetscInt *first) {
   PetscFunctionBeginUser;
+  PetscReal *rigid;
   PetscCall(DMSwarmGetLocalSize(swarm_, first));
   PetscCall(DMSwarmAddNPoints(swarm_, n));
+  // Not in a clump: identity orientation, zeros (defined bytes for checkpoints).
+  PetscCall(DMSwarmGetField(swarm_, field::rigid, nullptr, nullptr, (void **)&rigid));
+  for (PetscInt p = *first; p < *first + n; ++p)
+    for (int k = 0; k < kRigidWidth; ++k) rigid[kRigidWidth * p + k] = k == 0 ? 1 : 0;
+  PetscCall(DMSwarmRestoreField(swarm_, field::rigid, nullptr, nullptr, (void **)&rigid));
   PetscFunctionReturn(0);
 }
 

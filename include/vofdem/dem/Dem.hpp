@@ -8,6 +8,7 @@
 // output, stress and Save/Load (DemOutput.hpp, DemSaveLoad.cpp).
 #pragma once
 
+#include "vofdem/dem/Clumps.hpp"
 #include "vofdem/dem/ContactRecord.hpp"
 #include "vofdem/dem/DemOutput.hpp"
 #include "vofdem/dem/Halo.hpp"
@@ -143,6 +144,8 @@ private:
 
   Grid         *grid_ = nullptr;
   ParticleSwarm swarm_;
+  Clumps        clumps_;  // rigid multi-sphere bodies (P10) of the particles file's clump ids
+  PetscInt      clumpCount_ = 0;
   MortonOrder   sort_;  // -dem_sort_every: Z-order of the local particles at rebuilds (MortonOrder.hpp)
   Halo          halo_;
   NeighbourList list_;

@@ -22,14 +22,17 @@ inline constexpr const char *omega    = "omega";               // rad/s, angular
 inline constexpr const char *torque   = "torque";              // N m, total torque of the last evaluation
 inline constexpr const char *type     = "type";                // particle type (index into -dem_types), PetscInt
 inline constexpr const char *clump    = "clump";               // id of the rigid clump the sphere belongs to, -1: none (P10), PetscInt64
+inline constexpr const char *rigid    = "rigid";               // a clump member's body state (Clumps.hpp), kRigidWidth reals
 }  // namespace field
+// q (4), centre in the body frame (3), clump mass, principal moments (3): see Clumps.hpp.
+inline constexpr int kRigidWidth = 11;
 
 // Every field of the local particles at once, for loops over particles (structure of arrays;
 // vectors hold x,y,z per particle). Valid between GetArrays and RestoreArrays.
 struct ParticleArrays {
   PetscInt    n = 0;
   PetscReal  *x = nullptr, *v = nullptr, *f = nullptr, *radius = nullptr, *mass = nullptr, *reference = nullptr;
-  PetscReal  *omega = nullptr, *torque = nullptr;
+  PetscReal  *omega = nullptr, *torque = nullptr, *rigid = nullptr;
   PetscInt64 *id = nullptr, *clump = nullptr;
   PetscInt   *type = nullptr;
 };
