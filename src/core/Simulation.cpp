@@ -55,6 +55,12 @@ PetscErrorCode Simulation::SetFromOptions() {
     PetscCall(flow_->SetFromOptions(grid_));
     if (!physics_.flow) flow_.reset();
   }
+  if ((physics_.dem && physics_.flow) || help) {
+    coupling_ = std::make_unique<Coupling>();
+    PetscCall(coupling_->SetFromOptions(comm_));
+    if (!(physics_.dem && physics_.flow)) coupling_.reset();
+    else PetscCall(coupling_->CheckParticleSize(grid_, 2 * dem_->Radius()));
+  }
   PetscFunctionReturn(0);
 }
 
@@ -76,6 +82,13 @@ PetscErrorCode Simulation::SetUp() {
     if (demStage_ < 0) PetscCall(PetscLogStageRegister("DEM", &demStage_));
     PetscCall(PetscLogStagePush(demStage_));
     PetscCall(dem_->SetUp(grid_, gravity_, (std::uint64_t)seed_));
+    PetscCall(PetscLogStagePop());
+  }
+  if (coupling_) {
+    PetscCall(PetscLogStageGetId("Coupling", &couplingStage_));
+    if (couplingStage_ < 0) PetscCall(PetscLogStageRegister("Coupling", &couplingStage_));
+    PetscCall(PetscLogStagePush(couplingStage_));
+    PetscCall(coupling_->SetUp(*flow_, *dem_));
     PetscCall(PetscLogStagePop());
   }
   PetscCall(ChooseTimeStep());
@@ -110,7 +123,7 @@ PetscErrorCode Simulation::ChooseTimeStep() {
   PetscReal limit = PETSC_MAX_REAL;
 
   PetscFunctionBeginUser;
-  if (physics_.dem) {
+  if (physics_.dem && !coupling_) {  // coupled, the DEM sub-steps inside the fluid step (Coupling.hpp)
     limit        = dem_->StableTimeStep();
     dtLimitName_ = dem_->TimeStepBasis();
   }
@@ -148,13 +161,30 @@ PetscErrorCode Simulation::ChooseTimeStep() {
 PetscErrorCode Simulation::Step() {
   PetscFunctionBeginUser;
   const PetscReal dt = finalTime_ < PETSC_MAX_REAL ? std::min(dt_, finalTime_ - time_) : dt_;
-  // The coupled step (ARCHITECTURE.md): with particles only, steps 2 and 6 are one DEM step.
-  if (physics_.dem) {
+  // The coupled step (ARCHITECTURE.md, Coupling.hpp): projection, flow step, averaging, DEM sub-steps.
+  if (coupling_) {
+    PetscCall(PetscLogStagePush(couplingStage_));
+    PetscCall(coupling_->Project());
+    PetscCall(PetscLogStagePop());
+    PetscCall(PetscLogStagePush(flowStage_));
+    PetscCall(flow_->Step(time_, dt));
+    PetscCall(PetscLogStagePop());
+    PetscCall(PetscLogStagePush(couplingStage_));
+    PetscCall(coupling_->Average());
+    PetscCall(PetscLogStagePop());
+    PetscCall(PetscLogStagePush(demStage_));
+    const PetscInt n = coupling_->Substeps(dt);
+    for (PetscInt k = 0; k < n; ++k) PetscCall(dem_->Step(dt / n));
+    PetscCall(PetscLogStagePop());
+    coupling_->Finish(dt);
+  }
+  // With particles only, steps 2 and 6 are one DEM step.
+  if (physics_.dem && !coupling_) {
     PetscCall(PetscLogStagePush(demStage_));
     PetscCall(dem_->Step(dt));
     PetscCall(PetscLogStagePop());
   }
-  if (physics_.flow) {
+  if (physics_.flow && !coupling_) {
     PetscCall(PetscLogStagePush(flowStage_));
     PetscCall(flow_->Step(time_, dt));
     PetscCall(PetscLogStagePop());
@@ -260,7 +290,8 @@ PetscErrorCode Simulation::View(PetscViewer viewer) const {
   PetscCall(grid_.View(viewer));
   if (dem_) PetscCall(dem_->View(viewer));
   if (flow_) PetscCall(flow_->View(viewer));
-  if (physics_.dem) PetscCall(PetscViewerASCIIPrintf(viewer, "time step limits: dem %g s\n", (double)dem_->StableTimeStep()));
+  if (coupling_) PetscCall(coupling_->View(viewer, dt_));
+  if (physics_.dem) PetscCall(PetscViewerASCIIPrintf(viewer, "time step limits: dem %g s%s\n", (double)dem_->StableTimeStep(), coupling_ ? " (sub-steps inside the fluid step)" : ""));
   if (physics_.flow) {
     PetscReal   f;
     std::string basis;
@@ -284,6 +315,7 @@ PetscErrorCode Simulation::SaveState(PetscViewer viewer) {
     PetscCall(flow_->Save(viewer));
     PetscCall(PetscViewerHDF5PopGroup(viewer));
   }
+  if (coupling_) PetscCall(coupling_->Save(viewer));
   PetscFunctionReturn(0);
 }
 
@@ -305,6 +337,7 @@ PetscErrorCode Simulation::LoadState(PetscViewer viewer) {
     PetscCall(flow_->Load(viewer));
     PetscCall(PetscViewerHDF5PopGroup(viewer));
   }
+  if (coupling_) PetscCall(coupling_->Load(viewer));
   PetscFunctionReturn(0);
 }
 
@@ -313,6 +346,8 @@ PetscErrorCode Simulation::Destroy() {
   PetscCall(checkpoint_.Destroy());
   if (csv_) std::fclose(csv_);
   csv_ = nullptr;
+  if (coupling_) PetscCall(coupling_->Destroy());
+  coupling_.reset();
   if (dem_) PetscCall(dem_->Destroy());
   dem_.reset();
   if (flow_) PetscCall(flow_->Destroy());

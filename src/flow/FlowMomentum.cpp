@@ -167,7 +167,7 @@ PetscErrorCode Flow::SolidWallTerms() {
 //   (eps rho)_f [u^n/dt + AB2(H) + g + f^{n+1/2} - (1/rho)_f G p] + 1/2 L u^n + (boundary part)
 // and with explicit viscosity L/(eps rho)_f joins H in the AB2 extrapolation.
 PetscErrorCode Flow::Predict(PetscReal t, PetscReal dt) {
-  LocalField u, H, Ho, L, R, beta, eps, p;
+  LocalField u, H, Ho, L, R, beta, eps, p, A;
   PetscInt   s[3], n[3];
 
   PetscFunctionBeginUser;
@@ -202,6 +202,7 @@ PetscErrorCode Flow::Predict(PetscReal t, PetscReal dt) {
     PetscCall(sg_.GetGlobal(d, haveOld_ ? Hold_[d] : H_[d], &Ho));
     PetscCall(sg_.GetGlobal(d, L_[d], &L));
     PetscCall(sg_.GetGlobal(d, rhsFace_[d], &R));
+    if (faceAcceleration_[d]) PetscCall(sg_.GetGlobal(d, faceAcceleration_[d], &A));
     sg_.Owned(d, s, n);
     const PetscInt  last = sg_.Points(d, d) - 1, cs = beta.stride[d];  // cs: the cell below a face
     const bool      walls = !grid_->Periodic(d);
@@ -211,6 +212,7 @@ PetscErrorCode Flow::Predict(PetscReal t, PetscReal dt) {
         PetscScalar       *uq = &u.at(s[0], j, k), *Rq = &R.at(s[0], j, k);
         const PetscScalar *Hq = &H.at(s[0], j, k), *Hoq = &Ho.at(s[0], j, k), *Lq = &L.at(s[0], j, k);
         const PetscScalar *bq = &beta.at(s[0], j, k), *eq = &eps.at(s[0], j, k), *pq = &p.at(s[0], j, k);
+        const PetscScalar *aq = faceAcceleration_[d] ? &A.at(s[0], j, k) : nullptr;
         const PetscInt     qd = d == 1 ? j : k;  // the face index along d when d is not x
         const bool         rowOnWall = walls && d != 0 && (qd == 0 || qd == last);
         for (PetscInt i = 0; i < n[0]; ++i) {
@@ -223,6 +225,7 @@ PetscErrorCode Flow::Predict(PetscReal t, PetscReal dt) {
           const PetscReal invRho = bF / eF, epsRho = eF * eF / bF;
           PetscReal       acc = c1 * PetscRealPart(Hq[i]) + c0 * PetscRealPart(Hoq[i]) + gravity_[d];
           acc -= invRho * PetscRealPart(pq[i] - pq[i - cs]) / h[d];
+          if (aq) acc += PetscRealPart(aq[i]);
           if (forcing_) {
             const PetscInt q[3] = {s[0] + i, j, k};
             PetscReal      x[3];
@@ -238,6 +241,7 @@ PetscErrorCode Flow::Predict(PetscReal t, PetscReal dt) {
           } else Rq[i] = uq[i] + dt * acc;
         }
       }
+    if (faceAcceleration_[d]) PetscCall(sg_.RestoreGlobal(d, faceAcceleration_[d], &A));
     PetscCall(sg_.RestoreGlobal(d, rhsFace_[d], &R));
     PetscCall(sg_.RestoreGlobal(d, L_[d], &L));
     PetscCall(sg_.RestoreGlobal(d, haveOld_ ? Hold_[d] : H_[d], &Ho));

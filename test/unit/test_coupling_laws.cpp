@@ -99,3 +99,24 @@ TEST(Kernels, SelfDisturbanceCoefficient) {
   EXPECT_GT(smooth / gauss, 1.0);
   EXPECT_LT(smooth / gauss, 1.3);
 }
+
+TEST(Kernels, OseenSelfDisturbance) {
+  // An independent double quadrature of Kernel.hpp's integral for a Gaussian of width 1, whose transform
+  // is exp(-k^2/2): C = 1/(8 pi^3) int 2 pi dk int_-1^1 dc exp(-k^2) (1 - c^2)/(1 + (Re/k)^2 c^2).
+  const double Re = 3;
+  double       brute = 0;
+  const int    nk = 3000, nc = 2000;
+  for (int i = 0; i < nk; ++i) {
+    const double k = (i + 0.5) * 10.0 / nk;
+    for (int j = 0; j < nc; ++j) {
+      const double c = -1 + (j + 0.5) * 2.0 / nc, a = Re / k;
+      brute += std::exp(-k * k) * (1 - c * c) / (1 + a * a * c * c) * (10.0 / nk) * (2.0 / nc);
+    }
+  }
+  brute *= 2 * M_PI / (8 * M_PI * M_PI * M_PI);
+  const std::vector<double> t = kernel::SelfDisturbanceTable(kernel::Shape::Truncated, 8.0, {0, 1e-4, Re, 30});
+  EXPECT_NEAR(t[2] / brute, 1, 1e-4);
+  EXPECT_NEAR(t[1] / t[0], 1, 1e-4);        // the Stokes limit
+  EXPECT_LT(t[2], 0.6 * t[0]);              // Re_H = 3 already more than halves it
+  EXPECT_LT(t[3], t[2]);                    // and it keeps falling
+}

@@ -5,6 +5,7 @@
 
 #include "vofdem/core/Checkpoint.hpp"
 #include "vofdem/core/Physics.hpp"
+#include "vofdem/coupling/Coupling.hpp"
 #include "vofdem/dem/Dem.hpp"
 #include "vofdem/flow/Flow.hpp"
 #include "vofdem/grid/Grid.hpp"
@@ -38,6 +39,7 @@ public:
   const PhysicsSet &Physics() const { return physics_; }
   Dem       *Particles() { return dem_.get(); }
   Flow      *Fluid() { return flow_.get(); }
+  Coupling  *Coupled() { return coupling_.get(); }
   const Grid &GetGrid() const { return grid_; }
 
 private:
@@ -49,6 +51,7 @@ private:
   Grid       grid_;
   std::unique_ptr<Dem> dem_;
   std::unique_ptr<Flow> flow_;
+  std::unique_ptr<Coupling> coupling_;  // -physics dem,flow
   Checkpoint checkpoint_;
 
   PetscReal time_ = 0, dt_ = 0, dtUser_ = 0, finalTime_ = PETSC_MAX_REAL;
@@ -60,7 +63,7 @@ private:
   std::string dtLimitName_;
   FILE     *csv_ = nullptr;
   PetscLogDouble wallStart_ = 0;
-  PetscLogStage  demStage_  = -1, flowStage_ = -1;
+  PetscLogStage  demStage_  = -1, flowStage_ = -1, couplingStage_ = -1;
 };
 
 }  // namespace vofdem

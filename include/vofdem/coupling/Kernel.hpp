@@ -11,6 +11,7 @@
 #pragma once
 
 #include <cmath>
+#include <vector>
 
 namespace vofdem {
 namespace kernel {
@@ -41,14 +42,20 @@ inline double Weight(Shape s, double r2, double H, double rc) {
   return 0;
 }
 
-// The velocity a particle reads from its own force in unbounded Stokes flow, per unit force and
-// viscosity (m^-1), when the force is projected with a kernel and the fluid averaged with the same
-// kernel (PHYSICS.md K1b): u_self = C F / mu with
-//   C = 1/(3 pi^2) * integral_0^inf |g^(k)|^2 dk,  g^ the kernel's Fourier transform (normalised to 1),
-// from the Stokeslet (I - k k/k^2)/(mu k^2) averaged over directions (2/3). For a Gaussian of width H
-// this is 1/(6 pi^(3/2) H): with Stokes drag 3 pi mu d W, u_self/W = 0.282 d/H (PHYSICS.md's 0.28 d/H).
-// Computed by quadrature for the smooth and truncated kernels.
-double SelfDisturbanceCoefficient(Shape s, double H, double truncation);
+// The velocity a particle reads from its own force, per unit force and viscosity (m^-1), when the
+// force is projected with a kernel and the fluid averaged with the same kernel (PHYSICS.md K1b):
+// u_self = C F / mu along F. From the steady Oseen equations for a fluid streaming past at the slip
+// speed W (the Stokes limit at W = 0), with g^ the kernel's Fourier transform (normalised to 1):
+//   C = 1/(4 pi^2) int_0^inf |g^(k)|^2 J(W/(nu k)) dk,  J(a) = int_-1^1 (1 - c^2)/(1 + a^2 c^2) dc,
+// J(0) = 4/3. In Stokes flow and for a Gaussian of width H, C = 1/(6 pi^(3/2) H): with Stokes drag
+// 3 pi mu d W, u_self/W = 0.282 d/H (PHYSICS.md's 0.28 d/H). The Oseen factor J matters as soon as
+// Re_H = W H/nu is of order one: at Re_H = 8 (a 1 mm sphere settling at Re 5.5 with H = 1.5 d) the
+// Stokes value overestimates the disturbance several times over.
+// C scales as 1/H at fixed Re_H: the table holds H C at the given Re_H values (quadrature).
+std::vector<double> SelfDisturbanceTable(Shape s, double truncation, const std::vector<double> &ReH);
+inline double SelfDisturbanceCoefficient(Shape s, double H, double truncation, double ReH = 0) {
+  return SelfDisturbanceTable(s, truncation, {ReH})[0] / H;
+}
 
 }  // namespace kernel
 }  // namespace vofdem

@@ -63,6 +63,10 @@ public:
   Vec FluidFraction() const { return eps_; }
   PetscErrorCode PropertiesChanged();
   void SetForcing(Forcing f, void *ctx) { forcing_ = f; forcingCtx_ = ctx; }
+  // An extra acceleration (m/s^2) per face, added in Predict like gravity: the particles' reaction
+  // -F_p/(eps rho)_f of PHYSICS.md (F5), set by the coupling. a[d]: a global vector of Staggered().Face(d),
+  // owned by the caller; nullptr: none.
+  void SetFaceAcceleration(Vec a[3]) { for (int d = 0; d < 3; ++d) faceAcceleration_[d] = a ? a[d] : nullptr; }
   // Makes the velocity field satisfy the boundary conditions and div(eps U) = 0 (an initial projection).
   PetscErrorCode ProjectInitialVelocity();
   // Sets the pressure to the one that balances gravity (done by the first Step unless Load came first).
@@ -125,6 +129,7 @@ private:
   PetscBool haveOld_ = PETSC_FALSE;
   bool      pressureReady_ = false;  // InitialPressure done, or the pressure loaded
   Forcing   forcing_ = nullptr;
+  Vec       faceAcceleration_[3] = {nullptr, nullptr, nullptr};
   void     *forcingCtx_ = nullptr;
   // last step, for the monitor
   FlowSummary last_;
