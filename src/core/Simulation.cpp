@@ -7,6 +7,7 @@
 #include <petscviewerhdf5.h>
 
 #include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <system_error>
 
@@ -107,9 +108,10 @@ PetscErrorCode Simulation::SetUp() {
       if (!ec) csv_ = std::fopen(path.c_str(), append ? "a" : "w");
       ok = csv_ != nullptr;
       if (csv_ && !append)
-        std::fprintf(csv_, "step,time_s,dt_s,particles,kinetic_energy_J,rotational_energy_J,pair_contacts,coordination,wall_contacts,max_overlap_per_diameter,floor_force_z_N,inserted,deleted,wall_time_s%s%s%s\n",
+        std::fprintf(csv_, "step,time_s,dt_s,particles,kinetic_energy_J,rotational_energy_J,pair_contacts,coordination,wall_contacts,max_overlap_per_diameter,floor_force_z_N,inserted,deleted,wall_time_s%s%s%s%s\n",
                      physics_.dem ? dem_->WallLoadColumns().c_str() : "", physics_.dem ? dem_->MonitorHeader().c_str() : "",
-                     physics_.flow ? ",flow_kinetic_energy_J,flow_max_velocity_m_s,flow_max_divergence_1_s,flow_cfl,pressure_iterations,pressure_residual,pressure_pc_reused,viscous_iterations" : "");
+                     physics_.flow ? ",flow_kinetic_energy_J,flow_max_velocity_m_s,flow_max_divergence_1_s,flow_cfl,pressure_iterations,pressure_residual,pressure_pc_reused,viscous_iterations" : "",
+                     coupling_ ? ",coupling_min_eps,coupling_eps_clipped_cells,coupling_drag_x_N,coupling_drag_y_N,coupling_drag_z_N,coupling_exchange_error,coupling_volume_error" : "");
     }
     PetscCallMPI(MPI_Allreduce(&ok, &allOk, 1, MPI_INT, MPI_MIN, comm_));
     if (!allOk) VofdemInputError(comm_, "option -output_dir: cannot create '%s' or write monitor.csv in it", outputDir_.c_str());
@@ -241,6 +243,22 @@ PetscErrorCode Simulation::Monitor() {
     std::snprintf(fb, sizeof fb, ",%.10e,%.10e,%.6e,%.6f,%d,%.6e,%d,%d", (double)fs.kinetic, (double)fs.maxSpeed, (double)fs.maxDivergence, (double)fs.cfl,
                   (int)fs.pressureIterations, (double)fs.pressureResidual, (int)fs.preconditionerReused, (int)fs.viscousIterations);
     extraCsv += fb;
+  }
+  if (coupling_) {  // C3 in every run: the fluid's source is minus the particles' drag, projected volume = particle volume
+    CouplingSummary c;
+    PetscCall(coupling_->Summarize(&c));
+    const PetscReal drag = std::sqrt(c.dragSum[0] * c.dragSum[0] + c.dragSum[1] * c.dragSum[1] + c.dragSum[2] * c.dragSum[2]);
+    PetscReal       miss = 0;
+    for (int d = 0; d < 3; ++d) miss += (c.sourceSum[d] + c.dragSum[d]) * (c.sourceSum[d] + c.dragSum[d]);
+    const PetscReal exch = drag > 0 ? std::sqrt(miss) / drag : 0, verr = c.particleVolume > 0 ? std::fabs(c.projectedVolume / c.particleVolume - 1) : 0;
+    char cb[400];
+    std::snprintf(cb, sizeof cb, "  | coupling eps_min %.4f%s  drag (%.4e, %.4e, %.4e) N  exchange error %.1e  volume error %.1e", (double)c.minEps,
+                  c.clipped ? (" (" + std::to_string((long long)c.clipped) + " cells clipped)").c_str() : "", (double)c.dragSum[0], (double)c.dragSum[1],
+                  (double)c.dragSum[2], (double)exch, (double)verr);
+    flowScreen += cb;
+    std::snprintf(cb, sizeof cb, ",%.6f,%d,%.10e,%.10e,%.10e,%.3e,%.3e", (double)c.minEps, (int)c.clipped, (double)c.dragSum[0], (double)c.dragSum[1], (double)c.dragSum[2],
+                  (double)exch, (double)verr);
+    extraCsv += cb;
   }
   std::string line;
   char        buf[512];

@@ -37,6 +37,13 @@ PetscErrorCode Coupling::SetFromOptions(MPI_Comm comm) {
     PetscCall(opt.Real("-drag_switch", "Fluid fraction at which Gidaspow's law switches from Ergun (below) to Wen-Yu (F6; seed 000: 0.74)", "-", &dragSwitch_, RealRange::LeftOpen(0, 1)));
     PetscCall(opt.Bool("-pressure_force", "Pressure-gradient force -V grad p on the particles (with the hydrostatic pressure it is the buoyancy, P1)", &pressureForce_));
     PetscCall(opt.Bool("-self_correction", "Remove the particle's own disturbance from the velocity it reads (K1b)", &selfCorrection_));
+    std::vector<std::string> fd = {implicitFluid_ ? "implicit" : "explicit"};
+    PetscCall(opt.NameList("-fluid_drag", "The fluid side of the drag: explicit (the particles last drag impulse, exact exchange; needs dt below the fluid relaxation time eps rho/beta) or implicit (relaxation toward the particles velocity: stable in dense beds, but the pressure builds up slowly there)",
+                           {"explicit", "implicit"}, &fd));
+    if (fd.size() != 1) VofdemInputError(comm, "option -coupling_fluid_drag: give implicit or explicit");
+    implicitFluid_ = fd[0] == "implicit" ? PETSC_TRUE : PETSC_FALSE;
+    PetscCall(opt.Real("-self_correction_min_eps", "Apply the self-disturbance correction only to particles whose averaged eps is at least this (it models an isolated particle)", "-",
+                       &selfMinEps_, RealRange::Closed(0, 1)));
     PetscCall(opt.Real("-min_fluid_fraction", "Floor of the fluid fraction eps (cells below it are counted in the monitor)", "-", &minEps_, RealRange::LeftOpen(0, 1)));
   }
   PetscOptionsEnd();
@@ -84,11 +91,18 @@ PetscErrorCode Coupling::SetUp(Flow &flow, Dem &dem) {
     PetscCall(VecDuplicate(faceEps_[d], &gradP_[d]));
     PetscCall(VecDuplicate(faceEps_[d], &accel_[d]));
     PetscCall(VecSet(accel_[d], 0));
+    if (implicitFluid_) {
+      PetscCall(VecDuplicate(faceEps_[d], &rate_[d]));
+      PetscCall(VecDuplicate(faceEps_[d], &target_[d]));
+      PetscCall(VecSet(rate_[d], 0));
+      PetscCall(VecSet(target_[d], 0));
+    }
   }
   PetscCall(DMCreateLocalVector(sg.Cells(), &cellLocal_));
   PetscCall(DMCreateLocalVector(sg.Cells(), &rhoLocal_));
   PetscCall(DMCreateGlobalVector(sg.Cells(), &volume_));
   flow.SetFaceAcceleration(accel_);
+  if (implicitFluid_) flow.SetFaceRelaxation(rate_, target_);
   dem.SetFluidCoupled(true);
   PetscCall(PetscLogEventRegister("CouplingProject", DM_CLASSID, &evProject_));
   PetscCall(PetscLogEventRegister("CouplingAverage", DM_CLASSID, &evAverage_));
@@ -107,10 +121,10 @@ PetscErrorCode Coupling::View(PetscViewer viewer, PetscReal dt) const {
   const PetscReal *h = flow_->Staggered().Base().Spacing();
   const PetscReal  Vc = h[0] * h[1] * h[2], hmax = std::max(h[0], std::max(h[1], h[2]));
   const PetscReal  rho = flow_->ReferenceDensity(), mu = flow_->ReferenceViscosity();
-  PetscCall(PetscViewerASCIIPrintf(viewer, "coupling: kernel %s, H = max(%g d, %g cells)%s, drag %s%s, pressure-gradient force %s, self-disturbance correction (K1b) %s, ghost width %d cells\n",
+  PetscCall(PetscViewerASCIIPrintf(viewer, "coupling: kernel %s, H = max(%g d, %g cells)%s, drag %s%s (fluid side %s), pressure-gradient force %s, self-disturbance correction (K1b) %s, ghost width %d cells\n",
                                    kernelName_.c_str(), (double)kappa_, (double)minWidthCells_,
                                    kernel_.shape == kernel::Shape::Truncated ? (", cut at " + std::to_string((double)kernel_.truncation) + " H").c_str() : "",
-                                   drag::Name(law_), law_ == drag::Law::Gidaspow ? (" (switch at eps " + std::to_string((double)dragSwitch_) + ")").c_str() : "",
+                                   drag::Name(law_), law_ == drag::Law::Gidaspow ? (" (switch at eps " + std::to_string((double)dragSwitch_) + ")").c_str() : "", implicitFluid_ ? "implicit" : "explicit",
                                    pressureForce_ ? "on" : "off", selfCorrection_ ? "on" : "off", (int)avg_.GhostWidth()));
   const PetscReal rhoP = dem_->Material().density;
   std::vector<PetscReal> radii = {dem_->MinRadius()};
@@ -149,8 +163,9 @@ PetscErrorCode Coupling::Load(PetscViewer viewer) {
 PetscErrorCode Coupling::Destroy() {
   PetscFunctionBeginUser;
   if (flow_) flow_->SetFaceAcceleration(nullptr);
+  if (flow_) flow_->SetFaceRelaxation(nullptr, nullptr);
   for (int d = 0; d < 3; ++d)
-    for (Vec *v : {&faceEps_[d], &gradP_[d], &accel_[d]}) PetscCall(VecDestroy(v));
+    for (Vec *v : {&faceEps_[d], &gradP_[d], &accel_[d], &rate_[d], &target_[d]}) PetscCall(VecDestroy(v));
   for (Vec *v : {&cellLocal_, &rhoLocal_, &volume_}) PetscCall(VecDestroy(v));
   PetscCall(avg_.Destroy());
   PetscFunctionReturn(0);

@@ -75,8 +75,46 @@ PetscErrorCode Coupling::Project() {
   PetscCall(DMGlobalToLocal(sg.Cells(), flow_->Density(), INSERT_VALUES, rhoLocal_));
   PetscCall(sg.GetLocal(3, cellLocal_, &eps));
   PetscCall(sg.GetLocal(3, rhoLocal_, &rho));
+  PetscReal source[3] = {0, 0, 0};
+  std::vector<PetscReal> kv(implicitFluid_ ? a.n : 0);
   for (int d = 0; d < 3; ++d) {
     PetscCall(VecSet(accel_[d], 0));
+    if (implicitFluid_) {  // K_p and K_p v_p to the faces: the rate and the target of the relaxation
+      LocalField C, W, U;
+      for (PetscInt p = 0; p < a.n; ++p) kv[p] = a.fluidDrag[p] * a.v[3 * p + d];
+      PetscCall(VecSet(rate_[d], 0));
+      PetscCall(VecSet(target_[d], 0));
+      PetscCall(avg_.Deposit(d, a.n, a.x, H_.data(), a.fluidDrag, 1, rate_[d]));
+      PetscCall(avg_.Deposit(d, a.n, a.x, H_.data(), kv.data(), 1, target_[d]));
+      PetscCall(sg.GetGlobal(d, rate_[d], &C));
+      PetscCall(sg.GetGlobal(d, target_[d], &W));
+      PetscCall(sg.GetGlobal(d, flow_->Velocity(d), &U));
+      sg.Owned(d, s, n);
+      const PetscInt last = sg.Points(d, d) - 1;
+      for (PetscInt k = s[2]; k < s[2] + n[2]; ++k)
+        for (PetscInt j = s[1]; j < s[1] + n[1]; ++j)
+          for (PetscInt i = s[0]; i < s[0] + n[0]; ++i) {
+            PetscInt q[3] = {i, j, k}, cm[3] = {i, j, k};
+            if (!sg.Base().Periodic(d) && (q[d] == 0 || q[d] == last)) continue;
+            const PetscReal K = PetscRealPart(C.at(q));
+            if (!(K > 0)) {
+              C.at(q) = 0, W.at(q) = 0;
+              continue;
+            }
+            cm[d] -= 1;
+            const PetscReal eL = PetscRealPart(eps.at(cm)), eR = PetscRealPart(eps.at(q));
+            const PetscReal bL = eL / PetscRealPart(rho.at(cm)), bR = eR / PetscRealPart(rho.at(q));
+            const PetscReal eF = 0.5 * (eL + eR), bF = 2 * bL * bR / (bL + bR);
+            const PetscReal w = PetscRealPart(W.at(q)) / K;
+            source[d] += K * (w - PetscRealPart(U.at(q)));  // the fluid's drag at the start of the step, N
+            W.at(q) = w;
+            C.at(q) = K / (Vc * eF * eF / bF);
+          }
+      PetscCall(sg.RestoreGlobal(d, flow_->Velocity(d), &U));
+      PetscCall(sg.RestoreGlobal(d, target_[d], &W));
+      PetscCall(sg.RestoreGlobal(d, rate_[d], &C));
+      continue;
+    }
     PetscCall(avg_.Deposit(d, a.n, a.x, H_.data(), lastForce_.data() + d, 3, accel_[d]));
     PetscCall(sg.GetGlobal(d, accel_[d], &A));
     sg.Owned(d, s, n);
@@ -90,12 +128,14 @@ PetscErrorCode Coupling::Project() {
           const PetscReal eL = PetscRealPart(eps.at(cm)), eR = PetscRealPart(eps.at(q));
           const PetscReal bL = eL / PetscRealPart(rho.at(cm)), bR = eR / PetscRealPart(rho.at(q));
           const PetscReal eF = 0.5 * (eL + eR), bF = 2 * bL * bR / (bL + bR);
+          source[d] -= PetscRealPart(A.at(q));
           A.at(q) = -PetscRealPart(A.at(q)) / (Vc * eF * eF / bF);
         }
     PetscCall(sg.RestoreGlobal(d, accel_[d], &A));
   }
   PetscCall(sg.RestoreLocal(3, rhoLocal_, &rho));
   PetscCall(sg.RestoreLocal(3, cellLocal_, &eps));
+  PetscCallMPI(MPI_Allreduce(source, last_.sourceSum, 3, MPIU_REAL, MPIU_SUM, comm_));
   PetscCall(sw.RestoreArrays(&a));
   PetscCall(PetscLogEventEnd(evProject_, 0, 0, 0, 0));
   PetscFunctionReturn(0);
@@ -166,7 +206,11 @@ PetscErrorCode Coupling::Average() {
     }
     // K1b: the fluid read back the particle's own reaction -F_last, spread by its kernel: C F/mu, with
     // the Oseen coefficient at the slip it causes (a few fixed-point passes: C falls as the slip grows).
-    for (int it = 0; selfCorrection_ && it < 4; ++it) {
+    // The estimate is that of an isolated particle in unbounded fluid: among neighbours (eps below
+    // -coupling_self_correction_min_eps) the fluid around a particle is held by continuity, and in a
+    // packed bed the correction's gain C K/mu exceeds 1, so that it would feed on itself: it is left out there.
+    const bool dilute = e[p] >= selfMinEps_;
+    for (int it = 0; selfCorrection_ && dilute && it < 4; ++it) {
       const PetscReal C = SelfCoefficient(H_[p], std::sqrt(slip2) * H_[p] * rho / mu);
       slip2 = 0;
       for (int c = 0; c < 3; ++c) {

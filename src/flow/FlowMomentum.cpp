@@ -255,6 +255,19 @@ PetscErrorCode Flow::Predict(PetscReal t, PetscReal dt) {
     } else {
       PetscCall(VecCopy(rhsFace_[d], u_[d]));
     }
+    if (relaxRate_[d]) {  // SetFaceRelaxation: implicit linear drag, split from the predictor
+      PetscScalar       *uu;
+      const PetscScalar *c, *w;
+      PetscInt           m;
+      PetscCall(VecGetLocalSize(u_[d], &m));
+      PetscCall(VecGetArray(u_[d], &uu));
+      PetscCall(VecGetArrayRead(relaxRate_[d], &c));
+      PetscCall(VecGetArrayRead(relaxTarget_[d], &w));
+      for (PetscInt k = 0; k < m; ++k) uu[k] = (uu[k] + dt * c[k] * w[k]) / (1 + dt * c[k]);
+      PetscCall(VecRestoreArrayRead(relaxTarget_[d], &w));
+      PetscCall(VecRestoreArrayRead(relaxRate_[d], &c));
+      PetscCall(VecRestoreArray(u_[d], &uu));
+    }
     PetscCall(bc_.ApplyNormal(sg_, d, u_[d]));
   }
   PetscCall(sg_.RestoreLocal(3, pLocal_, &p));
