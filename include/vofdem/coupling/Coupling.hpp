@@ -11,7 +11,7 @@
 //     beds of a light fluid need for stability (CFDEM's implicit coupling likewise); the exchange is then
 //     exact in steady state and lags by a step in between. The pressure projection does not see this
 //     drag, so a dense bed builds its pressure drop only over about dt K/(V eps rho) steps: measured
-//     in ex30, not yet fixed (the drag belongs in the projection's coefficient);
+//     in ex34, not yet fixed (the drag belongs in the projection's coefficient);
 //  2. the flow step;
 //  3. averaging (K1, K2) at every particle: fluid velocity and eps (eps-weighted), pressure gradient
 //     (unweighted); the drag coefficient K of the chosen law (DragLaws.hpp) from the slip, after the

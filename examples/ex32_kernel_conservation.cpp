@@ -221,5 +221,5 @@ int main(int argc, char **argv) {
   test:
     suffix: 2
     nsize: 2
-    output_file: output/ex28_kernel_conservation_1.out
+    output_file: output/ex32_kernel_conservation_1.out
 TEST*/

@@ -147,5 +147,5 @@ int main(int argc, char **argv) {
   test:
     suffix: 2
     nsize: 2
-    output_file: output/ex29_settling_sphere_1.out
+    output_file: output/ex33_settling_sphere_1.out
 TEST*/

@@ -101,7 +101,7 @@ PetscErrorCode Run() {
   PetscInt    nv = 16, particles = 1600, steps = 30, failures = 0;
   char        drag[64] = "gidaspow";
   PetscBool   set;
-  std::string bed = "ex30_bed.csv";
+  std::string bed = "ex34_bed.csv";
 
   PetscFunctionBeginUser;
   PetscCall(PetscOptionsGetRealArray(nullptr, nullptr, "-velocities", vel, &nv, &set));
