@@ -42,10 +42,11 @@ PetscErrorCode MakePhysicsSet(MPI_Comm comm, const std::vector<std::string> &nam
     set->vof    = set->vof || n == "vof";
     set->energy = set->energy || n == "energy";
   }
-  // Particles and fluid in one scene need the coupling (K1-K3), which this build does not have yet:
-  // running both side by side would look coupled and not be.
-  if (set->dem && set->flow) VofdemInputError(comm, "option -physics: 'dem' with 'flow' needs the particle-fluid coupling, not available in this build yet");
+  // Particles and fluid in one scene are coupled (src/coupling, -coupling_*).
   if (set->vof && !set->flow) VofdemInputError(comm, "option -physics: 'vof' needs 'flow' (the interface moves with the fluid)");
+  // The coupled step does not yet carry the interface (its forces on particles, eps in its transport).
+  if (set->vof && set->dem)
+    VofdemInputError(comm, "option -physics: particles with a free surface (dem,flow,vof) are not available yet; use dem,flow or flow,vof");
   PetscFunctionReturn(0);
 }
 

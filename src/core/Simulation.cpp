@@ -7,6 +7,7 @@
 #include <petscviewerhdf5.h>
 
 #include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <system_error>
 
@@ -60,6 +61,12 @@ PetscErrorCode Simulation::SetFromOptions() {
     PetscCall(vof_->SetFromOptions(grid_));
     if (!physics_.vof) vof_.reset();
   }
+  if ((physics_.dem && physics_.flow) || help) {
+    coupling_ = std::make_unique<Coupling>();
+    PetscCall(coupling_->SetFromOptions(comm_));
+    if (!(physics_.dem && physics_.flow)) coupling_.reset();
+    else PetscCall(coupling_->CheckParticleSize(grid_, 2 * dem_->Radius()));
+  }
   PetscFunctionReturn(0);
 }
 
@@ -96,6 +103,13 @@ PetscErrorCode Simulation::SetUp() {
     PetscCall(dem_->SetUp(grid_, gravity_, (std::uint64_t)seed_));
     PetscCall(PetscLogStagePop());
   }
+  if (coupling_) {
+    PetscCall(PetscLogStageGetId("Coupling", &couplingStage_));
+    if (couplingStage_ < 0) PetscCall(PetscLogStageRegister("Coupling", &couplingStage_));
+    PetscCall(PetscLogStagePush(couplingStage_));
+    PetscCall(coupling_->SetUp(*flow_, *dem_));
+    PetscCall(PetscLogStagePop());
+  }
   PetscCall(ChooseTimeStep());
   PetscCall(checkpoint_.SetUp());
   PetscCall(checkpoint_.Restore(*this));
@@ -112,10 +126,11 @@ PetscErrorCode Simulation::SetUp() {
       if (!ec) csv_ = std::fopen(path.c_str(), append ? "a" : "w");
       ok = csv_ != nullptr;
       if (csv_ && !append)
-        std::fprintf(csv_, "step,time_s,dt_s,particles,kinetic_energy_J,rotational_energy_J,pair_contacts,coordination,wall_contacts,max_overlap_per_diameter,floor_force_z_N,inserted,deleted,wall_time_s%s%s%s%s\n",
+        std::fprintf(csv_, "step,time_s,dt_s,particles,kinetic_energy_J,rotational_energy_J,pair_contacts,coordination,wall_contacts,max_overlap_per_diameter,floor_force_z_N,inserted,deleted,wall_time_s%s%s%s%s%s\n",
                      physics_.dem ? dem_->WallLoadColumns().c_str() : "", physics_.dem ? dem_->MonitorHeader().c_str() : "",
                      physics_.flow ? ",flow_kinetic_energy_J,flow_max_velocity_m_s,flow_max_divergence_1_s,flow_cfl,pressure_iterations,pressure_residual,pressure_pc_reused,viscous_iterations" : "",
-                     physics_.vof ? ",vof_volume_m3,vof_volume_relative_change,vof_bound_violation,vof_interface_cells" : "");
+                     physics_.vof ? ",vof_volume_m3,vof_volume_relative_change,vof_bound_violation,vof_interface_cells" : "",
+                     coupling_ ? ",coupling_min_eps,coupling_eps_clipped_cells,coupling_drag_x_N,coupling_drag_y_N,coupling_drag_z_N,coupling_exchange_error,coupling_volume_error" : "");
     }
     PetscCallMPI(MPI_Allreduce(&ok, &allOk, 1, MPI_INT, MPI_MIN, comm_));
     if (!allOk) VofdemInputError(comm_, "option -output_dir: cannot create '%s' or write monitor.csv in it", outputDir_.c_str());
@@ -129,7 +144,7 @@ PetscErrorCode Simulation::ChooseTimeStep() {
   PetscReal limit = PETSC_MAX_REAL;
 
   PetscFunctionBeginUser;
-  if (physics_.dem) {
+  if (physics_.dem && !coupling_) {  // coupled, the DEM sub-steps inside the fluid step (Coupling.hpp)
     limit        = dem_->StableTimeStep();
     dtLimitName_ = dem_->TimeStepBasis();
   }
@@ -182,8 +197,25 @@ PetscErrorCode Simulation::ChooseTimeStep() {
 PetscErrorCode Simulation::Step() {
   PetscFunctionBeginUser;
   const PetscReal dt = finalTime_ < PETSC_MAX_REAL ? std::min(dt_, finalTime_ - time_) : dt_;
-  // The coupled step (ARCHITECTURE.md): with particles only, steps 2 and 6 are one DEM step.
-  if (physics_.dem) {
+  // The coupled step (ARCHITECTURE.md, Coupling.hpp): projection, flow step, averaging, DEM sub-steps.
+  if (coupling_) {
+    PetscCall(PetscLogStagePush(couplingStage_));
+    PetscCall(coupling_->Project());
+    PetscCall(PetscLogStagePop());
+    PetscCall(PetscLogStagePush(flowStage_));
+    PetscCall(flow_->Step(time_, dt));
+    PetscCall(PetscLogStagePop());
+    PetscCall(PetscLogStagePush(couplingStage_));
+    PetscCall(coupling_->Average());
+    PetscCall(PetscLogStagePop());
+    PetscCall(PetscLogStagePush(demStage_));
+    const PetscInt n = coupling_->Substeps(dt);
+    for (PetscInt k = 0; k < n; ++k) PetscCall(dem_->Step(dt / n));
+    PetscCall(PetscLogStagePop());
+    coupling_->Finish(dt);
+  }
+  // With particles only, steps 2 and 6 are one DEM step.
+  if (physics_.dem && !coupling_) {
     PetscCall(PetscLogStagePush(demStage_));
     PetscCall(dem_->Step(dt));
     PetscCall(PetscLogStagePop());
@@ -193,7 +225,7 @@ PetscErrorCode Simulation::Step() {
     PetscCall(vof_->SurfaceTension(*flow_));
     PetscCall(PetscLogStagePop());
   }
-  if (physics_.flow) {
+  if (physics_.flow && !coupling_) {
     PetscCall(PetscLogStagePush(flowStage_));
     PetscCall(flow_->Step(time_, dt));
     PetscCall(PetscLogStagePop());
@@ -271,6 +303,22 @@ PetscErrorCode Simulation::Monitor() {
     std::snprintf(vb, sizeof vb, ",%.16e,%.6e,%.6e,%d", (double)vs.volume, (double)volErr, (double)vs.boundViolation, (int)vs.interfaceCells);
     extraCsv += vb;
   }
+  if (coupling_) {  // C3 in every run: the fluid's source is minus the particles' drag, projected volume = particle volume
+    CouplingSummary c;
+    PetscCall(coupling_->Summarize(&c));
+    const PetscReal drag = std::sqrt(c.dragSum[0] * c.dragSum[0] + c.dragSum[1] * c.dragSum[1] + c.dragSum[2] * c.dragSum[2]);
+    PetscReal       miss = 0;
+    for (int d = 0; d < 3; ++d) miss += (c.sourceSum[d] + c.dragSum[d]) * (c.sourceSum[d] + c.dragSum[d]);
+    const PetscReal exch = drag > 0 ? std::sqrt(miss) / drag : 0, verr = c.particleVolume > 0 ? std::fabs(c.projectedVolume / c.particleVolume - 1) : 0;
+    char cb[400];
+    std::snprintf(cb, sizeof cb, "  | coupling eps_min %.4f%s  drag (%.4e, %.4e, %.4e) N  exchange error %.1e  volume error %.1e", (double)c.minEps,
+                  c.clipped ? (" (" + std::to_string((long long)c.clipped) + " cells clipped)").c_str() : "", (double)c.dragSum[0], (double)c.dragSum[1],
+                  (double)c.dragSum[2], (double)exch, (double)verr);
+    flowScreen += cb;
+    std::snprintf(cb, sizeof cb, ",%.6f,%d,%.10e,%.10e,%.10e,%.3e,%.3e", (double)c.minEps, (int)c.clipped, (double)c.dragSum[0], (double)c.dragSum[1], (double)c.dragSum[2],
+                  (double)exch, (double)verr);
+    extraCsv += cb;
+  }
   std::string line;
   char        buf[512];
   std::snprintf(buf, sizeof buf, "step %6d  t %.6e s  dt %.3e s", (int)step_, (double)time_, (double)dt_);
@@ -320,7 +368,8 @@ PetscErrorCode Simulation::View(PetscViewer viewer) const {
   if (dem_) PetscCall(dem_->View(viewer));
   if (flow_) PetscCall(flow_->View(viewer));
   if (vof_) PetscCall(vof_->View(viewer));
-  if (physics_.dem) PetscCall(PetscViewerASCIIPrintf(viewer, "time step limits: dem %g s\n", (double)dem_->StableTimeStep()));
+  if (coupling_) PetscCall(coupling_->View(viewer, dt_));
+  if (physics_.dem) PetscCall(PetscViewerASCIIPrintf(viewer, "time step limits: dem %g s%s\n", (double)dem_->StableTimeStep(), coupling_ ? " (sub-steps inside the fluid step)" : ""));
   if (physics_.flow) {
     PetscReal   f;
     std::string basis;
@@ -350,6 +399,7 @@ PetscErrorCode Simulation::SaveState(PetscViewer viewer) {
     PetscCall(PetscViewerHDF5WriteAttribute(viewer, "/vof", "vof_initial_volume", PETSC_REAL, &vofVolume0_));
     PetscCall(PetscViewerHDF5PopGroup(viewer));
   }
+  if (coupling_) PetscCall(coupling_->Save(viewer));
   PetscFunctionReturn(0);
 }
 
@@ -393,6 +443,7 @@ PetscErrorCode Simulation::LoadState(PetscViewer viewer) {
     PetscCall(PetscViewerHDF5ReadAttribute(viewer, "/vof", "vof_initial_volume", PETSC_REAL, nullptr, &vofVolume0_));
     PetscCall(PetscViewerHDF5PopGroup(viewer));
   }
+  if (coupling_) PetscCall(coupling_->Load(viewer));
   PetscFunctionReturn(0);
 }
 
@@ -401,6 +452,8 @@ PetscErrorCode Simulation::Destroy() {
   PetscCall(checkpoint_.Destroy());
   if (csv_) std::fclose(csv_);
   csv_ = nullptr;
+  if (coupling_) PetscCall(coupling_->Destroy());
+  coupling_.reset();
   if (dem_) PetscCall(dem_->Destroy());
   dem_.reset();
   if (vof_) PetscCall(vof_->Destroy());

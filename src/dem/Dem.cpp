@@ -218,7 +218,11 @@ PetscErrorCode Dem::SetUp(Grid &grid, const PetscReal gravity[3], std::uint64_t 
 }
 
 // Half a velocity-Verlet kick: v += dt/2 F/m, w += dt/2 T/I with I = 2/5 m R^2 (spheres; clump
-// members move with their clump, Clumps::Kick).
+// members move with their clump, Clumps::Kick). Coupled to
+// a fluid (Coupling.hpp), the other fluid forces join F and the drag K (u - v) is taken implicitly,
+// v' = (v + (h K/m) u)/(1 + h K/m) (stable for any response time m/K); its impulse is summed for the
+// fluid's reaction (PHYSICS.md F5), so the fluid gets exactly what the particles got.
+template <bool fluid>
 static void HalfKick(const ParticleArrays &a, PetscReal dt) {
   for (PetscInt p = 0; p < a.n; ++p) {
     if (a.clump[p] >= 0) continue;
@@ -227,7 +231,22 @@ static void HalfKick(const ParticleArrays &a, PetscReal dt) {
       a.v[3 * p + d] += h * a.f[3 * p + d];
       a.omega[3 * p + d] += hI * a.torque[3 * p + d];
     }
+    if (fluid) {
+      const PetscReal c = h * a.fluidDrag[p];
+      for (int d = 0; d < 3; ++d) {
+        const PetscReal v = a.v[3 * p + d] + h * a.fluidForce[3 * p + d];
+        const PetscReal u = a.fluidVelocity[3 * p + d];
+        const PetscReal w = (v + c * u) / (1 + c);
+        a.fluidImpulse[3 * p + d] += a.mass[p] * (w - v);
+        a.v[3 * p + d] = w;
+      }
+    }
   }
+}
+
+static void HalfKick(const ParticleArrays &a, PetscReal dt, bool fluid) {
+  if (fluid) HalfKick<true>(a, dt);
+  else HalfKick<false>(a, dt);
 }
 
 // Velocity Verlet for translation and rotation. Forces are evaluated with the half-step
@@ -240,7 +259,7 @@ PetscErrorCode Dem::Step(PetscReal dt) {
   record_.on = out_.NeedsContacts(++steps_);
   PetscCall(PetscLogEventBegin(evIntegrate_, 0, 0, 0, 0));
   PetscCall(swarm_.GetArrays(&a));
-  HalfKick(a, dt);
+  HalfKick(a, dt, fluidCoupled_);
   for (PetscInt p = 0; p < a.n; ++p)
     if (a.clump[p] < 0)
       for (int d = 0; d < 3; ++d) a.x[3 * p + d] += dt * a.v[3 * p + d];
@@ -268,7 +287,7 @@ PetscErrorCode Dem::Step(PetscReal dt) {
   PetscCall(PetscLogEventEnd(evForces_, 0, 0, 0, 0));
   PetscCall(PetscLogEventBegin(evIntegrate_, 0, 0, 0, 0));
   PetscCall(swarm_.GetArrays(&a));
-  HalfKick(a, dt);
+  HalfKick(a, dt, fluidCoupled_);
   clumps_.Kick(a, dt, false);
   PetscCall(swarm_.RestoreArrays(&a));
   PetscCall(PetscLogEventEnd(evIntegrate_, 0, 0, 0, 0));

@@ -202,10 +202,11 @@ PetscErrorCode Dem::ReadParticles() {
     if (!(r[11] >= -1 && r[11] == std::floor(r[11]))) VofdemInputError(comm_, "%s:%d: the clump must be an integer id >= 0 (or -1: none)", particlesFile_.c_str(), lineNo);
     if (!(r[10] >= 0 && r[10] < (PetscReal)types_.size() && r[10] == std::floor(r[10])))
       VofdemInputError(comm_, "%s:%d: the type must be an index into -dem_types, 0 to %d", particlesFile_.c_str(), lineNo, (int)types_.size() - 1);
-    // A settled particle rests with a small overlap on a wall: accept up to 5 % of the radius.
+    // A settled particle rests with a small overlap on a wall: accept up to 5 % of the radius. Along a
+    // periodic direction there is no wall: the centre must lie in the box.
     const PetscReal inside = 0.95 * r[9];
     for (int d = 0; d < 3; ++d)
-      if (r[d] - inside < grid_->Lower()[d] || r[d] + inside > grid_->Upper()[d])
+      if (grid_->Periodic(d) ? (r[d] < grid_->Lower()[d] || r[d] >= grid_->Upper()[d]) : (r[d] - inside < grid_->Lower()[d] || r[d] + inside > grid_->Upper()[d]))
         VofdemInputError(comm_, "%s:%d: the particle at (%g, %g, %g) m with radius %g m is not inside the box (or overlaps a wall by more than 5 %% of its radius)",
                          particlesFile_.c_str(), lineNo, (double)r[0], (double)r[1], (double)r[2], (double)r[9]);
     rows.push_back(r);

@@ -25,6 +25,10 @@ PetscErrorCode ParticleSwarm::Create(const Grid &grid) {
   PetscCall(DMSwarmRegisterPetscDatatypeField(swarm_, field::type, 1, PETSC_INT));
   PetscCall(DMSwarmRegisterPetscDatatypeField(swarm_, field::clump, 1, PETSC_INT64));
   PetscCall(DMSwarmRegisterPetscDatatypeField(swarm_, field::rigid, kRigidWidth, PETSC_REAL));
+  PetscCall(DMSwarmRegisterPetscDatatypeField(swarm_, field::fluidDrag, 1, PETSC_REAL));
+  PetscCall(DMSwarmRegisterPetscDatatypeField(swarm_, field::fluidVelocity, 3, PETSC_REAL));
+  PetscCall(DMSwarmRegisterPetscDatatypeField(swarm_, field::fluidForce, 3, PETSC_REAL));
+  PetscCall(DMSwarmRegisterPetscDatatypeField(swarm_, field::fluidImpulse, 3, PETSC_REAL));
 
   PetscCall(DMSwarmFinalizeFieldRegister(swarm_));
   PetscCall(DMSwarmSetLocalSizes(swarm_, 0, 64));
@@ -52,6 +56,10 @@ PetscErrorCode ParticleSwarm::GetArrays(ParticleArrays *a) const {
   PetscCall(DMSwarmGetField(swarm_, field::type, nullptr, nullptr, (void **)&a->type));
   PetscCall(DMSwarmGetField(swarm_, field::clump, nullptr, nullptr, (void **)&a->clump));
   PetscCall(DMSwarmGetField(swarm_, field::rigid, nullptr, nullptr, (void **)&a->rigid));
+  PetscCall(DMSwarmGetField(swarm_, field::fluidDrag, nullptr, nullptr, (void **)&a->fluidDrag));
+  PetscCall(DMSwarmGetField(swarm_, field::fluidVelocity, nullptr, nullptr, (void **)&a->fluidVelocity));
+  PetscCall(DMSwarmGetField(swarm_, field::fluidForce, nullptr, nullptr, (void **)&a->fluidForce));
+  PetscCall(DMSwarmGetField(swarm_, field::fluidImpulse, nullptr, nullptr, (void **)&a->fluidImpulse));
 
   PetscFunctionReturn(0);
 }
@@ -60,6 +68,10 @@ PetscErrorCode ParticleSwarm::RestoreArrays(ParticleArrays *a) const {
   PetscFunctionBeginUser;
 
   PetscCall(DMSwarmRestoreField(swarm_, field::rigid, nullptr, nullptr, (void **)&a->rigid));
+  PetscCall(DMSwarmRestoreField(swarm_, field::fluidImpulse, nullptr, nullptr, (void **)&a->fluidImpulse));
+  PetscCall(DMSwarmRestoreField(swarm_, field::fluidForce, nullptr, nullptr, (void **)&a->fluidForce));
+  PetscCall(DMSwarmRestoreField(swarm_, field::fluidVelocity, nullptr, nullptr, (void **)&a->fluidVelocity));
+  PetscCall(DMSwarmRestoreField(swarm_, field::fluidDrag, nullptr, nullptr, (void **)&a->fluidDrag));
   PetscCall(DMSwarmRestoreField(swarm_, field::clump, nullptr, nullptr, (void **)&a->clump));
   PetscCall(DMSwarmRestoreField(swarm_, field::type, nullptr, nullptr, (void **)&a->type));
   PetscCall(DMSwarmRestoreField(swarm_, field::torque, nullptr, nullptr, (void **)&a->torque));
@@ -91,6 +103,14 @@ PetscErrorCode ParticleSwarm::AddLocal(PetscInt n, PetscInt *first) {
   for (PetscInt p = *first; p < *first + n; ++p)
     for (int k = 0; k < kRigidWidth; ++k) rigid[kRigidWidth * p + k] = k == 0 ? 1 : 0;
   PetscCall(DMSwarmRestoreField(swarm_, field::rigid, nullptr, nullptr, (void **)&rigid));
+  // New particles feel no fluid until the coupling's next update.
+  for (const char *name : {field::fluidDrag, field::fluidVelocity, field::fluidForce, field::fluidImpulse}) {
+    PetscReal *v;
+    PetscInt   bs;
+    PetscCall(DMSwarmGetField(swarm_, name, &bs, nullptr, (void **)&v));
+    for (PetscInt k = *first * bs; k < (*first + n) * bs; ++k) v[k] = 0;
+    PetscCall(DMSwarmRestoreField(swarm_, name, &bs, nullptr, (void **)&v));
+  }
   PetscFunctionReturn(0);
 }
 

@@ -167,7 +167,7 @@ PetscErrorCode Flow::SolidWallTerms() {
 //   (eps rho)_f [u^n/dt + AB2(H) + g + f^{n+1/2} - (1/rho)_f G p] + 1/2 L u^n + (boundary part)
 // and with explicit viscosity L/(eps rho)_f joins H in the AB2 extrapolation.
 PetscErrorCode Flow::Predict(PetscReal t, PetscReal dt) {
-  LocalField u, H, Ho, L, R, beta, eps, p;
+  LocalField u, H, Ho, L, R, beta, eps, p, A;
   PetscInt   s[3], n[3];
 
   PetscFunctionBeginUser;
@@ -202,8 +202,9 @@ PetscErrorCode Flow::Predict(PetscReal t, PetscReal dt) {
     PetscCall(sg_.GetGlobal(d, haveOld_ ? Hold_[d] : H_[d], &Ho));
     PetscCall(sg_.GetGlobal(d, L_[d], &L));
     PetscCall(sg_.GetGlobal(d, rhsFace_[d], &R));
-    LocalField F;  // FaceForce(), when a module asked for it
+    LocalField F, A;  // FaceForce(), when a module asked for it
     if (faceForce_[d]) PetscCall(sg_.GetGlobal(d, faceForce_[d], &F));
+    if (faceAcceleration_[d]) PetscCall(sg_.GetGlobal(d, faceAcceleration_[d], &A));
     sg_.Owned(d, s, n);
     const PetscInt  last = sg_.Points(d, d) - 1, cs = beta.stride[d];  // cs: the cell below a face
     const bool      walls = !grid_->Periodic(d);
@@ -214,6 +215,7 @@ PetscErrorCode Flow::Predict(PetscReal t, PetscReal dt) {
         const PetscScalar *Hq = &H.at(s[0], j, k), *Hoq = &Ho.at(s[0], j, k), *Lq = &L.at(s[0], j, k);
         const PetscScalar *bq = &beta.at(s[0], j, k), *eq = &eps.at(s[0], j, k), *pq = &p.at(s[0], j, k);
         const PetscScalar *Fq = faceForce_[d] ? &F.at(s[0], j, k) : nullptr;
+        const PetscScalar *aq = faceAcceleration_[d] ? &A.at(s[0], j, k) : nullptr;
         const PetscInt     qd = d == 1 ? j : k;  // the face index along d when d is not x
         const bool         rowOnWall = walls && d != 0 && (qd == 0 || qd == last);
         for (PetscInt i = 0; i < n[0]; ++i) {
@@ -227,6 +229,7 @@ PetscErrorCode Flow::Predict(PetscReal t, PetscReal dt) {
           PetscReal       acc = c1 * PetscRealPart(Hq[i]) + c0 * PetscRealPart(Hoq[i]) + gravity_[d];
           acc -= invRho * PetscRealPart(pq[i] - pq[i - cs]) / h[d];
           if (Fq) acc += invRho * PetscRealPart(Fq[i]);  // balanced with the pressure gradient
+          if (aq) acc += PetscRealPart(aq[i]);
           if (forcing_) {
             const PetscInt q[3] = {s[0] + i, j, k};
             PetscReal      x[3];
@@ -243,6 +246,7 @@ PetscErrorCode Flow::Predict(PetscReal t, PetscReal dt) {
         }
       }
     if (faceForce_[d]) PetscCall(sg_.RestoreGlobal(d, faceForce_[d], &F));
+    if (faceAcceleration_[d]) PetscCall(sg_.RestoreGlobal(d, faceAcceleration_[d], &A));
     PetscCall(sg_.RestoreGlobal(d, rhsFace_[d], &R));
     PetscCall(sg_.RestoreGlobal(d, L_[d], &L));
     PetscCall(sg_.RestoreGlobal(d, haveOld_ ? Hold_[d] : H_[d], &Ho));
@@ -255,6 +259,19 @@ PetscErrorCode Flow::Predict(PetscReal t, PetscReal dt) {
       PetscCall(viscous_.Solve(d, rhsFace_[d], u_[d]));
     } else {
       PetscCall(VecCopy(rhsFace_[d], u_[d]));
+    }
+    if (relaxRate_[d]) {  // SetFaceRelaxation: implicit linear drag, split from the predictor
+      PetscScalar       *uu;
+      const PetscScalar *c, *w;
+      PetscInt           m;
+      PetscCall(VecGetLocalSize(u_[d], &m));
+      PetscCall(VecGetArray(u_[d], &uu));
+      PetscCall(VecGetArrayRead(relaxRate_[d], &c));
+      PetscCall(VecGetArrayRead(relaxTarget_[d], &w));
+      for (PetscInt k = 0; k < m; ++k) uu[k] = (uu[k] + dt * c[k] * w[k]) / (1 + dt * c[k]);
+      PetscCall(VecRestoreArrayRead(relaxTarget_[d], &w));
+      PetscCall(VecRestoreArrayRead(relaxRate_[d], &c));
+      PetscCall(VecRestoreArray(u_[d], &uu));
     }
     PetscCall(bc_.ApplyNormal(sg_, d, u_[d]));
   }

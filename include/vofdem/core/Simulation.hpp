@@ -5,6 +5,7 @@
 
 #include "vofdem/core/Checkpoint.hpp"
 #include "vofdem/core/Physics.hpp"
+#include "vofdem/coupling/Coupling.hpp"
 #include "vofdem/dem/Dem.hpp"
 #include "vofdem/flow/Flow.hpp"
 #include "vofdem/grid/Grid.hpp"
@@ -45,6 +46,7 @@ public:
   Dem       *Particles() { return dem_.get(); }
   Flow      *Fluid() { return flow_.get(); }
   Vof       *Interface() { return vof_.get(); }
+  Coupling  *Coupled() { return coupling_.get(); }
   const Grid &GetGrid() const { return grid_; }
 
 private:
@@ -57,6 +59,7 @@ private:
   std::unique_ptr<Flow> flow_;
   std::unique_ptr<Vof>  vof_;
   PetscReal  vofVolume0_ = 0;  // phase-1 volume at the start (monitor: volume error)
+  std::unique_ptr<Coupling> coupling_;  // -physics dem,flow
   Checkpoint checkpoint_;
 
   PetscReal time_ = 0, dt_ = 0, dtUser_ = 0, finalTime_ = PETSC_MAX_REAL;
@@ -68,7 +71,7 @@ private:
   std::string dtLimitName_;
   FILE     *csv_ = nullptr;
   PetscLogDouble wallStart_ = 0;
-  PetscLogStage  demStage_  = -1, flowStage_ = -1, vofStage_ = -1;
+  PetscLogStage  demStage_  = -1, flowStage_ = -1, vofStage_ = -1, couplingStage_ = -1;
 };
 
 }  // namespace vofdem

@@ -96,6 +96,10 @@ public:
   PetscReal          MinRadius() const { return rMin_; }
   PetscReal          MaxRadius() const { return rMax_; }
   DM                 Swarm() const { return swarm_.Dm(); }
+  const ParticleSwarm &Particles() const { return swarm_; }
+  // The fluid coupling (Coupling.hpp) sets the swarm's fluid_* fields; the integrator then applies them.
+  void               SetFluidCoupled(bool on) { fluidCoupled_ = on; }
+  PetscReal          Skin() const { return skin_; }  // Verlet skin: particles stray up to half of it outside their rank's box
   const ParticleSources &Sources() const { return sources_; }  // insertion and deletion books
   PetscReal          FillVolumeFraction() const { return fillReached_; }  // reached by the random fill (0: none)
   // Monitor-table columns of the -dem_walls loads (",wall_<name>_fx_N,..."; empty without walls).
@@ -207,6 +211,7 @@ private:
   std::string particlesFile_;  // CSV: x,y,z,vx,vy,vz[,wx,wy,wz] per line, one header line
   std::string savePath_;       // -dem_save_particles: the same CSV at the end of the run
   PetscInt  inserted_     = 0;
+  bool      fluidCoupled_ = false;
   MPI_Comm  comm_         = MPI_COMM_NULL;
 };
 

@@ -23,6 +23,11 @@ inline constexpr const char *torque   = "torque";              // N m, total tor
 inline constexpr const char *type     = "type";                // particle type (index into -dem_types), PetscInt
 inline constexpr const char *clump    = "clump";               // id of the rigid clump the sphere belongs to, -1: none (P10), PetscInt64
 inline constexpr const char *rigid    = "rigid";               // a clump member's body state (Clumps.hpp), kRigidWidth reals
+// Set by the fluid coupling (Coupling.hpp) once per fluid step, read by every DEM sub-step; zero without it.
+inline constexpr const char *fluidDrag     = "fluid_drag";      // kg/s, drag coefficient K: drag = K (u - v), applied implicitly
+inline constexpr const char *fluidVelocity = "fluid_velocity";  // m/s, the fluid velocity u the drag relaxes to
+inline constexpr const char *fluidForce    = "fluid_force";     // N, the other fluid forces (pressure gradient), explicit
+inline constexpr const char *fluidImpulse  = "fluid_impulse";   // N s, drag impulse received since the coupling last read it
 }  // namespace field
 // q (4), centre in the body frame (3), clump mass, principal moments (3): see Clumps.hpp.
 inline constexpr int kRigidWidth = 11;
@@ -35,6 +40,7 @@ struct ParticleArrays {
   PetscReal  *omega = nullptr, *torque = nullptr, *rigid = nullptr;
   PetscInt64 *id = nullptr, *clump = nullptr;
   PetscInt   *type = nullptr;
+  PetscReal  *fluidDrag = nullptr, *fluidVelocity = nullptr, *fluidForce = nullptr, *fluidImpulse = nullptr;
 };
 
 class ParticleSwarm {

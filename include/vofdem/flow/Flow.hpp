@@ -70,6 +70,18 @@ public:
   // gradient on the pressure's stencil (a balanced-force surface tension) is cancelled exactly by the
   // pressure. The caller fills it before each Step; it is not part of Save (recomputed from the state).
   PetscErrorCode FaceForce(int d, Vec *f);
+  // An extra acceleration (m/s^2) per face, added in Predict like gravity: the particles' reaction
+  // -F_p/(eps rho)_f of PHYSICS.md (F5), set by the coupling. a[d]: a global vector of Staggered().Face(d),
+  // owned by the caller; nullptr: none.
+  void SetFaceAcceleration(Vec a[3]) { for (int d = 0; d < 3; ++d) faceAcceleration_[d] = a ? a[d] : nullptr; }
+  // A linear drag toward a velocity w per face, rate c (1/s), taken implicitly right after the
+  // predictor (operator splitting): u* <- (u* + dt c w)/(1 + dt c). The coupling's fluid side of the
+  // drag in dense beds (F5), whose relaxation time eps rho/beta can be far below dt. c[d], w[d]: global
+  // vectors of Staggered().Face(d), owned by the caller (zero on the faces the boundary conditions set);
+  // nullptr: none.
+  void SetFaceRelaxation(Vec c[3], Vec w[3]) {
+    for (int d = 0; d < 3; ++d) relaxRate_[d] = c ? c[d] : nullptr, relaxTarget_[d] = c ? w[d] : nullptr;
+  }
   // Makes the velocity field satisfy the boundary conditions and div(eps U) = 0 (an initial projection).
   PetscErrorCode ProjectInitialVelocity();
   // Sets the pressure to the one that balances gravity (done by the first Step unless Load came first).
@@ -138,6 +150,8 @@ private:
   bool      pressureReady_ = false;  // InitialPressure done, or the pressure loaded
   Forcing   forcing_ = nullptr;
   Vec       faceForce_[3] = {nullptr, nullptr, nullptr};  // FaceForce(); null unless asked for
+  Vec       faceAcceleration_[3] = {nullptr, nullptr, nullptr};
+  Vec       relaxRate_[3] = {nullptr, nullptr, nullptr}, relaxTarget_[3] = {nullptr, nullptr, nullptr};
   void     *forcingCtx_ = nullptr;
   // last step, for the monitor
   FlowSummary last_;

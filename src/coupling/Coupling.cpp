@@ -1,0 +1,174 @@
+// Options, set-up, banner and Save/Load of the coupling (Coupling.hpp); the step is CouplingStep.cpp.
+#include "vofdem/coupling/Coupling.hpp"
+
+#include "vofdem/core/Options.hpp"
+#include "vofdem/core/Runtime.hpp"
+
+#include <petscviewerhdf5.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace vofdem {
+
+PetscErrorCode Coupling::SetFromOptions(MPI_Comm comm) {
+  PetscFunctionBeginUser;
+  comm_ = comm;
+  PetscOptionsBegin(comm, "coupling_", "Coupling: semi-resolved CFD-DEM (PHYSICS.md K1-K3, F5, F6, P1)", "Coupling");
+  {
+    OptionReader             opt(PetscOptionsObject);
+    std::vector<std::string> k = {kernelName_};
+    PetscCall(opt.NameList("-kernel", "Kernel of averaging and projection: smooth ((1 - r^2/rc^2)^4, rc = sqrt(8) H), truncated (Gaussian cut at -coupling_kernel_truncation H, seed 000), unresolved (the cell that contains the particle)",
+                           {"smooth", "truncated", "unresolved"}, &k));
+    if (k.size() != 1) VofdemInputError(comm, "option -coupling_kernel: give one kernel");
+    kernelName_   = k[0];
+    kernel_.shape = kernelName_ == "smooth" ? kernel::Shape::Smooth : kernelName_ == "truncated" ? kernel::Shape::Truncated : kernel::Shape::Unresolved;
+    PetscCall(opt.Real("-kernel_width", "Kernel width H in particle diameters (kappa of K1: H = kappa d)", "-", &kappa_, RealRange::Positive()));
+    PetscCall(opt.Real("-kernel_min_width", "Smallest kernel width in cells: H = max(kappa d, this x the largest cell spacing), so that coarse cells still see a smooth kernel", "cells",
+                       &minWidthCells_, RealRange::Positive()));
+    if (minWidthCells_ < 0.5)
+      VofdemInputError(comm, "option -coupling_kernel_min_width: %g cells is below the cell size; a kernel narrower than half a cell cannot be sampled by the grid (use 0.5 or more, or -coupling_kernel unresolved)",
+                       (double)minWidthCells_);
+    PetscCall(opt.Real("-kernel_truncation", "Cut-off of the truncated Gaussian kernel, in widths H (seed 000: 1.2-1.5)", "-", &kernel_.truncation, RealRange::LeftOpen(0, 10)));
+    std::vector<std::string> d = {drag::Name(law_)};
+    PetscCall(opt.NameList("-drag", "Drag law (DragLaws.hpp): gidaspow, difelice, wenyu, ergun, schillernaumann, kochhill, beetstra", drag::Names(), &d));
+    if (d.size() != 1) VofdemInputError(comm, "option -coupling_drag: give one drag law");
+    drag::Parse(d[0], &law_);
+    PetscCall(opt.Real("-drag_switch", "Fluid fraction at which Gidaspow's law switches from Ergun (below) to Wen-Yu (F6; seed 000: 0.74)", "-", &dragSwitch_, RealRange::LeftOpen(0, 1)));
+    PetscCall(opt.Bool("-pressure_force", "Pressure-gradient force -V grad p on the particles (with the hydrostatic pressure it is the buoyancy, P1)", &pressureForce_));
+    PetscCall(opt.Bool("-self_correction", "Remove the particle's own disturbance from the velocity it reads (K1b)", &selfCorrection_));
+    std::vector<std::string> fd = {implicitFluid_ ? "implicit" : "explicit"};
+    PetscCall(opt.NameList("-fluid_drag", "The fluid side of the drag: explicit (the particles last drag impulse, exact exchange; needs dt below the fluid relaxation time eps rho/beta) or implicit (relaxation toward the particles velocity: stable in dense beds, but the pressure builds up slowly there)",
+                           {"explicit", "implicit"}, &fd));
+    if (fd.size() != 1) VofdemInputError(comm, "option -coupling_fluid_drag: give implicit or explicit");
+    implicitFluid_ = fd[0] == "implicit" ? PETSC_TRUE : PETSC_FALSE;
+    PetscCall(opt.Real("-self_correction_min_eps", "Apply the self-disturbance correction only to particles whose averaged eps is at least this (it models an isolated particle)", "-",
+                       &selfMinEps_, RealRange::Closed(0, 1)));
+    PetscCall(opt.Real("-min_fluid_fraction", "Floor of the fluid fraction eps (cells below it are counted in the monitor)", "-", &minEps_, RealRange::LeftOpen(0, 1)));
+  }
+  PetscOptionsEnd();
+  PetscFunctionReturn(0);
+}
+
+PetscReal Coupling::SelfCoefficient(PetscReal H, PetscReal ReH) const {
+  const PetscReal x = (std::log10(std::max(ReH, (PetscReal)1e-3)) + 3) * 20;
+  const PetscInt  k = std::min((PetscInt)x, (PetscInt)139);
+  const PetscReal f = std::min(x - k, (PetscReal)1);  // beyond Re_H = 1e4: the last value
+  return ((1 - f) * selfTable_[k] + f * selfTable_[k + 1]) / H;
+}
+
+PetscReal Coupling::KernelWidth(PetscReal d) const {
+  const PetscReal *h = flow_->Staggered().Base().Spacing();
+  return std::max(kappa_ * d, minWidthCells_ * std::max(h[0], std::max(h[1], h[2])));
+}
+
+PetscErrorCode Coupling::CheckParticleSize(const Grid &g, PetscReal d) const {
+  PetscFunctionBeginUser;
+  for (int e = 0; e < 3; ++e)
+    if (d > g.Upper()[e] - g.Lower()[e])
+      VofdemInputError(comm_, "coupling: particles of diameter %g m are larger than the box (%g m in %c)", (double)d, (double)(g.Upper()[e] - g.Lower()[e]), "xyz"[e]);
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode Coupling::SetUp(Flow &flow, Dem &dem) {
+  PetscFunctionBeginUser;
+  flow_ = &flow;
+  dem_  = &dem;
+  const StaggeredGrid &sg = flow.Staggered();
+  const Grid          &g  = sg.Base();
+  PetscCall(CheckParticleSize(g, 2 * dem.MaxRadius()));  // the sizes the fill and the sources made
+  const PetscReal Hmax = KernelWidth(2 * dem.MaxRadius());
+  // A particle strays up to half the Verlet skin outside its rank's box between migrations.
+  PetscCall(avg_.SetUp(sg, kernel_, kernel::Cutoff(kernel_.shape, Hmax, kernel_.truncation), 0.5 * dem.Skin() + 1e-12));
+  {
+    std::vector<double> re(141);
+    for (int k = 0; k <= 140; ++k) re[k] = std::pow(10.0, -3 + k / 20.0);
+    const std::vector<double> t = kernel::SelfDisturbanceTable(kernel_.shape, kernel_.truncation, re);
+    selfTable_.assign(t.begin(), t.end());
+  }
+  for (int d = 0; d < 3; ++d) {
+    PetscCall(DMCreateGlobalVector(sg.Face(d), &faceEps_[d]));
+    PetscCall(VecDuplicate(faceEps_[d], &gradP_[d]));
+    PetscCall(VecDuplicate(faceEps_[d], &accel_[d]));
+    PetscCall(VecSet(accel_[d], 0));
+    if (implicitFluid_) {
+      PetscCall(VecDuplicate(faceEps_[d], &rate_[d]));
+      PetscCall(VecDuplicate(faceEps_[d], &target_[d]));
+      PetscCall(VecSet(rate_[d], 0));
+      PetscCall(VecSet(target_[d], 0));
+    }
+  }
+  PetscCall(DMCreateLocalVector(sg.Cells(), &cellLocal_));
+  PetscCall(DMCreateLocalVector(sg.Cells(), &rhoLocal_));
+  PetscCall(DMCreateGlobalVector(sg.Cells(), &volume_));
+  flow.SetFaceAcceleration(accel_);
+  if (implicitFluid_) flow.SetFaceRelaxation(rate_, target_);
+  dem.SetFluidCoupled(true);
+  PetscCall(PetscLogEventRegister("CouplingProject", DM_CLASSID, &evProject_));
+  PetscCall(PetscLogEventRegister("CouplingAverage", DM_CLASSID, &evAverage_));
+  // The particles displace the fluid from the start; the flow's first step sees them.
+  PetscCall(Project());
+  PetscCall(Average());
+  PetscFunctionReturn(0);
+}
+
+// Settings, and the CFD-DEM diagnostics users check first (for the smallest and largest particle):
+// the particle response time m/K against the fluid step (drag taken implicitly below it), the cell
+// to particle volume ratio and the kernel width in cells, a Stokes number tau_p U/d with the
+// particles' Stokes settling speed as U.
+PetscErrorCode Coupling::View(PetscViewer viewer, PetscReal dt) const {
+  PetscFunctionBeginUser;
+  const PetscReal *h = flow_->Staggered().Base().Spacing();
+  const PetscReal  Vc = h[0] * h[1] * h[2], hmax = std::max(h[0], std::max(h[1], h[2]));
+  const PetscReal  rho = flow_->ReferenceDensity(), mu = flow_->ReferenceViscosity();
+  PetscCall(PetscViewerASCIIPrintf(viewer, "coupling: kernel %s, H = max(%g d, %g cells)%s, drag %s%s (fluid side %s), pressure-gradient force %s, self-disturbance correction (K1b) %s, ghost width %d cells\n",
+                                   kernelName_.c_str(), (double)kappa_, (double)minWidthCells_,
+                                   kernel_.shape == kernel::Shape::Truncated ? (", cut at " + std::to_string((double)kernel_.truncation) + " H").c_str() : "",
+                                   drag::Name(law_), law_ == drag::Law::Gidaspow ? (" (switch at eps " + std::to_string((double)dragSwitch_) + ")").c_str() : "", implicitFluid_ ? "implicit" : "explicit",
+                                   pressureForce_ ? "on" : "off", selfCorrection_ ? "on" : "off", (int)avg_.GhostWidth()));
+  const PetscReal rhoP = dem_->Material().density;
+  std::vector<PetscReal> radii = {dem_->MinRadius()};
+  if (dem_->MaxRadius() > dem_->MinRadius()) radii.push_back(dem_->MaxRadius());
+  for (PetscReal r : radii) {
+    const PetscReal d = 2 * r, V = PETSC_PI * d * d * d / 6, m = rhoP * V;
+    const PetscReal K = 3 * PETSC_PI * mu * d, tau = m / K;  // Stokes response time rho_p d^2/(18 mu)
+    const PetscReal g = 9.81, uSettle = std::fabs(rhoP - rho) * g * d * d / (18 * mu);
+    PetscCall(PetscViewerASCIIPrintf(viewer, "coupling: d = %g m: response time %.3g s (fluid step %.3g s: %s), cell/particle volume %.3g, cell/d %.3g, H = %.3g cells, Stokes number (Stokes settling speed) %.3g\n",
+                                     (double)d, (double)tau, (double)dt, tau < dt ? "drag implicit" : "resolved by the step", (double)(Vc / V), (double)(hmax / d),
+                                     (double)(KernelWidth(d) / hmax), (double)(tau * uSettle / d)));
+    if (kernel_.shape == kernel::Shape::Unresolved && Vc < 3 * V)
+      PetscCall(PetscViewerASCIIPrintf(viewer, "vofdem: warning: coupling: cells of %.3g particle volumes with -coupling_kernel unresolved: a particle fills most of its cell (use a kernel)\n", (double)(Vc / V)));
+  }
+  if (dem_->StableTimeStep() > dt)
+    PetscCall(PetscViewerASCIIPrintf(viewer, "coupling: the DEM step %.3g s exceeds the fluid step: one DEM step per fluid step\n", (double)dem_->StableTimeStep()));
+  else
+    PetscCall(PetscViewerASCIIPrintf(viewer, "coupling: %d DEM sub-steps of at most %.3g s per fluid step\n", (int)Substeps(dt), (double)dem_->StableTimeStep()));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode Coupling::Save(PetscViewer viewer) const {
+  PetscFunctionBeginUser;
+  PetscCall(PetscViewerHDF5WriteAttribute(viewer, "/", "coupling_dt_last", PETSC_REAL, &dtLast_));
+  PetscFunctionReturn(0);
+}
+
+// The drag impulses travel with the particles (swarm fields, DemSaveLoad.cpp); eps, the face sources and
+// the particles' fluid fields are rebuilt from them exactly as the saving run had them.
+PetscErrorCode Coupling::Load(PetscViewer viewer) {
+  PetscFunctionBeginUser;
+  PetscCall(PetscViewerHDF5ReadAttribute(viewer, "/", "coupling_dt_last", PETSC_REAL, nullptr, &dtLast_));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode Coupling::Destroy() {
+  PetscFunctionBeginUser;
+  if (flow_) flow_->SetFaceAcceleration(nullptr);
+  if (flow_) flow_->SetFaceRelaxation(nullptr, nullptr);
+  for (int d = 0; d < 3; ++d)
+    for (Vec *v : {&faceEps_[d], &gradP_[d], &accel_[d], &rate_[d], &target_[d]}) PetscCall(VecDestroy(v));
+  for (Vec *v : {&cellLocal_, &rhoLocal_, &volume_}) PetscCall(VecDestroy(v));
+  PetscCall(avg_.Destroy());
+  PetscFunctionReturn(0);
+}
+
+}  // namespace vofdem

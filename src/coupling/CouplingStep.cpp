@@ -1,0 +1,232 @@
+// The coupled step's exchanges (Coupling.hpp): projection of the particles to the grid (K3, F5) and
+// averaging of the fluid at the particles with the fluid-particle forces (K1, K2, K1b, F6, P1).
+#include "vofdem/coupling/Coupling.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace vofdem {
+
+PetscInt Coupling::Substeps(PetscReal dt) const {
+  const PetscReal dtDem = dem_->StableTimeStep();
+  return std::max((PetscInt)1, (PetscInt)std::ceil(dt / dtDem * (1 - 1e-12)));
+}
+
+// Step 1: eps from the particles' volume; the fluid's share of the drag impulse of the last step.
+PetscErrorCode Coupling::Project() {
+  ParticleArrays a;
+  LocalField     eps, rho, A;
+  PetscInt       s[3], n[3];
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscLogEventBegin(evProject_, 0, 0, 0, 0));
+  const StaggeredGrid &sg = flow_->Staggered();
+  const PetscReal     *h  = sg.Base().Spacing();
+  const PetscReal      Vc = h[0] * h[1] * h[2];
+  const ParticleSwarm &sw = dem_->Particles();
+  PetscCall(sw.GetArrays(&a));
+  H_.resize(a.n);
+  scratch_.resize(a.n);
+  lastForce_.assign(3 * (size_t)a.n, 0);
+  PetscReal localVolume = 0;
+  for (PetscInt p = 0; p < a.n; ++p) {
+    H_[p]       = KernelWidth(2 * a.radius[p]);
+    scratch_[p] = 4.0 / 3.0 * PETSC_PI * a.radius[p] * a.radius[p] * a.radius[p];
+    localVolume += scratch_[p];
+    if (dtLast_ > 0)
+      for (int d = 0; d < 3; ++d) lastForce_[3 * p + d] = a.fluidImpulse[3 * p + d] / dtLast_;
+    for (int d = 0; d < 3; ++d) a.fluidImpulse[3 * p + d] = 0;
+  }
+  PetscCall(VecSet(volume_, 0));
+  PetscCall(avg_.Deposit(3, a.n, a.x, H_.data(), scratch_.data(), 1, volume_));
+  PetscReal sums[4] = {localVolume, 0, 0, 0}, all[4];
+  for (PetscInt p = 0; p < a.n; ++p)
+    for (int d = 0; d < 3; ++d) sums[1 + d] += lastForce_[3 * p + d];
+  PetscCallMPI(MPI_Allreduce(sums, all, 4, MPIU_REAL, MPIU_SUM, comm_));
+  last_.particleVolume = all[0];
+  for (int d = 0; d < 3; ++d) last_.dragSum[d] = all[1 + d];
+  PetscCall(VecSum(volume_, &last_.projectedVolume));
+  // eps = 1 - particle volume / cell volume, floored (PHYSICS.md F: eps is the cell's fluid fraction).
+  {
+    Vec                e = flow_->FluidFraction();
+    PetscScalar       *ea;
+    const PetscScalar *va;
+    PetscInt           m, clipped = 0;
+    PetscReal          lo = 1;
+    PetscCall(VecGetLocalSize(e, &m));
+    PetscCall(VecGetArray(e, &ea));
+    PetscCall(VecGetArrayRead(volume_, &va));
+    for (PetscInt k = 0; k < m; ++k) {
+      PetscReal v = 1 - PetscRealPart(va[k]) / Vc;
+      if (v < minEps_) v = minEps_, ++clipped;
+      ea[k] = v;
+      lo    = std::min(lo, v);
+    }
+    PetscCall(VecRestoreArrayRead(volume_, &va));
+    PetscCall(VecRestoreArray(e, &ea));
+    PetscCallMPI(MPI_Allreduce(&clipped, &last_.clipped, 1, MPIU_INT, MPI_SUM, comm_));
+    PetscCallMPI(MPI_Allreduce(&lo, &last_.minEps, 1, MPIU_REAL, MPIU_MIN, comm_));
+    PetscCall(flow_->PropertiesChanged());
+  }
+  // The reaction: -F on the faces of each component, as an acceleration -F/(V (eps rho)_f) with the
+  // face's (eps rho) exactly as the flow's predictor forms it (harmonic mean of eps/rho, mean of eps),
+  // so the fluid's momentum changes by exactly -F dt.
+  PetscCall(DMGlobalToLocal(sg.Cells(), flow_->FluidFraction(), INSERT_VALUES, cellLocal_));
+  PetscCall(DMGlobalToLocal(sg.Cells(), flow_->Density(), INSERT_VALUES, rhoLocal_));
+  PetscCall(sg.GetLocal(3, cellLocal_, &eps));
+  PetscCall(sg.GetLocal(3, rhoLocal_, &rho));
+  PetscReal source[3] = {0, 0, 0};
+  std::vector<PetscReal> kv(implicitFluid_ ? a.n : 0);
+  for (int d = 0; d < 3; ++d) {
+    PetscCall(VecSet(accel_[d], 0));
+    if (implicitFluid_) {  // K_p and K_p v_p to the faces: the rate and the target of the relaxation
+      LocalField C, W, U;
+      for (PetscInt p = 0; p < a.n; ++p) kv[p] = a.fluidDrag[p] * a.v[3 * p + d];
+      PetscCall(VecSet(rate_[d], 0));
+      PetscCall(VecSet(target_[d], 0));
+      PetscCall(avg_.Deposit(d, a.n, a.x, H_.data(), a.fluidDrag, 1, rate_[d]));
+      PetscCall(avg_.Deposit(d, a.n, a.x, H_.data(), kv.data(), 1, target_[d]));
+      PetscCall(sg.GetGlobal(d, rate_[d], &C));
+      PetscCall(sg.GetGlobal(d, target_[d], &W));
+      PetscCall(sg.GetGlobal(d, flow_->Velocity(d), &U));
+      sg.Owned(d, s, n);
+      const PetscInt last = sg.Points(d, d) - 1;
+      for (PetscInt k = s[2]; k < s[2] + n[2]; ++k)
+        for (PetscInt j = s[1]; j < s[1] + n[1]; ++j)
+          for (PetscInt i = s[0]; i < s[0] + n[0]; ++i) {
+            PetscInt q[3] = {i, j, k}, cm[3] = {i, j, k};
+            if (!sg.Base().Periodic(d) && (q[d] == 0 || q[d] == last)) continue;
+            const PetscReal K = PetscRealPart(C.at(q));
+            if (!(K > 0)) {
+              C.at(q) = 0, W.at(q) = 0;
+              continue;
+            }
+            cm[d] -= 1;
+            const PetscReal eL = PetscRealPart(eps.at(cm)), eR = PetscRealPart(eps.at(q));
+            const PetscReal bL = eL / PetscRealPart(rho.at(cm)), bR = eR / PetscRealPart(rho.at(q));
+            const PetscReal eF = 0.5 * (eL + eR), bF = 2 * bL * bR / (bL + bR);
+            const PetscReal w = PetscRealPart(W.at(q)) / K;
+            source[d] += K * (w - PetscRealPart(U.at(q)));  // the fluid's drag at the start of the step, N
+            W.at(q) = w;
+            C.at(q) = K / (Vc * eF * eF / bF);
+          }
+      PetscCall(sg.RestoreGlobal(d, flow_->Velocity(d), &U));
+      PetscCall(sg.RestoreGlobal(d, target_[d], &W));
+      PetscCall(sg.RestoreGlobal(d, rate_[d], &C));
+      continue;
+    }
+    PetscCall(avg_.Deposit(d, a.n, a.x, H_.data(), lastForce_.data() + d, 3, accel_[d]));
+    PetscCall(sg.GetGlobal(d, accel_[d], &A));
+    sg.Owned(d, s, n);
+    const PetscInt last = sg.Points(d, d) - 1;
+    for (PetscInt k = s[2]; k < s[2] + n[2]; ++k)
+      for (PetscInt j = s[1]; j < s[1] + n[1]; ++j)
+        for (PetscInt i = s[0]; i < s[0] + n[0]; ++i) {
+          PetscInt q[3] = {i, j, k}, cm[3] = {i, j, k};
+          if (!sg.Base().Periodic(d) && (q[d] == 0 || q[d] == last)) continue;  // nothing deposited there
+          cm[d] -= 1;
+          const PetscReal eL = PetscRealPart(eps.at(cm)), eR = PetscRealPart(eps.at(q));
+          const PetscReal bL = eL / PetscRealPart(rho.at(cm)), bR = eR / PetscRealPart(rho.at(q));
+          const PetscReal eF = 0.5 * (eL + eR), bF = 2 * bL * bR / (bL + bR);
+          source[d] -= PetscRealPart(A.at(q));
+          A.at(q) = -PetscRealPart(A.at(q)) / (Vc * eF * eF / bF);
+        }
+    PetscCall(sg.RestoreGlobal(d, accel_[d], &A));
+  }
+  PetscCall(sg.RestoreLocal(3, rhoLocal_, &rho));
+  PetscCall(sg.RestoreLocal(3, cellLocal_, &eps));
+  PetscCallMPI(MPI_Allreduce(source, last_.sourceSum, 3, MPIU_REAL, MPIU_SUM, comm_));
+  PetscCall(sw.RestoreArrays(&a));
+  PetscCall(PetscLogEventEnd(evProject_, 0, 0, 0, 0));
+  PetscFunctionReturn(0);
+}
+
+// eps at the faces (weights of the velocity average, K1) and the pressure gradient at the faces (K2).
+PetscErrorCode Coupling::FaceFields() {
+  LocalField eps, p, E, G;
+  PetscInt   s[3], n[3];
+
+  PetscFunctionBeginUser;
+  const StaggeredGrid &sg = flow_->Staggered();
+  const PetscReal     *h  = sg.Base().Spacing();
+  PetscCall(DMGlobalToLocal(sg.Cells(), flow_->FluidFraction(), INSERT_VALUES, cellLocal_));
+  PetscCall(DMGlobalToLocal(sg.Cells(), flow_->Pressure(), INSERT_VALUES, rhoLocal_));  // rhoLocal_ as scratch
+  PetscCall(sg.GetLocal(3, cellLocal_, &eps));
+  PetscCall(sg.GetLocal(3, rhoLocal_, &p));
+  for (int d = 0; d < 3; ++d) {
+    PetscCall(sg.GetGlobal(d, faceEps_[d], &E));
+    PetscCall(sg.GetGlobal(d, gradP_[d], &G));
+    sg.Owned(d, s, n);
+    const PetscInt last = sg.Points(d, d) - 1;
+    const bool     wall = !sg.Base().Periodic(d);
+    for (PetscInt k = s[2]; k < s[2] + n[2]; ++k)
+      for (PetscInt j = s[1]; j < s[1] + n[1]; ++j)
+        for (PetscInt i = s[0]; i < s[0] + n[0]; ++i) {
+          PetscInt q[3] = {i, j, k}, cm[3] = {i, j, k};
+          cm[d] -= 1;
+          if (wall && q[d] == 0) E.at(q) = eps.at(q), G.at(q) = 0;
+          else if (wall && q[d] == last) E.at(q) = eps.at(cm), G.at(q) = 0;
+          else {
+            E.at(q) = 0.5 * (eps.at(q) + eps.at(cm));
+            G.at(q) = (p.at(q) - p.at(cm)) / h[d];
+          }
+        }
+    PetscCall(sg.RestoreGlobal(d, gradP_[d], &G));
+    PetscCall(sg.RestoreGlobal(d, faceEps_[d], &E));
+  }
+  PetscCall(sg.RestoreLocal(3, rhoLocal_, &p));
+  PetscCall(sg.RestoreLocal(3, cellLocal_, &eps));
+  PetscFunctionReturn(0);
+}
+
+// Step 3: the fluid at each particle and the forces the DEM sub-steps apply.
+PetscErrorCode Coupling::Average() {
+  ParticleArrays a;
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscLogEventBegin(evAverage_, 0, 0, 0, 0));
+  PetscCall(FaceFields());
+  const ParticleSwarm &sw = dem_->Particles();
+  PetscCall(sw.GetArrays(&a));
+  const PetscInt n = a.n;
+  PetscCheck((PetscInt)H_.size() == n, PETSC_COMM_SELF, PETSC_ERR_ORDER, "coupling: Average() needs the particles of the last Project()");
+  std::vector<PetscReal> u(3 * n), gp(3 * n), e(n);
+  for (int d = 0; d < 3; ++d) {
+    PetscCall(avg_.Average(d, flow_->Velocity(d), faceEps_[d], n, a.x, H_.data(), u.data() + d, 3));
+    if (pressureForce_) PetscCall(avg_.Average(d, gradP_[d], nullptr, n, a.x, H_.data(), gp.data() + d, 3, false));
+  }
+  PetscCall(avg_.Average(3, flow_->FluidFraction(), flow_->FluidFraction(), n, a.x, H_.data(), e.data(), 1));
+  const PetscReal rho = flow_->ReferenceDensity(), mu = flow_->ReferenceViscosity();
+  for (PetscInt p = 0; p < n; ++p) {
+    const PetscReal d = 2 * a.radius[p], V = PETSC_PI * d * d * d / 6;
+    PetscReal       uf[3], slip2 = 0;
+    for (int c = 0; c < 3; ++c) {
+      uf[c] = u[3 * p + c];
+      slip2 += (uf[c] - a.v[3 * p + c]) * (uf[c] - a.v[3 * p + c]);
+    }
+    // K1b: the fluid read back the particle's own reaction -F_last, spread by its kernel: C F/mu, with
+    // the Oseen coefficient at the slip it causes (a few fixed-point passes: C falls as the slip grows).
+    // The estimate is that of an isolated particle in unbounded fluid: among neighbours (eps below
+    // -coupling_self_correction_min_eps) the fluid around a particle is held by continuity, and in a
+    // packed bed the correction's gain C K/mu exceeds 1, so that it would feed on itself: it is left out there.
+    const bool dilute = e[p] >= selfMinEps_;
+    for (int it = 0; selfCorrection_ && dilute && it < 4; ++it) {
+      const PetscReal C = SelfCoefficient(H_[p], std::sqrt(slip2) * H_[p] * rho / mu);
+      slip2 = 0;
+      for (int c = 0; c < 3; ++c) {
+        uf[c] = u[3 * p + c] + C * lastForce_[3 * p + c] / mu;
+        slip2 += (uf[c] - a.v[3 * p + c]) * (uf[c] - a.v[3 * p + c]);
+      }
+    }
+    a.fluidDrag[p] = drag::Coefficient(law_, d, e[p], std::sqrt(slip2), rho, mu, dragSwitch_);
+    for (int c = 0; c < 3; ++c) {
+      a.fluidVelocity[3 * p + c] = uf[c];
+      a.fluidForce[3 * p + c]    = pressureForce_ ? -V * gp[3 * p + c] : 0;
+    }
+  }
+  PetscCall(sw.RestoreArrays(&a));
+  PetscCall(PetscLogEventEnd(evAverage_, 0, 0, 0, 0));
+  PetscFunctionReturn(0);
+}
+
+}  // namespace vofdem
