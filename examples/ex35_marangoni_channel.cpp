@@ -122,5 +122,5 @@ int main(int argc, char **argv) {
   test:
     suffix: 2
     nsize: 2
-    output_file: output/ex32_marangoni_channel_1.out
+    output_file: output/ex35_marangoni_channel_1.out
 TEST*/
