@@ -197,10 +197,6 @@ int main(int argc, char **argv) {
 /*TEST
   rtol: 1e-6
   test:
-    suffix: 1
-    nsize: 1
-    args: -viscous_times 0.02
-  test:
     suffix: 2
     nsize: 2
     args: -viscous_times 0.02

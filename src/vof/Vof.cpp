@@ -23,6 +23,8 @@ PetscErrorCode Vof::SetFromOptions(const Grid &grid) {
     PetscCall(opt.Real("-density", "Density of phase 1 (alpha = 1, the heavy phase); phase 0 has -flow_density", "kg/m^3", &density_, RealRange::Positive()));
     PetscCall(opt.Real("-viscosity", "Dynamic viscosity of phase 1; phase 0 has -flow_viscosity", "Pa s", &viscosity_, RealRange::Positive()));
     PetscCall(opt.Real("-surface_tension", "Surface tension coefficient sigma (0: none); height-function curvature, balanced-force face force", "N/m", &sigma_, RealRange::NonNegative()));
+    PetscCall(opt.Real("-dsigma_dT", "Temperature coefficient of the surface tension (Marangoni force, PHYSICS.md F2)", "N/(m K)", &dsigmadT_));
+    PetscCall(opt.RealVector("-temperature_gradient", "Prescribed uniform temperature gradient (T = T0 + G.(x - lower corner)) for the Marangoni force until the energy module exists", "K/m", gradT_, 3));
     PetscCall(opt.Bool("-advect", "Move the interface with the flow (0: a frozen interface, for verification)", &advect_));
     PetscCall(opt.RealList("-boxes", "Phase 1 at the start: boxes x0,y0,z0,x1,y1,z1[,...]", "m", &boxes_, 6 * 64));
     PetscCall(opt.RealList("-spheres", "Phase 1 at the start: spheres cx,cy,cz,r[,...]", "m", &spheres_, 4 * 64));

@@ -108,7 +108,7 @@ PetscErrorCode Vof::SurfaceTension(Flow &flow) {
   PetscInt s[3], n[3], gs[3], gm[3];
 
   PetscFunctionBeginUser;
-  if (!(sigma_ > 0)) PetscFunctionReturn(0);
+  if (!(sigma_ > 0) && dsigmadT_ == 0) PetscFunctionReturn(0);
   if (!kappa_) {
     PetscCall(DMCreateGlobalVector(da_, &kappa_));
     PetscCall(DMCreateLocalVector(da_, &kappaLocal_));
@@ -163,7 +163,12 @@ PetscErrorCode Vof::SurfaceTension(Flow &flow) {
     PetscCall(VecRestoreArrayRead(kappaLocal_, &kl));
   }
   PetscCall(DMGlobalToLocal(da_, kappa_, INSERT_VALUES, kappaLocal_));
-  // 3. Face forces sigma kappa_f (alpha_R - alpha_L) / h_d on the owned faces.
+  // 3. Face forces sigma(T_f) kappa_f (alpha_R - alpha_L) / h_d on the owned faces, and the Marangoni
+  // force dsigma/dT (I - n n).grad T |grad alpha| (PHYSICS.md F2) with the prescribed temperature
+  // T = T0 + G.(x - lower corner) (-vof_temperature, -vof_temperature_gradient): grad alpha at the face
+  // from the jump across it and, across, the mean of the two cells' centred differences.
+  const PetscReal *lower = grid_->Lower();
+  const bool       marangoni = dsigmadT_ != 0 && (gradT_[0] != 0 || gradT_[1] != 0 || gradT_[2] != 0);
   const PetscScalar *kl;
   PetscCall(VecGetArrayRead(kappaLocal_, &kl));
   const Cells kc = {kl, {gs[0], gs[1], gs[2]}, {stride[0], stride[1], stride[2]}};
@@ -182,11 +187,33 @@ PetscErrorCode Vof::SurfaceTension(Flow &flow) {
           L[d] -= 1;
           double force = 0;
           if (grid_->Periodic(d) || (R[d] > 0 && R[d] < N)) {
+            double xf[3], dT = 0;  // face centre, temperature above T0
+            for (int e = 0; e < 3; ++e) {
+              xf[e] = lower[e] + (e == d ? R[e] : R[e] + 0.5) * h[e];
+              dT += gradT_[e] * (xf[e] - lower[e]);
+            }
             const double jump = c.at(R) - c.at(L);
             if (jump != 0) {
               const double kL = kc.at(L), kR = kc.at(R);
               const double kf = kL != kNone && kR != kNone ? 0.5 * (kL + kR) : kL != kNone ? kL : kR != kNone ? kR : 0;
-              force           = sigma_ * kf * jump / h[d];
+              force           = (sigma_ + dsigmadT_ * dT) * kf * jump / h[d];
+            }
+            if (marangoni) {
+              double g[3], g2 = 0, nG = 0;
+              for (int e = 0; e < 3; ++e) {
+                if (e == d) g[e] = jump / h[d];
+                else {
+                  PetscInt Rp[3] = {R[0], R[1], R[2]}, Rm[3] = {R[0], R[1], R[2]}, Lp[3] = {L[0], L[1], L[2]}, Lm[3] = {L[0], L[1], L[2]};
+                  Rp[e] += 1, Rm[e] -= 1, Lp[e] += 1, Lm[e] -= 1;
+                  g[e] = 0.25 * (c.at(Rp) - c.at(Rm) + c.at(Lp) - c.at(Lm)) / h[e];
+                }
+                g2 += g[e] * g[e];
+              }
+              if (g2 > 0) {
+                const double mag = std::sqrt(g2);
+                for (int e = 0; e < 3; ++e) nG += g[e] / mag * gradT_[e];
+                force += dsigmadT_ * (gradT_[d] - g[d] / mag * nG) * mag;
+              }
             }
           }
           F.at(x, y, z) = force;

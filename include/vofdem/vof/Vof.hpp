@@ -65,7 +65,9 @@ public:
   PetscErrorCode UpdateProperties(Flow &flow) const;
   PetscReal Density() const { return density_; }
   // Surface tension (-vof_surface_tension sigma > 0; VofSurfaceTension.cpp): height-function
-  // curvature and the balanced face force sigma kappa_f (alpha_R - alpha_L)/h into flow.FaceForce().
+  // curvature and the balanced face force sigma kappa_f (alpha_R - alpha_L)/h into flow.FaceForce();
+  // with -vof_dsigma_dT and -vof_temperature_gradient (a prescribed linear temperature, until the
+  // energy module exists) sigma varies along the interface and the Marangoni force is added.
   PetscErrorCode SurfaceTension(Flow &flow);
   PetscReal      SurfaceTensionCoefficient() const { return sigma_; }
   // The capillary time-step limit sqrt(rho_mean h^3 / (2 pi sigma)) (PETSC_MAX_REAL without sigma).
@@ -96,7 +98,8 @@ private:
   PetscInt    passes_  = 1;      // -vof_centred_columns: 2 adds 3-cell centred columns before Youngs (experimental)
   PetscReal   tiny_    = 1e-12;  // alpha below tiny (above 1 - tiny) is fluxed as uniform: no plane is fitted to round-off
   PetscReal   density_ = 1000, viscosity_ = 1e-3;  // phase 1 (alpha = 1)
-  PetscReal   sigma_ = 0;                         // surface tension coefficient, N/m
+  PetscReal   sigma_ = 0;                         // surface tension coefficient at T0, N/m
+  PetscReal   dsigmadT_ = 0, gradT_[3] = {0, 0, 0};   // Marangoni: dsigma/dT (N/(m K)), prescribed grad T (K/m)
   PetscBool   advect_ = PETSC_TRUE;               // -vof_advect 0: a frozen interface (V3)
   PetscReal   missingCurvature_ = 0;
   std::vector<PetscReal> boxes_, spheres_;        // initial shapes of phase 1
