@@ -1,0 +1,4 @@
+# Powder-spreading machinery and scenes (issue 6): walls in phases (a start time for the motion, a
+# removal time) against free motion on 1 and 2 ranks.
+add_test(NAME spreading/wall_phases COMMAND ${VOFDEM_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/test/spreading/test_wall_phases.py $<TARGET_FILE:vofdem_app>)
+set_tests_properties(spreading/wall_phases PROPERTIES LABELS "quick;spreading" PROCESSORS 2 TIMEOUT 300)
