@@ -33,13 +33,13 @@ def main():
     exe = os.path.abspath(sys.argv[1])
     tmp = tempfile.mkdtemp(prefix="vofdem-spread-")
     packing = {}
+    os.chdir(ROOT)  # the scene names its STL file relative to the source root
     for V in (0.05, 0.2):
         out = os.path.join(tmp, "v%g" % V)
         os.makedirs(out)
         final = START + 1.5e-3 / V + REST
         run_vofdem(exe, 2, ["-options_file_yaml", SCENE, "-dem_wall_blade_velocity", "%g,0,0" % V, "-final_time", "%.6g" % final,
                             "-output_dir", out, "-dem_save_particles", os.path.join(out, "end.csv"), "-monitor_every", "400"], timeout=600)
-        os.chdir(ROOT)
         summary = {r["metric"]: float(r["value"]) for r in csv.DictReader(open(os.path.join(out, "analysis", "summary.csv")))}
         packing[V] = summary["packing_density"]
         rows = list(csv.DictReader(open(os.path.join(out, "monitor.csv"))))
