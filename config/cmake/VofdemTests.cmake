@@ -106,4 +106,5 @@ include(VofdemCheckpointTests)  # checkpoint/restart (issue 5)
 include(VofdemGeometryTests)  # scripts/make-stl: blade, hopper, funnel meshes
 include(VofdemVofTests)  # the VOF module (issue 8)
 include(VofdemAnalysisTests)  # powder-bed analysis (issue 6)
+include(VofdemSpreadingTests)  # spreading machinery and scenes (issue 6)
 include(VofdemClumpTests)  # rigid multi-sphere clumps (P10)

@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <cstring>
 
 namespace vofdem {
 
@@ -83,6 +84,10 @@ PetscErrorCode WallSet::ReadWall(MPI_Comm comm, PetscOptionItems *items, const s
   PetscCall(opt.RealVector(N("rotation_point").c_str(), "Point on the rotation axis at t = 0, also where the wall's torque is taken (default: the wall's point; stl: its first vertex)",
                            "m", m.center, 3, RealRange::Any(), &rotSet));
   if (!rotSet && (plane || cyl) && !help) std::copy(w->point, w->point + 3, m.center);
+  // A scene in phases without a restart (seed 001: the powder settles in the hopper, then the
+  // hopper's side goes and the blade starts): a wall may wait before it moves and may be removed.
+  PetscCall(opt.Real(N("start").c_str(), "Time the wall's motion starts; before it the wall rests at its initial pose", "s", &m.start, RealRange::NonNegative()));
+  PetscCall(opt.Real(N("remove_time").c_str(), "Time from which the wall is gone (no contacts); default: never", "s", &w->removeTime, RealRange::NonNegative()));
   w->centerGiven = rotSet;
   PetscFunctionReturn(0);
 }
@@ -190,7 +195,7 @@ void WallSet::Advance(PetscReal dt) {
 
 PetscReal WallSet::Travel(const Wall &w) const {
   const wall::Motion &m = w.motion;
-  const PetscReal     dt = time_ - rebuildTime_, speed = std::sqrt(wall::Dot(m.velocity, m.velocity));
+  const PetscReal     dt = m.Elapsed(time_) - m.Elapsed(rebuildTime_), speed = std::sqrt(wall::Dot(m.velocity, m.velocity));
   PetscReal           travel = speed * dt;
   if (m.omega != 0 && !w.rotationInvariant) {
     PetscReal reach = w.reachAxis;  // a mesh: its farthest vertex from the axis, which moves with it
@@ -210,8 +215,10 @@ PetscReal WallSet::Travel(const Wall &w) const {
 }
 
 bool WallSet::MovedBeyond(PetscReal halfSkin) const {
-  for (const Wall &w : walls_)
+  for (const Wall &w : walls_) {
     if (w.motion.Moves() && Travel(w) > halfSkin) return true;
+    if (w.Present(time_) != w.Present(rebuildTime_)) return true;  // removed since: drop its candidates now
+  }
   return false;
 }
 
@@ -241,6 +248,7 @@ void WallSet::BuildCandidates(const ParticleArrays &a, PetscReal reach, const Co
     const PetscReal *x = &a.x[3 * p], limit = a.radius[p] + reach;
     for (int wi = 0; wi < (int)walls_.size(); ++wi) {
       const Wall &w = walls_[wi];
+      if (!w.Present(time_)) continue;
       PetscReal   x0[3], n0[3], gap = 0;
       wall::ToReference(w.pose, w.motion, x, x0);
       const size_t start = part_.size();
@@ -318,7 +326,10 @@ PetscErrorCode WallSet::View(PetscViewer viewer) const {
       std::snprintf(motion, sizeof motion, "velocity (%g, %g, %g) m/s, %g rad/s about (%g, %g, %g) through (%g, %g, %g) m", (double)m.velocity[0], (double)m.velocity[1],
                     (double)m.velocity[2], (double)m.omega, (double)m.axis[0], (double)m.axis[1], (double)m.axis[2], (double)m.center[0], (double)m.center[1],
                     (double)m.center[2]);
-    PetscCall(PetscViewerASCIIPrintf(viewer, "dem: wall %s: %s; %s\n", w.name.c_str(), geometry, motion));
+    char phases[128] = "";
+    if (m.Moves() && m.start > 0) std::snprintf(phases, sizeof phases, "; moving from t = %g s", (double)m.start);
+    if (w.removeTime < PETSC_MAX_REAL) std::snprintf(phases + std::strlen(phases), sizeof phases - std::strlen(phases), "; removed at t = %g s", (double)w.removeTime);
+    PetscCall(PetscViewerASCIIPrintf(viewer, "dem: wall %s: %s; %s%s\n", w.name.c_str(), geometry, motion, phases));
   }
   PetscFunctionReturn(0);
 }

@@ -91,6 +91,9 @@ def main():
                       for nx, ny in [((t[1][1] - t[0][1]) * (t[2][2] - t[0][2]) - (t[1][2] - t[0][2]) * (t[2][1] - t[0][1]),
                                       (t[1][2] - t[0][2]) * (t[2][0] - t[0][0]) - (t[1][0] - t[0][0]) * (t[2][2] - t[0][2]))])
         check(max(e.values()) == 1 and abs(area / want - 1) < 5e-4 and outward, "%s: open shell, area %.6e against %.6e, normals away from the axis" % (shape, area, want))
+    tris, _, _ = make(tmp, "cylinder", "--radius", "7.5e-4", "--height", "1.748e-3", "--segments", "96", "--closed")
+    want = 48 * 7.5e-4 ** 2 * math.sin(2 * math.pi / 96) * 1.748e-3
+    check(closed(tris) and abs(volume(tris) / want - 1) < 1e-12, "closed cylinder (a cup): watertight, volume %.9e against the 96-gon prism %.9e" % (volume(tris), want))
     p = subprocess.run([sys.executable, MAKE, "box", os.path.join(tmp, "x.stl"), "--lower", "0,0,0", "--upper", "1,1,1", "--open", "top"], capture_output=True, text=True)
     check(p.returncode != 0 and "make-stl: error: --open takes" in p.stderr, "a bad --open is one error line: %s" % p.stderr.strip())
     # A sphere on the blade, 1 and 2 ranks.

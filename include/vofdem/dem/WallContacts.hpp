@@ -140,7 +140,7 @@ void WallSet::Evaluate(const ParticleArrays &a, const WallContactLaw &law, Petsc
       // Relative velocity of the particle's surface against the wall's at the contact (P3).
       wall::SurfaceVelocity(w.motion, w.pose, pc, u);
       wall::CrossProduct(om, rn, wxr);
-      for (int e = 0; e < 3; ++e) vrel[e] = v[e] + wxr[e] - u[e], wrel[e] = om[e] - w.motion.omega * w.motion.axis[e];
+      for (int e = 0; e < 3; ++e) vrel[e] = v[e] + wxr[e] - u[e], wrel[e] = om[e] - w.pose.moving * w.motion.omega * w.motion.axis[e];
       hertz::NormalLaw nl = NormalLawAt<COH, LIN>(mat, law.linearKn, delta, r, xi);
       if constexpr (COH == kSjkr) nl.Fel -= law.sjkrDensity * hertz::SjkrWallArea(r, delta);
       const PetscReal        Sn = nl.Sn, Fn = hertz::Contact(mat, nl, n, std::sqrt(a.mass[p]), vrel, dt, xi, F, Ft);

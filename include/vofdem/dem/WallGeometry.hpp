@@ -103,18 +103,24 @@ struct Motion {
   PetscReal center[3]   = {0, 0, 0};  // m, rotation point at t = 0
   PetscReal axis[3]     = {0, 0, 1};  // unit
   PetscReal omega       = 0;          // rad/s
+  PetscReal start       = 0;          // s: the wall rests at its t = 0 pose until then (a blade that waits for the powder to settle)
   bool Moves() const { return omega != 0 || velocity[0] != 0 || velocity[1] != 0 || velocity[2] != 0; }
+  // Time the wall has been moving at time t.
+  PetscReal Elapsed(PetscReal t) const { return t > start ? t - start : 0; }
 };
 
 // The pose of a wall at one time: rotation matrix and the current rotation point.
 struct Pose {
   PetscReal rot[3][3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
   PetscReal center[3] = {0, 0, 0};  // c + V t
+  PetscReal moving    = 1;          // 0 before the motion's start time: the surface is at rest
 };
 
 // Rodrigues' formula for the rotation by angle `theta` about the unit axis a.
-inline Pose PoseAt(const Motion &m, PetscReal t) {
+inline Pose PoseAt(const Motion &m, PetscReal time) {
   Pose            P;
+  const PetscReal t = m.Elapsed(time);
+  P.moving          = time >= m.start ? 1 : 0;
   const PetscReal th = m.omega * t, c = std::cos(th), s = std::sin(th), C = 1 - c, *a = m.axis;
   if (th != 0) {
     P.rot[0][0] = c + a[0] * a[0] * C, P.rot[0][1] = a[0] * a[1] * C - a[2] * s, P.rot[0][2] = a[0] * a[2] * C + a[1] * s;
@@ -142,7 +148,7 @@ inline void SurfaceVelocity(const Motion &m, const Pose &P, const PetscReal x[3]
   const PetscReal s[3] = {x[0] - P.center[0], x[1] - P.center[1], x[2] - P.center[2]};
   PetscReal       axs[3];
   CrossProduct(m.axis, s, axs);
-  for (int d = 0; d < 3; ++d) u[d] = m.velocity[d] + m.omega * axs[d];
+  for (int d = 0; d < 3; ++d) u[d] = P.moving * (m.velocity[d] + m.omega * axs[d]);
 }
 
 }  // namespace vofdem::wall

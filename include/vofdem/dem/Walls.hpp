@@ -143,6 +143,8 @@ private:
     bool         centerGiven = false;       // -dem_wall_<name>_rotation_point given
     bool         rotationInvariant = false;  // the rotation maps the surface onto itself (a roller)
     PetscReal    reachAxis = 0;             // largest distance of a relevant surface point from the rotation axis, m
+    PetscReal    removeTime = PETSC_MAX_REAL;  // s: from then on the wall has no contacts
+    bool         Present(PetscReal t) const { return t < removeTime; }
   };
   PetscErrorCode ReadWall(MPI_Comm comm, PetscOptionItems *items, const std::string &name, bool help, Wall *w);
   PetscReal      Travel(const Wall &w) const;  // bound on the surface displacement since the last rebuild
