@@ -1,5 +1,7 @@
 #include "vofdem/analysis/Geometry.hpp"
 
+#include "vofdem/core/GaussLegendre.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <deque>
@@ -12,27 +14,10 @@ namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 
-// Gauss-Legendre nodes and weights on [0, 1] by Newton's method on P_n (Golub-Welsch is not needed
-// for the small n used here); computed once per n.
+// Gauss-Legendre nodes and weights on [0, 1] (core/GaussLegendre.hpp), computed once per n.
 struct GaussLegendre {
   std::vector<double> x, w;
-  explicit GaussLegendre(int n) : x(n), w(n) {
-    for (int i = 0; i < n; ++i) {
-      double t = std::cos(kPi * (i + 0.75) / (n + 0.5)), dp = 1;
-      for (int it = 0; it < 100; ++it) {
-        double p0 = 1, p1 = t;
-        for (int k = 2; k <= n; ++k) {
-          const double p2 = ((2 * k - 1) * t * p1 - (k - 1) * p0) / k;
-          p0 = p1, p1 = p2;
-        }
-        dp              = n * (t * p1 - p0) / (t * t - 1);
-        const double dt = p1 / dp;
-        t -= dt;
-        if (std::fabs(dt) < 1e-16) break;
-      }
-      x[i] = 0.5 * (1 - t), w[i] = 1.0 / ((1 - t * t) * dp * dp);  // 2/((1-t^2)P'^2), halved for [0,1]
-    }
-  }
+  explicit GaussLegendre(int n) { GaussLegendre01(n, &x, &w); }
 };
 
 const GaussLegendre &Rule(int n) {

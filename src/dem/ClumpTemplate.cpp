@@ -1,6 +1,8 @@
 // Mass properties of a clump template: the union of overlapping spheres (ClumpTemplate.hpp, P10).
 #include "vofdem/dem/ClumpTemplate.hpp"
 
+#include "vofdem/core/GaussLegendre.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <functional>
@@ -9,26 +11,6 @@
 namespace vofdem {
 
 namespace {
-
-// Gauss-Legendre nodes and weights on [0, 1] (Newton on P_n).
-void GaussLegendre01(int n, std::vector<double> *x, std::vector<double> *w) {
-  x->resize(n), w->resize(n);
-  for (int i = 0; i < n; ++i) {
-    double t = std::cos(PETSC_PI * (i + 0.75) / (n + 0.5)), dp = 1;
-    for (int it = 0; it < 100; ++it) {
-      double p0 = 1, p1 = t;
-      for (int k = 2; k <= n; ++k) {
-        const double p2 = ((2 * k - 1) * t * p1 - (k - 1) * p0) / k;
-        p0 = p1, p1 = p2;
-      }
-      dp              = n * (t * p1 - p0) / (t * t - 1);
-      const double dt = p1 / dp;
-      t -= dt;
-      if (std::fabs(dt) < 1e-16) break;
-    }
-    (*x)[i] = 0.5 * (1 - t), (*w)[i] = 1.0 / ((1 - t * t) * dp * dp);
-  }
-}
 
 // sum over pieces between sorted breakpoints in [a, b] of the smoothed Gauss rule applied to f.
 template <typename F>
