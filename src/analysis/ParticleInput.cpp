@@ -6,6 +6,7 @@
 #include "vofdem/dem/Dem.hpp"
 #include "vofdem/dem/ParticleSwarm.hpp"
 #include "vofdem/grid/Grid.hpp"
+#include "vofdem/io/ReadAll.hpp"
 
 #include <petscviewerhdf5.h>
 
@@ -30,29 +31,6 @@ PetscErrorCode AllGather(MPI_Comm comm, const std::vector<double> &mine, std::ve
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode LoadAll(PetscViewer viewer, MPI_Comm comm, const char *name, PetscInt bs, std::vector<double> *out) {
-  Vec                v, all;
-  VecScatter         scatter;
-  const PetscScalar *a;
-  PetscInt           n;
-
-  PetscFunctionBeginUser;
-  PetscCall(VecCreate(comm, &v));
-  PetscCall(VecSetBlockSize(v, bs));
-  PetscCall(PetscObjectSetName((PetscObject)v, name));
-  PetscCall(VecLoad(v, viewer));
-  PetscCall(VecScatterCreateToAll(v, &scatter, &all));
-  PetscCall(VecScatterBegin(scatter, v, all, INSERT_VALUES, SCATTER_FORWARD));
-  PetscCall(VecScatterEnd(scatter, v, all, INSERT_VALUES, SCATTER_FORWARD));
-  PetscCall(VecGetLocalSize(all, &n));
-  PetscCall(VecGetArrayRead(all, &a));
-  out->assign(a, a + n);
-  PetscCall(VecRestoreArrayRead(all, &a));
-  PetscCall(VecScatterDestroy(&scatter));
-  PetscCall(VecDestroy(&all));
-  PetscCall(VecDestroy(&v));
-  PetscFunctionReturn(0);
-}
 
 }  // namespace
 
@@ -101,9 +79,9 @@ PetscErrorCode PowderAnalysis::Read(MPI_Comm comm, const std::string &path, anal
   if (!has[0] || !has[1])
     VofdemInputError(comm, "option -analysis_input: '%s' has no %s dataset (a particles_<step>.h5 file of -dem_output_every is expected)", path.c_str(), has[0] ? "radius" : "position");
   *s = analysis::Spheres();
-  PetscCall(LoadAll(viewer, comm, "position", 3, &s->x));
-  PetscCall(LoadAll(viewer, comm, "radius", 1, &s->r));
-  if (has[2]) PetscCall(LoadAll(viewer, comm, "type", 1, &t));
+  PetscCall(ReadAll(viewer, comm, "position", -1, 3, &s->x));
+  PetscCall(ReadAll(viewer, comm, "radius", -1, 1, &s->r));
+  if (has[2]) PetscCall(ReadAll(viewer, comm, "type", -1, 1, &t));
   PetscCall(PetscViewerDestroy(&viewer));
   if (s->x.size() != 3 * s->r.size()) VofdemInputError(comm, "option -analysis_input: '%s': %ld positions for %ld radii", path.c_str(), (long)s->x.size() / 3, (long)s->r.size());
   s->type.assign(s->r.size(), 0);

@@ -1,5 +1,7 @@
 #include "vofdem/io/RankArchive.hpp"
 
+#include "vofdem/io/ReadAll.hpp"
+
 #include "vofdem/core/Runtime.hpp"
 
 #include <petscvec.h>
@@ -8,34 +10,6 @@
 namespace vofdem {
 
 namespace {
-
-// Every value of a dataset on every rank: a parallel read, then all-gather (the rank-count change
-// path only; the data are one copy of the saved state).
-PetscErrorCode ReadAll(PetscViewer viewer, MPI_Comm comm, const char *name, PetscInt total, PetscInt bs, std::vector<PetscReal> *out) {
-  Vec                v, all;
-  VecScatter         scatter;
-  const PetscScalar *a;
-  PetscInt           n;
-
-  PetscFunctionBeginUser;
-  PetscCall(VecCreate(comm, &v));
-  if (total >= 0) PetscCall(VecSetSizes(v, PETSC_DECIDE, total));
-  PetscCall(VecSetBlockSize(v, bs));
-  PetscCall(VecSetType(v, VECSTANDARD));
-  PetscCall(PetscObjectSetName((PetscObject)v, name));
-  PetscCall(VecLoad(v, viewer));
-  PetscCall(VecScatterCreateToAll(v, &scatter, &all));
-  PetscCall(VecScatterBegin(scatter, v, all, INSERT_VALUES, SCATTER_FORWARD));
-  PetscCall(VecScatterEnd(scatter, v, all, INSERT_VALUES, SCATTER_FORWARD));
-  PetscCall(VecGetLocalSize(all, &n));
-  PetscCall(VecGetArrayRead(all, &a));
-  out->assign(a, a + n);
-  PetscCall(VecRestoreArrayRead(all, &a));
-  PetscCall(VecScatterDestroy(&scatter));
-  PetscCall(VecDestroy(&all));
-  PetscCall(VecDestroy(&v));
-  PetscFunctionReturn(0);
-}
 
 }  // namespace
 
