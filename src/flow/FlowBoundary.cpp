@@ -102,6 +102,8 @@ PetscReal FlowBoundary::Prescribed(int f, int d, const PetscReal x[3]) const {
   return v;
 }
 
+// The ghost planes are filled plane by plane, x innermost (contiguous), the directions in the order
+// x, y, z so that edge and corner ghosts take the values of the planes filled before them.
 PetscErrorCode FlowBoundary::FillVelocityGhosts(const StaggeredGrid &sg, int d, Vec local) const {
   LocalField u;
   PetscInt   gs[3], gm[3];
@@ -123,25 +125,47 @@ PetscErrorCode FlowBoundary::FillVelocityGhosts(const StaggeredGrid &sg, int d, 
         PetscInt       mirror;
         if (d == e) mirror = side ? last - m : m;        // faces: the boundary face is index 0 / last
         else mirror = side ? last - m + 1 : m - 1;       // cells: mirror about the face
-        PetscInt q[3], r[3];
-        for (q[(e + 1) % 3] = gs[(e + 1) % 3]; q[(e + 1) % 3] < gs[(e + 1) % 3] + gm[(e + 1) % 3]; ++q[(e + 1) % 3])
-          for (q[(e + 2) % 3] = gs[(e + 2) % 3]; q[(e + 2) % 3] < gs[(e + 2) % 3] + gm[(e + 2) % 3]; ++q[(e + 2) % 3]) {
-            q[e] = g;
-            for (int c = 0; c < 3; ++c) r[c] = q[c];
-            r[e] = mirror;
-            const PetscScalar inner = u.at(r);
-            PetscScalar       value;
-            if (d == e) {
-              if (F.type == FlowBoundaryType::Wall) value = inner;                 // even
-              else if (F.type == FlowBoundaryType::Slip) value = -inner;           // odd about 0
-              else { r[e] = side ? last : 0; value = u.at(r); }                    // zero gradient
-            } else if (F.type == FlowBoundaryType::Wall || F.type == FlowBoundaryType::Inflow) {
-              PetscReal x[3];
-              for (int c = 0; c < 3; ++c) x[c] = lo[c] + (c == d ? q[c] : q[c] + 0.5) * h[c];
-              x[e] = side ? grid_->Upper()[e] : lo[e];
-              value = 2 * Prescribed(f, d, x) - inner;                             // odd about the prescribed value
-            } else value = inner;                                                  // slip, outflow: zero gradient
-            u.at(q) = value;
+        // What the ghost takes: the mirror value (even), its negative (odd about 0), the boundary
+        // point's value (zero gradient), or 2 v_b - mirror (odd about a prescribed value v_b).
+        enum { Even, Odd, Boundary, AboutValue, AboutProfile } mode;
+        PetscScalar vb = 0;
+        if (d == e) mode = F.type == FlowBoundaryType::Wall ? Even : F.type == FlowBoundaryType::Slip ? Odd : Boundary;
+        else if (F.type == FlowBoundaryType::Wall || F.type == FlowBoundaryType::Inflow) {
+          mode = F.type == FlowBoundaryType::Inflow && F.parabolic ? AboutProfile : AboutValue;
+          if (mode == AboutValue) {
+            const PetscReal x[3] = {0, 0, 0};  // a wall's or a uniform inflow's velocity does not depend on x
+            vb                   = 2 * Prescribed(f, d, x);
+          }
+        } else mode = Even;  // slip, outflow: zero gradient
+        if (mode == Boundary) mirror = side ? last : 0;
+        PetscInt pl[3] = {gs[0], gs[1], gs[2]}, ph[3] = {gs[0] + gm[0], gs[1] + gm[1], gs[2] + gm[2]};
+        pl[e] = g;
+        ph[e] = g + 1;
+        const PetscInt shift = (mirror - g) * u.stride[e], nx = ph[0] - pl[0];
+        for (PetscInt k = pl[2]; k < ph[2]; ++k)
+          for (PetscInt j = pl[1]; j < ph[1]; ++j) {
+            PetscScalar *row = &u.at(pl[0], j, k);
+            switch (mode) {
+            case Even:
+            case Boundary:
+              for (PetscInt i = 0; i < nx; ++i) row[i] = row[i + shift];
+              break;
+            case Odd:
+              for (PetscInt i = 0; i < nx; ++i) row[i] = -row[i + shift];
+              break;
+            case AboutValue:
+              for (PetscInt i = 0; i < nx; ++i) row[i] = vb - row[i + shift];
+              break;
+            case AboutProfile:
+              for (PetscInt i = 0; i < nx; ++i) {
+                const PetscInt q[3] = {pl[0] + i, j, k};
+                PetscReal      x[3];
+                for (int c = 0; c < 3; ++c) x[c] = lo[c] + (c == d ? q[c] : q[c] + 0.5) * h[c];
+                x[e]   = side ? grid_->Upper()[e] : lo[e];
+                row[i] = 2 * Prescribed(f, d, x) - row[i + shift];
+              }
+              break;
+            }
           }
       }
     }
@@ -164,13 +188,14 @@ PetscErrorCode FlowBoundary::FillCellGhosts(const StaggeredGrid &sg, Vec local) 
       const PetscInt a = side ? last + 1 : gs[e], b = side ? gs[e] + gm[e] : 0;
       for (PetscInt g = a; g < b; ++g) {
         const PetscInt mirror = side ? 2 * last + 1 - g : -g - 1;
-        PetscInt       q[3], r[3];
-        for (q[(e + 1) % 3] = gs[(e + 1) % 3]; q[(e + 1) % 3] < gs[(e + 1) % 3] + gm[(e + 1) % 3]; ++q[(e + 1) % 3])
-          for (q[(e + 2) % 3] = gs[(e + 2) % 3]; q[(e + 2) % 3] < gs[(e + 2) % 3] + gm[(e + 2) % 3]; ++q[(e + 2) % 3]) {
-            q[e] = g;
-            for (int k = 0; k < 3; ++k) r[k] = q[k];
-            r[e]    = mirror;
-            c.at(q) = c.at(r);
+        PetscInt       pl[3] = {gs[0], gs[1], gs[2]}, ph[3] = {gs[0] + gm[0], gs[1] + gm[1], gs[2] + gm[2]};
+        pl[e] = g;
+        ph[e] = g + 1;
+        const PetscInt shift = (mirror - g) * c.stride[e], nx = ph[0] - pl[0];
+        for (PetscInt k = pl[2]; k < ph[2]; ++k)
+          for (PetscInt j = pl[1]; j < ph[1]; ++j) {
+            PetscScalar *row = &c.at(pl[0], j, k);
+            for (PetscInt i = 0; i < nx; ++i) row[i] = row[i + shift];
           }
       }
     }
