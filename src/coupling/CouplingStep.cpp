@@ -84,8 +84,9 @@ PetscErrorCode Coupling::Project() {
       for (PetscInt p = 0; p < a.n; ++p) kv[p] = a.fluidDrag[p] * a.v[3 * p + d];
       PetscCall(VecSet(rate_[d], 0));
       PetscCall(VecSet(target_[d], 0));
-      PetscCall(avg_.Deposit(d, a.n, a.x, H_.data(), a.fluidDrag, 1, rate_[d]));
-      PetscCall(avg_.Deposit(d, a.n, a.x, H_.data(), kv.data(), 1, target_[d]));
+      const PetscReal *values[2] = {a.fluidDrag, kv.data()};
+      Vec              outs[2]   = {rate_[d], target_[d]};
+      PetscCall(avg_.Deposit(d, a.n, a.x, H_.data(), 2, values, 1, outs));
       PetscCall(sg.GetGlobal(d, rate_[d], &C));
       PetscCall(sg.GetGlobal(d, target_[d], &W));
       PetscCall(sg.GetGlobal(d, flow_->Velocity(d), &U));
@@ -192,8 +193,13 @@ PetscErrorCode Coupling::Average() {
   PetscCheck((PetscInt)H_.size() == n, PETSC_COMM_SELF, PETSC_ERR_ORDER, "coupling: Average() needs the particles of the last Project()");
   std::vector<PetscReal> u(3 * n), gp(3 * n), e(n);
   for (int d = 0; d < 3; ++d) {
-    PetscCall(avg_.Average(d, flow_->Velocity(d), faceEps_[d], n, a.x, H_.data(), u.data() + d, 3));
-    if (pressureForce_) PetscCall(avg_.Average(d, gradP_[d], nullptr, n, a.x, H_.data(), gp.data() + d, 3, false));
+    // The velocity (eps-weighted, wall faces included) and the pressure gradient (not computed on
+    // wall faces) of one component share the kernel weights: one pass.
+    const Vec  fields[2]  = {flow_->Velocity(d), gradP_[d]};
+    const Vec  weights[2] = {faceEps_[d], nullptr};
+    const bool walls[2]   = {true, false};
+    PetscReal *outs[2]    = {u.data() + d, gp.data() + d};
+    PetscCall(avg_.Average(d, pressureForce_ ? 2 : 1, fields, weights, walls, n, a.x, H_.data(), outs, 3));
   }
   PetscCall(avg_.Average(3, flow_->FluidFraction(), flow_->FluidFraction(), n, a.x, H_.data(), e.data(), 1));
   const PetscReal rho = flow_->ReferenceDensity(), mu = flow_->ReferenceViscosity();

@@ -55,39 +55,41 @@ PetscErrorCode KernelAverager::Destroy() {
   PetscFunctionBeginUser;
   for (int loc = 0; loc < 4; ++loc) {
     PetscCall(VecDestroy(&local_[loc]));
+    for (Vec &v : pool_[loc]) PetscCall(VecDestroy(&v));
+    pool_[loc].clear();
     PetscCall(DMDestroy(&dm_[loc]));
   }
-  PetscCall(VecDestroy(&weightLocal_));
   PetscFunctionReturn(0);
 }
 
-bool KernelAverager::Support(int loc, const PetscReal x[3], PetscReal H, bool deposit, std::vector<PetscInt> &offsets, std::vector<PetscReal> &weights) const {
+// The points of location loc around x with their raw kernel weights. The wall faces of the location's
+// own component are included and flagged in pts.wall (deposits and pressure-gradient averages leave
+// them out), so one gather serves both kinds of use. False if the support leaves this rank's
+// ghosted region.
+bool KernelAverager::Gather(int loc, const PetscReal x[3], PetscReal H, Points &pts) const {
   const Grid      &grid = sg_->Base();
   const PetscReal *h = grid.Spacing();
   PetscInt         q0[3], q1[3], N[3];
   PetscReal        s[3];
-  offsets.clear();
-  weights.clear();
-  const bool unresolved = settings_.shape == kernel::Shape::Unresolved;
-  const PetscReal rc    = unresolved ? 0 : Cutoff(H);
-  PetscInt lo[3], hi[3];  // the points that may take part, per direction
+  pts.n      = 0;
+  pts.sumAll = pts.sumInner = 0;
+  const bool      unresolved = settings_.shape == kernel::Shape::Unresolved;
+  const PetscReal rc         = unresolved ? 0 : Cutoff(H);
+  PetscInt        wallAt[2] = {-1, -1};  // the wall-face indices along loc (faces only, not periodic)
   for (int e = 0; e < 3; ++e) {
     N[e] = sg_->Points(loc, e);
     // Continuous index of x in the location's numbering (faces normal to e sit at integer indices).
     s[e] = (x[e] - grid.Lower()[e]) / h[e] - (loc == e ? 0 : 0.5);
     PetscReal c = (x[e] - grid.Lower()[e]) / h[e];  // in cells
+    PetscInt  lo = 0, hi = N[e] - 1;
     if (grid.Periodic(e)) {
       // A particle held by this rank may have been wrapped to the far side of the box since it last
       // migrated: use its image nearest this rank's points.
       const PetscReal mid = gs_[loc][e] + 0.5 * gm_[loc][e];
       if (s[e] - mid > 0.5 * N[e]) s[e] -= N[e], c -= N[e];
       else if (s[e] - mid < -0.5 * N[e]) s[e] += N[e], c += N[e];
-      lo[e] = PETSC_MIN_INT, hi[e] = PETSC_MAX_INT;
-    } else {
-      // Deposits skip the wall faces of their own component (the boundary conditions set them).
-      const bool skipWalls = deposit && loc == e;
-      lo[e] = skipWalls ? 1 : 0, hi[e] = skipWalls ? N[e] - 2 : N[e] - 1;
-    }
+      lo = PETSC_MIN_INT, hi = PETSC_MAX_INT;
+    } else if (loc == e) wallAt[0] = 0, wallAt[1] = N[e] - 1;
     if (unresolved) {
       const PetscInt cell = (PetscInt)std::floor(c);  // the containing cell
       const PetscInt cc = grid.Periodic(e) ? cell : std::min(std::max(cell, (PetscInt)0), grid.Cells()[e] - 1);
@@ -96,97 +98,200 @@ bool KernelAverager::Support(int loc, const PetscReal x[3], PetscReal H, bool de
       q0[e] = (PetscInt)std::ceil(s[e] - rc / h[e]);
       q1[e] = (PetscInt)std::floor(s[e] + rc / h[e]);
     }
-    q0[e] = std::max(q0[e], lo[e]);
-    q1[e] = std::min(q1[e], hi[e]);
+    q0[e] = std::max(q0[e], lo);
+    q1[e] = std::min(q1[e], hi);
     if (q0[e] < gs_[loc][e] || q1[e] >= gs_[loc][e] + gm_[loc][e]) return false;
   }
-  const PetscInt sy = gm_[loc][0], sz = gm_[loc][0] * gm_[loc][1];
-  PetscReal      sum = 0;
+  // Room for every point of the index box (grown once, reused: no allocation per particle).
+  size_t box = 1;
+  for (int e = 0; e < 3; ++e) box *= (size_t)std::max(q1[e] - q0[e] + 1, (PetscInt)0);
+  if (pts.raw.size() < box) {
+    pts.offsets.resize(box);
+    pts.raw.resize(box);
+    pts.wall.resize(box);
+  }
+  const PetscInt  sy = gm_[loc][0], sz = gm_[loc][0] * gm_[loc][1];
+  const PetscReal rc2 = rc * rc, irc2 = unresolved ? 0 : 1 / rc2, i2H2 = 1 / (2 * H * H);
+  const bool      smooth = settings_.shape == kernel::Shape::Smooth;
   for (PetscInt k = q0[2]; k <= q1[2]; ++k) {
     const PetscReal dz = (k - s[2]) * h[2];
     for (PetscInt j = q0[1]; j <= q1[1]; ++j) {
       const PetscReal dy = (j - s[1]) * h[1];
-      for (PetscInt i = q0[0]; i <= q1[0]; ++i) {
-        const PetscReal dx = (i - s[0]) * h[0];
-        const PetscReal w  = unresolved ? 1 : kernel::Weight(settings_.shape, dx * dx + dy * dy + dz * dz, H, rc);
-        if (w <= 0) continue;
-        offsets.push_back((i - gs_[loc][0]) + (j - gs_[loc][1]) * sy + (k - gs_[loc][2]) * sz);
-        weights.push_back(w);
-        sum += w;
+      PetscInt        i0 = q0[0], i1 = q1[0];
+      if (!unresolved) {
+        // Only the chord of the support sphere along x can have weight (a cube of points around a
+        // sphere is half empty); one point of margin each side, the weight itself decides at the rim.
+        const PetscReal yz = dy * dy + dz * dz;
+        if (yz >= rc2) continue;
+        const PetscReal half = std::sqrt(rc2 - yz) / h[0];
+        i0 = std::max(i0, (PetscInt)std::ceil(s[0] - half) - 1);
+        i1 = std::min(i1, (PetscInt)std::floor(s[0] + half) + 1);
       }
+      const PetscReal yz = dy * dy + dz * dz;
+      // The row's wall flag (faces of y or z) or the wall faces' x indices (faces of x).
+      const bool      rowWall = (loc == 1 && (j == wallAt[0] || j == wallAt[1])) || (loc == 2 && (k == wallAt[0] || k == wallAt[1]));
+      const PetscInt  base    = (j - gs_[loc][1]) * sy + (k - gs_[loc][2]) * sz - gs_[loc][0];
+      PetscInt       *off     = pts.offsets.data();
+      PetscReal      *raw     = pts.raw.data();
+      char           *wall    = pts.wall.data();
+      size_t          m       = pts.n;
+      for (PetscInt i = i0; i <= i1; ++i) {
+        const PetscReal dx = (i - s[0]) * h[0];
+        PetscReal       w  = 1;
+        if (!unresolved) {
+          // kernel::Weight written out with its divisions hoisted: this loop is the coupling's cost.
+          const PetscReal r2 = dx * dx + yz;
+          if (r2 >= rc2) continue;
+          if (smooth) {
+            const PetscReal q = 1 - r2 * irc2;
+            w                 = (q * q) * (q * q);
+          } else w = std::exp(-r2 * i2H2);
+        }
+        if (w <= 0) continue;
+        const bool onWall = rowWall || (loc == 0 && (i == wallAt[0] || i == wallAt[1]));
+        off[m]            = base + i;
+        raw[m]            = w;
+        wall[m]           = onWall;
+        ++m;
+        pts.sumAll += w;
+        if (!onWall) pts.sumInner += w;
+      }
+      pts.n = m;
     }
   }
-  if (!(sum > 0)) {  // a kernel narrower than the point spacing missed every point: take the nearest
-    PetscInt q[3];
-    for (int e = 0; e < 3; ++e) {
-      q[e] = std::min(std::max((PetscInt)std::lround(s[e]), lo[e]), hi[e]);
-      if (q[e] < gs_[loc][e] || q[e] >= gs_[loc][e] + gm_[loc][e]) return false;
-    }
-    offsets.assign(1, (q[0] - gs_[loc][0]) + (q[1] - gs_[loc][1]) * sy + (q[2] - gs_[loc][2]) * sz);
-    weights.assign(1, 1.0);
-    return true;
-  }
-  for (PetscReal &w : weights) w /= sum;
   return true;
 }
 
+// The normalised weights of one use of a gather (wall faces left out when `inner`); the nearest
+// point if the kernel, narrower than the point spacing, missed every point. False if the support
+// leaves this rank's ghosted region.
+bool KernelAverager::Normalise(int loc, const PetscReal x[3], const Points &pts, bool inner, std::vector<PetscInt> &offsets, std::vector<PetscReal> &weights) const {
+  offsets.clear();
+  weights.clear();
+  const PetscReal sum = inner ? pts.sumInner : pts.sumAll;
+  if (sum > 0) {
+    for (size_t k = 0; k < pts.n; ++k) {
+      if (inner && pts.wall[k]) continue;
+      offsets.push_back(pts.offsets[k]);
+      weights.push_back(pts.raw[k] / sum);
+    }
+    return true;
+  }
+  const Grid      &grid = sg_->Base();
+  const PetscReal *h    = grid.Spacing();
+  PetscInt         q[3];
+  for (int e = 0; e < 3; ++e) {
+    const PetscInt  N = sg_->Points(loc, e);
+    const PetscReal s = (x[e] - grid.Lower()[e]) / h[e] - (loc == e ? 0 : 0.5);
+    PetscInt        lo = 0, hi = N - 1;
+    if (grid.Periodic(e)) lo = PETSC_MIN_INT, hi = PETSC_MAX_INT;
+    else if (inner && loc == e) lo = 1, hi = N - 2;
+    PetscReal se = s;
+    if (grid.Periodic(e)) {
+      const PetscReal mid = gs_[loc][e] + 0.5 * gm_[loc][e];
+      if (se - mid > 0.5 * N) se -= N;
+      else if (se - mid < -0.5 * N) se += N;
+    }
+    q[e] = std::min(std::max((PetscInt)std::lround(se), lo), hi);
+    if (q[e] < gs_[loc][e] || q[e] >= gs_[loc][e] + gm_[loc][e]) return false;
+  }
+  offsets.assign(1, (q[0] - gs_[loc][0]) + (q[1] - gs_[loc][1]) * gm_[loc][0] + (q[2] - gs_[loc][2]) * gm_[loc][0] * gm_[loc][1]);
+  weights.assign(1, 1.0);
+  return true;
+}
+
+PetscErrorCode KernelAverager::LocalVectors(int loc, size_t count) {
+  PetscFunctionBeginUser;
+  while (pool_[loc].size() < count) {
+    Vec v;
+    PetscCall(DMCreateLocalVector(dm_[loc], &v));
+    pool_[loc].push_back(v);
+  }
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode KernelAverager::Deposit(int loc, PetscInt n, const PetscReal *x, const PetscReal *H, const PetscReal *value, PetscInt stride, Vec out) {
-  PetscScalar *a;
-  PetscInt     bad = 0, anyBad;
+  PetscFunctionBeginUser;
+  PetscCall(Deposit(loc, n, x, H, 1, &value, stride, &out));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode KernelAverager::Deposit(int loc, PetscInt n, const PetscReal *x, const PetscReal *H, PetscInt nf, const PetscReal *const value[], PetscInt stride, Vec out[]) {
+  PetscInt bad = 0, anyBad;
 
   PetscFunctionBeginUser;
-  PetscCall(VecSet(local_[loc], 0));
-  PetscCall(VecGetArray(local_[loc], &a));
+  PetscCall(LocalVectors(loc, nf));
+  arrays_.resize(nf);
+  for (PetscInt f = 0; f < nf; ++f) {
+    PetscCall(VecSet(pool_[loc][f], 0));
+    PetscCall(VecGetArray(pool_[loc][f], &arrays_[f]));
+  }
   for (PetscInt p = 0; p < n; ++p) {
-    if (!Support(loc, &x[3 * p], H[p], true, offsets_, weights_)) {
+    if (!Gather(loc, &x[3 * p], H[p], points_) || !Normalise(loc, &x[3 * p], points_, true, offsets_, weights_)) {
       ++bad;
       continue;
     }
-    const PetscReal v = value[p * stride];
-    for (size_t k = 0; k < offsets_.size(); ++k) a[offsets_[k]] += v * weights_[k];
+    for (PetscInt f = 0; f < nf; ++f) {
+      PetscScalar    *a = arrays_[f];
+      const PetscReal v = value[f][p * stride];
+      for (size_t k = 0; k < offsets_.size(); ++k) a[offsets_[k]] += v * weights_[k];
+    }
   }
-  PetscCall(VecRestoreArray(local_[loc], &a));
+  for (PetscInt f = 0; f < nf; ++f) PetscCall(VecRestoreArray(pool_[loc][f], &arrays_[f]));
   PetscCallMPI(MPI_Allreduce(&bad, &anyBad, 1, MPIU_INT, MPI_SUM, sg_->Base().Comm()));
   PetscCheck(anyBad == 0, sg_->Base().Comm(), PETSC_ERR_PLIB, "coupling: %" PetscInt_FMT " particle kernels reach beyond the ghost layer (%" PetscInt_FMT " cells)", anyBad, width_);
-  PetscCall(DMLocalToGlobal(dm_[loc], local_[loc], ADD_VALUES, out));
+  for (PetscInt f = 0; f < nf; ++f) PetscCall(DMLocalToGlobal(dm_[loc], pool_[loc][f], ADD_VALUES, out[f]));
   PetscFunctionReturn(0);
 }
 
 PetscErrorCode KernelAverager::Average(int loc, Vec field, Vec weight, PetscInt n, const PetscReal *x, const PetscReal *H, PetscReal *out, PetscInt stride, bool walls) {
-  const PetscScalar *f, *c = nullptr;
-  PetscInt           bad = 0, anyBad;
+  PetscFunctionBeginUser;
+  PetscCall(Average(loc, 1, &field, &weight, &walls, n, x, H, &out, stride));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode KernelAverager::Average(int loc, PetscInt nf, const Vec field[], const Vec weight[], const bool walls[], PetscInt n, const PetscReal *x, const PetscReal *H,
+                                       PetscReal *const out[], PetscInt stride) {
+  PetscInt bad = 0, anyBad;
 
   PetscFunctionBeginUser;
-  PetscCall(DMGlobalToLocal(dm_[loc], field, INSERT_VALUES, local_[loc]));
-  if (weight) {
-    if (!weightLocal_) PetscCall(VecDuplicate(local_[3], &weightLocal_));
-    PetscInt nw, nl;
-    PetscCall(VecGetSize(weightLocal_, &nw));
-    PetscCall(VecGetSize(local_[loc], &nl));
-    if (nw != nl) {  // sized for another location
-      PetscCall(VecDestroy(&weightLocal_));
-      PetscCall(VecDuplicate(local_[loc], &weightLocal_));
+  // Local copies: field f in pool slot f, its weight (if any) in slot nf + f.
+  PetscCall(LocalVectors(loc, 2 * nf));
+  arrays_.assign(2 * nf, nullptr);
+  bool needAll = false, needInner = false;
+  for (PetscInt f = 0; f < nf; ++f) {
+    PetscCall(DMGlobalToLocal(dm_[loc], field[f], INSERT_VALUES, pool_[loc][f]));
+    PetscCall(VecGetArray(pool_[loc][f], &arrays_[f]));
+    if (weight[f]) {
+      PetscCall(DMGlobalToLocal(dm_[loc], weight[f], INSERT_VALUES, pool_[loc][nf + f]));
+      PetscCall(VecGetArray(pool_[loc][nf + f], &arrays_[nf + f]));
     }
-    PetscCall(DMGlobalToLocal(dm_[loc], weight, INSERT_VALUES, weightLocal_));
-    PetscCall(VecGetArrayRead(weightLocal_, &c));
+    (walls[f] ? needAll : needInner) = true;
   }
-  PetscCall(VecGetArrayRead(local_[loc], &f));
   for (PetscInt p = 0; p < n; ++p) {
-    if (!Support(loc, &x[3 * p], H[p], !walls, offsets_, weights_)) {
+    bool ok = Gather(loc, &x[3 * p], H[p], points_);
+    if (ok && needAll) ok = Normalise(loc, &x[3 * p], points_, false, offsets_, weights_);
+    if (ok && needInner) ok = Normalise(loc, &x[3 * p], points_, true, offsetsInner_, weightsInner_);
+    if (!ok) {
       ++bad;
-      out[p * stride] = 0;
+      for (PetscInt f = 0; f < nf; ++f) out[f][p * stride] = 0;
       continue;
     }
-    PetscReal num = 0, den = 0;
-    for (size_t k = 0; k < offsets_.size(); ++k) {
-      const PetscReal w = c ? weights_[k] * PetscRealPart(c[offsets_[k]]) : weights_[k];
-      num += w * PetscRealPart(f[offsets_[k]]);
-      den += w;
+    for (PetscInt f = 0; f < nf; ++f) {
+      const std::vector<PetscInt>  &o = walls[f] ? offsets_ : offsetsInner_;
+      const std::vector<PetscReal> &w = walls[f] ? weights_ : weightsInner_;
+      const PetscScalar            *g = arrays_[f], *c = arrays_[nf + f];
+      PetscReal                     num = 0, den = 0;
+      for (size_t k = 0; k < o.size(); ++k) {
+        const PetscReal wk = c ? w[k] * PetscRealPart(c[o[k]]) : w[k];
+        num += wk * PetscRealPart(g[o[k]]);
+        den += wk;
+      }
+      out[f][p * stride] = den > 0 ? num / den : 0;
     }
-    out[p * stride] = den > 0 ? num / den : 0;
   }
-  PetscCall(VecRestoreArrayRead(local_[loc], &f));
-  if (c) PetscCall(VecRestoreArrayRead(weightLocal_, &c));
+  for (PetscInt f = 0; f < 2 * nf; ++f)
+    if (arrays_[f]) PetscCall(VecRestoreArray(pool_[loc][f], &arrays_[f]));
   PetscCallMPI(MPI_Allreduce(&bad, &anyBad, 1, MPIU_INT, MPI_SUM, sg_->Base().Comm()));
   PetscCheck(anyBad == 0, sg_->Base().Comm(), PETSC_ERR_PLIB, "coupling: %" PetscInt_FMT " particle kernels reach beyond the ghost layer (%" PetscInt_FMT " cells)", anyBad, width_);
   PetscFunctionReturn(0);

@@ -46,21 +46,36 @@ public:
   // (their velocity is the wall's) unless `walls` is false (a pressure gradient there is not
   // computed). Collective (ghost update).
   PetscErrorCode Average(int loc, Vec field, Vec weight, PetscInt n, const PetscReal *x, const PetscReal *H, PetscReal *out, PetscInt stride, bool walls = true);
+  // Several fields of one location at once (the kernel weights, the costly part, are computed once per
+  // particle): value[f] into out[f], or field[f] (weighted by weight[f], walls[f]) into out[f].
+  PetscErrorCode Deposit(int loc, PetscInt n, const PetscReal *x, const PetscReal *H, PetscInt nf, const PetscReal *const value[], PetscInt stride, Vec out[]);
+  PetscErrorCode Average(int loc, PetscInt nf, const Vec field[], const Vec weight[], const bool walls[], PetscInt n, const PetscReal *x, const PetscReal *H, PetscReal *const out[],
+                         PetscInt stride);
 
 private:
-  // The points of location loc around x and their weights (normalised); `deposit` leaves out the wall
-  // faces. Fails (returns false) if the support leaves this rank's ghosted region.
-  bool Support(int loc, const PetscReal x[3], PetscReal H, bool deposit, std::vector<PetscInt> &offsets, std::vector<PetscReal> &weights) const;
+  struct Points {  // a particle's support: n local offsets, raw weights, wall-face flags; weight sums
+    std::vector<PetscInt>  offsets;  // sized for the largest index box seen, n in use
+    std::vector<PetscReal> raw;
+    std::vector<char>      wall;
+    size_t                 n      = 0;
+    PetscReal              sumAll = 0, sumInner = 0;
+  };
+  bool           Gather(int loc, const PetscReal x[3], PetscReal H, Points &pts) const;
+  bool           Normalise(int loc, const PetscReal x[3], const Points &pts, bool inner, std::vector<PetscInt> &offsets, std::vector<PetscReal> &weights) const;
+  PetscErrorCode LocalVectors(int loc, size_t count);
   PetscErrorCode Layout(int loc, DM *dm) const;
 
   const StaggeredGrid *sg_ = nullptr;
   Settings             settings_;
   PetscInt             width_ = 1;
   DM                   dm_[4] = {nullptr, nullptr, nullptr, nullptr};  // wide-ghost DMDAs per location
-  Vec                  local_[4] = {nullptr, nullptr, nullptr, nullptr}, weightLocal_ = nullptr;
+  Vec                  local_[4] = {nullptr, nullptr, nullptr, nullptr};
+  std::vector<Vec>     pool_[4];  // local vectors of the multi-field Deposit and Average, per location
   PetscInt             gs_[4][3] = {}, gm_[4][3] = {};  // ghosted corners of each location
-  std::vector<PetscInt>  offsets_;
-  std::vector<PetscReal> weights_, weights2_;
+  Points                     points_;  // scratch, reused: no allocation per particle
+  std::vector<PetscInt>      offsets_, offsetsInner_;
+  std::vector<PetscReal>     weights_, weightsInner_;
+  std::vector<PetscScalar *> arrays_;
 };
 
 }  // namespace vofdem
