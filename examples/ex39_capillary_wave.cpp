@@ -12,7 +12,8 @@ static const char help[] = "Verification V4 (VERIFICATION.md): the damped capill
                            "Faddeeva function written here, Weideman 1994), checked first against its small-viscosity limits. Must reach\n"
                            "(-tolerance, percent): 1 at 32 points (VERIFICATION.md V4); Basilisk's own figure elsewhere (2.4 at 16, 0.23 at 64).\n"
                            "-exact_only: print the exact amplitude and the checks, run nothing. -error_check 0: an RMS error above the tolerance is\n"
-                           "printed (FAIL) but does not fail the run (the quick tier's regression test at 16 points, compared with its reference output).\n\n";
+                           "printed (FAIL) but does not fail the run (the quick tier's regression test at 16 points, compared with its reference output).\n"
+                           "-dt: a fixed time step (default: the capillary limit, adapted every step).\n\n";
 
 #include "vofdem/core/Runtime.hpp"
 #include "vofdem/core/Simulation.hpp"
