@@ -71,6 +71,7 @@ PetscReal Below(PetscReal zc, PetscReal r, PetscReal z) {
 struct BedShape {
   PetscInt  n = 0;
   PetscReal eps = 0, L = 0, top = 0, L2z = 0;  // interior eps, L = N V/(A (1-eps)), top sphere's top, 2 <z>
+  std::vector<PetscReal> fine, cells;           // exact eps in slabs of d/10 and of one cell (1 mm) from the grate down 1 mm
 };
 
 // The bed from the saved CSV (every rank reads it): solid fraction in slabs of d/10 by exact
@@ -100,6 +101,14 @@ PetscErrorCode Measure(const std::string &path, BedShape *b) {
   for (PetscReal c : z) solid += Below(c, kD / 2, hi) - Below(c, kD / 2, lo);
   b->eps = 1 - solid / (kA * kA * (hi - lo));
   b->L   = b->n * kVp / (kA * kA * (1 - b->eps));
+  for (PetscReal slab : {dz, (PetscReal)1e-3}) {
+    std::vector<PetscReal> &e = slab == dz ? b->fine : b->cells;
+    for (PetscReal a = kGrate - 1e-3; a < b->top; a += slab) {
+      PetscReal v = 0;
+      for (PetscReal c : z) v += Below(c, kD / 2, a + slab) - Below(c, kD / 2, a);
+      e.push_back(1 - v / (kA * kA * slab));
+    }
+  }
   PetscFunctionReturn(0);
 }
 
@@ -272,6 +281,13 @@ PetscErrorCode Run() {
     }
     PetscCall(PetscPrintf(PETSC_COMM_WORLD, "  (c) plane-mean eps by row:%s\n      Ergun over this profile %.3f Pa (%+.2f %% of the bed's reference)\n", prof.c_str(), (double)profile,
                           (double)(100 * (profile / ref - 1))));
+    // (d) Ergun over the exact eps profile of the particles: in slabs of d/10 (the bed as it is) and of one cell
+    // (what a grid of cell = d can hold without any kernel)
+    PetscReal exact[2] = {0, 0};
+    for (PetscReal e1 : b.fine) exact[0] += kD / 10 * ErgunGradient(e1, U) * (e1 < 1);
+    for (PetscReal e1 : b.cells) exact[1] += 1e-3 * ErgunGradient(e1, U) * (e1 < 1);
+    PetscCall(PetscPrintf(PETSC_COMM_WORLD, "  (d) Ergun over the particles' exact eps profile: slabs of d/10 %.3f Pa (%+.2f %%), slabs of one cell %.3f Pa (%+.2f %%)\n", (double)exact[0],
+                          (double)(100 * (exact[0] / ref - 1)), (double)exact[1], (double)(100 * (exact[1] / ref - 1))));
     if (out) PetscCall(PetscFPrintf(PETSC_COMM_WORLD, out, "%.6e,%.6f,%.6f,%.6e,%.6f,%.6f,%.6f\n", (double)U, (double)dp, (double)ref, (double)err, (double)perArea, (double)profile, (double)spread));
     PetscCall(sim.Destroy());
   }
