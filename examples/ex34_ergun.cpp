@@ -14,7 +14,7 @@ static const char help[] = "Verification C2 (VERIFICATION.md): a packed bed with
                            "(c) the plane-mean eps of the grid against the bed's, and Ergun integrated over that profile. -csv FILE appends\n"
                            "U, drop, reference, errors; -average_steps N: the drop is the mean over the last N steps (default 1). Exits non-zero\n"
                            "on failure (-check 0: never). -check_balance: check (a) within 1 %% and (b) within 2 %% instead of Ergun (the quick test);\n"
-                           "-width: the column's width (m, default 0.01, whole millimetres).\n\n";
+                           "-width, -height: the column's width and height (m, default 0.01 and 0.04, whole millimetres).\n\n";
 
 #include "vofdem/core/Runtime.hpp"
 #include "vofdem/core/Simulation.hpp"
@@ -29,8 +29,8 @@ static const char help[] = "Verification C2 (VERIFICATION.md): a packed bed with
 
 namespace {
 
-const PetscReal kD = 1e-3, kRhoP = 2000, kRhoF = 10, kMu = 1.5e-3, kG = 9.81, kZ = 0.04;
-PetscReal       kA = 0.01;  // column width (-width), a whole number of 1 mm cells
+const PetscReal kD = 1e-3, kRhoP = 2000, kRhoF = 10, kMu = 1.5e-3, kG = 9.81;
+PetscReal       kA = 0.01, kZ = 0.04;  // column width and height (-width, -height), whole numbers of 1 mm cells
 const PetscReal kTolerance = 0.01, kGrate = 0.005, kVp = PETSC_PI * kD * kD * kD / 6;
 
 PetscErrorCode Set(const char *name, const std::string &v) {
@@ -47,7 +47,7 @@ std::string Num(PetscReal v) {
 PetscErrorCode Common() {
   PetscFunctionBeginUser;
   const std::string across = std::to_string((long long)std::lround(kA / 1e-3));
-  PetscCall(Set("-grid_cells", across + "," + across + ",40"));
+  PetscCall(Set("-grid_cells", across + "," + across + "," + std::to_string((long long)std::lround(kZ / 1e-3))));
   PetscCall(Set("-grid_upper", Num(kA) + "," + Num(kA) + "," + Num(kZ)));
   PetscCall(Set("-grid_periodic", "x,y"));
   PetscCall(Set("-dem_radius", Num(kD / 2)));
@@ -205,6 +205,7 @@ PetscErrorCode Run() {
   PetscCall(PetscOptionsGetBool(nullptr, nullptr, "-check", &check, nullptr));
   PetscCall(PetscOptionsGetBool(nullptr, nullptr, "-check_balance", &balance, nullptr));
   PetscCall(PetscOptionsGetReal(nullptr, nullptr, "-width", &kA, nullptr));
+  PetscCall(PetscOptionsGetReal(nullptr, nullptr, "-height", &kZ, nullptr));
   PetscCall(PetscOptionsGetString(nullptr, nullptr, "-coupling_drag", drag, sizeof drag, nullptr));
   PetscCall(PetscOptionsGetString(nullptr, nullptr, "-bed_file", file, sizeof file, &fromFile));
   PetscCall(PetscOptionsGetString(nullptr, nullptr, "-csv", csv, sizeof csv, nullptr));
