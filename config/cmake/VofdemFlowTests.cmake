@@ -40,6 +40,7 @@ vofdem_bad_input(flow_pressure_bc     "option -flow_pressure_bc_xlo: with -physi
 set(_coupled -physics dem,flow -grid_cells 8,8,8 -grid_upper 0.01,0.01,0.01 -dem_radius 2e-4 -dem_fill_count 1 -max_steps 1)
 vofdem_bad_input(coupling_drag_unknown "option -coupling_drag: unknown name 'stokes'" ${_coupled} -coupling_drag stokes)
 vofdem_bad_input(coupling_kernel_narrow "option -coupling_kernel_min_width: 0.2 cells is below the cell size" ${_coupled} -coupling_kernel_min_width 0.2)
+vofdem_bad_input(coupling_fraction_average_unknown "option -coupling_fraction_average: unknown name 'harmonic'" ${_coupled} -coupling_fraction_average harmonic)
 vofdem_bad_input(coupling_particle_too_large "coupling: particles of diameter 0.012 m are larger than the box \\(0.01 m in x\\)" -physics dem,flow -grid_cells 8,8,8 -grid_upper 0.01,0.01,0.01 -dem_radius 6e-3 -max_steps 1)
 vofdem_bad_input(flow_advection_unknown "option -flow_advection: unknown name 'quick' \\(known: upwind, central, minmod, vanleer, mc, superbee, koren\\)" ${_flow} -flow_advection quick)
 vofdem_bad_input(flow_solid_box_count "option -flow_solid_boxes: 5 values is not a multiple of 6 \\(x0,y0,z0,x1,y1,z1 per box\\)" ${_flow} -flow_solid_boxes 0,0,0,1,1)

@@ -38,12 +38,17 @@ PetscErrorCode Coupling::SetFromOptions(MPI_Comm comm) {
     PetscCall(opt.Bool("-pressure_force", "Pressure-gradient force -V grad p on the particles (with the hydrostatic pressure it is the buoyancy, P1)", &pressureForce_));
     PetscCall(opt.Bool("-self_correction", "Remove the particle's own disturbance from the velocity it reads (K1b)", &selfCorrection_));
     std::vector<std::string> fd = {implicitFluid_ ? "implicit" : "explicit"};
-    PetscCall(opt.NameList("-fluid_drag", "The fluid side of the drag: explicit (the particles last drag impulse, exact exchange; needs dt below the fluid relaxation time eps rho/beta) or implicit (relaxation toward the particles velocity: stable in dense beds, but the pressure builds up slowly there)",
+    PetscCall(opt.NameList("-fluid_drag", "The fluid side of the drag: explicit (the particles last drag impulse, exact exchange; needs dt below the fluid relaxation time eps rho/beta) or implicit (relaxation toward the particles velocity, seen by the projection too: stable in dense beds)",
                            {"explicit", "implicit"}, &fd));
     if (fd.size() != 1) VofdemInputError(comm, "option -coupling_fluid_drag: give implicit or explicit");
     implicitFluid_ = fd[0] == "implicit" ? PETSC_TRUE : PETSC_FALSE;
     PetscCall(opt.Real("-self_correction_min_eps", "Apply the self-disturbance correction only to particles whose averaged eps is at least this (it models an isolated particle)", "-",
                        &selfMinEps_, RealRange::Closed(0, 1)));
+    std::vector<std::string> fa = {weightedFraction_ ? "weighted" : "plain"};
+    PetscCall(opt.NameList("-fraction_average", "The fluid fraction a particle reads: plain (sum eps k/sum k, consistent with the eps-weighted velocity: their product is the averaged superficial velocity) or weighted (sum eps^2 k/sum eps k, K1 as written)",
+                           {"plain", "weighted"}, &fa));
+    if (fa.size() != 1) VofdemInputError(comm, "option -coupling_fraction_average: give plain or weighted");
+    weightedFraction_ = fa[0] == "weighted" ? PETSC_TRUE : PETSC_FALSE;
     PetscCall(opt.Real("-min_fluid_fraction", "Floor of the fluid fraction eps (cells below it are counted in the monitor)", "-", &minEps_, RealRange::LeftOpen(0, 1)));
   }
   PetscOptionsEnd();

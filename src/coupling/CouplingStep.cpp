@@ -201,7 +201,10 @@ PetscErrorCode Coupling::Average() {
     PetscReal *outs[2]    = {u.data() + d, gp.data() + d};
     PetscCall(avg_.Average(d, pressureForce_ ? 2 : 1, fields, weights, walls, n, a.x, H_.data(), outs, 3));
   }
-  PetscCall(avg_.Average(3, flow_->FluidFraction(), flow_->FluidFraction(), n, a.x, H_.data(), e.data(), 1));
+  // eps at the particle: by default the plain kernel average, so that eps times the (eps-weighted) velocity
+  // read is the kernel average of the superficial velocity eps u, as the drag laws assume; the eps-weighted
+  // average of K1 reads eps high by var(eps)/eps and at a bed's edges by more (ex34, -coupling_fraction_average).
+  PetscCall(avg_.Average(3, flow_->FluidFraction(), weightedFraction_ ? flow_->FluidFraction() : nullptr, n, a.x, H_.data(), e.data(), 1));
   const PetscReal rho = flow_->ReferenceDensity(), mu = flow_->ReferenceViscosity();
   for (PetscInt p = 0; p < n; ++p) {
     const PetscReal d = 2 * a.radius[p], V = PETSC_PI * d * d * d / 6;

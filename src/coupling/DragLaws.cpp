@@ -75,9 +75,11 @@ double KochHill(double d, double eps, double slip, double rho, double mu) {
   } else {
     F0 = 10 * phi / std::pow(1 - phi, 3);
   }
-  const double F3  = 0.0673 + 0.212 * phi + 0.0232 / std::pow(1 - phi, 5);
-  const double ReA = rho * eps * slip * d / (2 * mu);
-  return 3 * kPi * mu * d * eps * (F0 + 0.5 * F3 * ReA) * eps;
+  const double F3 = 0.0673 + 0.212 * phi + 0.0232 / std::pow(1 - phi, 5);
+  // Koch & Hill define Re on the radius: F0 + F3 Re_a = F0 + F3 Re/2 with Re on the diameter (van Buijtenen
+  // et al. 2011, CES 66: 2368; CFDEM's and MFIX's Koch-Hill); the half must not be taken twice.
+  const double Re = Reynolds(d, eps, slip, rho, mu);
+  return 3 * kPi * mu * d * eps * (F0 + 0.5 * F3 * Re) * eps;
 }
 
 double Beetstra(double d, double eps, double slip, double rho, double mu) {
@@ -89,7 +91,10 @@ double Beetstra(double d, double eps, double slip, double rho, double mu) {
     const double den = 1 + std::pow(10.0, 3 * phi) * std::pow(Re, -(1 + 4 * phi) / 2);
     F += 0.413 * Re / (24 * e2) * num / den;
   }
-  return 3 * kPi * mu * d * eps * F * eps;
+  // Beetstra's F is the drag part already (its Stokes term 10 phi/eps^2 is Carman-Kozeny's 10 phi/eps^3 times
+  // eps): the force on the particle is 3 pi mu d (eps |u - v|) F, without a further eps (MFIX's BVK:
+  // 18 mu eps F/d^2 per solid volume, "/= Koch-Hill's by a factor of eps").
+  return 3 * kPi * mu * d * eps * F;
 }
 
 double Coefficient(Law law, double d, double eps, double slip, double rho, double mu, double eSwitch) {

@@ -233,7 +233,8 @@ PetscErrorCode Flow::UpdateLocals(bool properties) {
     PetscCall(bc_.FillCellGhosts(sg_, betaLocal_));
     PetscCall(DMGlobalToLocal(sg_.Cells(), eps_, INSERT_VALUES, epsLocal_));
     PetscCall(bc_.FillCellGhosts(sg_, epsLocal_));
-    PetscCall(pressure_.SetCoefficient(beta_, "flow: eps/rho"));
+    // with a relaxation the projection sets its own coefficient (FlowDragProjection.cpp)
+    if (!relaxRate_[0]) PetscCall(pressure_.SetCoefficient(beta_, "flow: eps/rho"));
     propertiesDirty_ = false;
     viscousStale_ = PETSC_TRUE;  // the viscous matrix must be rebuilt, not only its diagonal
   }
@@ -501,6 +502,7 @@ PetscErrorCode Flow::Destroy() {
   for (int d = 0; d < 3; ++d)
     for (Vec *v : {&u_[d], &uLocal_[d], &H_[d], &Hold_[d], &L_[d], &rhsFace_[d], &faceForce_[d]}) PetscCall(VecDestroy(v));
   for (Vec *v : {&rho_, &mu_, &eps_, &p_, &phi_, &beta_, &divRhs_, &epsLocal_, &betaLocal_, &emLocal_, &pLocal_, &phiLocal_}) PetscCall(VecDestroy(v));
+  for (Vec *v : {&dragBeta_, &dragBetaLocal_, &rateLocal_[0], &rateLocal_[1], &rateLocal_[2]}) PetscCall(VecDestroy(v));
   PetscCall(VecDestroy(&cellVelocity_));
   PetscCall(DMDestroy(&velocityDM_));
   PetscCall(pressure_.Destroy());

@@ -55,6 +55,8 @@ PetscErrorCode Flow::Project(PetscReal dt, Vec *) {
   PetscCall(PetscLogEventBegin(evProject_, 0, 0, 0, 0));
   for (int d = 0; d < 3; ++d) PetscCall(DMGlobalToLocal(sg_.Face(d), u_[d], INSERT_VALUES, uLocal_[d]));
   PetscCall(Divergence(divRhs_, -1 / dt, &dummy));
+  if (relaxRate_[0]) PetscCall(DragProjectionCoefficient(dt));  // the drag acts on the correction too
+  const Vec coefficient = relaxRate_[0] ? dragBetaLocal_ : betaLocal_;
   if (!userPressureAtol_) {
     // The rhs is an imbalance of much larger terms (a still tank: gravity against the pressure), so a
     // reduction relative to it alone would chase round-off. The absolute floor is the relative
@@ -93,7 +95,7 @@ PetscErrorCode Flow::Project(PetscReal dt, Vec *) {
           phi.at(q) = -phi.at(r);
         }
     }
-  PetscCall(sg_.GetLocal(3, betaLocal_, &beta));
+  PetscCall(sg_.GetLocal(3, coefficient, &beta));
   PetscCall(sg_.GetLocal(3, epsLocal_, &eps));
   const PetscReal *h = grid_->Spacing();
   for (int d = 0; d < 3; ++d) {
@@ -123,7 +125,7 @@ PetscErrorCode Flow::Project(PetscReal dt, Vec *) {
     PetscCall(ZeroBlocked(d, u_[d]));  // the correction crossed solid faces too
   }
   PetscCall(sg_.RestoreLocal(3, epsLocal_, &eps));
-  PetscCall(sg_.RestoreLocal(3, betaLocal_, &beta));
+  PetscCall(sg_.RestoreLocal(3, coefficient, &beta));
   PetscCall(sg_.RestoreLocal(3, phiLocal_, &phi));
   PetscCall(VecAXPY(p_, 1, phi_));
   PetscCall(PetscLogEventEnd(evProject_, 0, 0, 0, 0));

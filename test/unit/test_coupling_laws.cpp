@@ -18,17 +18,52 @@ const double stokes = 3 * M_PI * mu * d;  // K of Stokes drag, kg/s
 }  // namespace
 
 TEST(DragLaws, AgainstHandComputedValues) {
+  // Hand calculations (d = 1 mm, rho 1000, mu 1e-3, slip 0.05 m/s; Re = eps rho d slip/mu), written out
+  // from the papers' formulas; K = force/slip on one particle.
+  // Wen & Yu (Gidaspow 1994), eps 0.9: Re = 45, Cd = 24/45 (1 + 0.15 45^0.687) = 1.62690433,
+  // beta = 3/4 Cd eps (1-eps) rho slip/d eps^-2.65; K = beta V/(1-eps) = 3.80094657e-5.
   EXPECT_NEAR(drag::WenYu(d, 0.9, slip, rho, mu), 3.8009465703890566e-05, 1e-12 * 3.8e-5);
+  // Ergun (Gidaspow's form), eps 0.5: beta = 150 (1-eps)^2 mu/(eps d^2) + 1.75 (1-eps) rho slip/d
+  // = 75000 + 43750 = 118750; K = beta V/(1-eps) = 118750 x 5.23598776e-10/0.5 = 1.24354709e-4.
   EXPECT_NEAR(drag::Ergun(d, 0.5, slip, rho, mu), 0.00012435470920459598, 1e-12 * 1.2e-4);
   EXPECT_NEAR(drag::SchillerNaumann(d, slip, rho, mu), 3.020043557511725e-05, 1e-12 * 3e-5);
+  // Di Felice (1994), eps 0.7: Re = 35, Cd = (0.63 + 4.8/sqrt 35)^2 = 2.07748430, chi = 3.7 - 0.65
+  // exp(-(1.5 - log10 35)^2/2) = 3.05063084; total force 0.5 Cd rho (pi d^2/4) (eps slip)^2 eps^-chi
+  // = 2.96676004e-6 N; drag = eps x total; K = 0.7 x 2.96676004e-6/0.05 = 4.15346406e-5.
   EXPECT_NEAR(drag::DiFelice(d, 0.7, slip, rho, mu), 4.1534640629025366e-05, 1e-12 * 4.2e-5);
-  EXPECT_NEAR(drag::KochHill(d, 0.7, slip, rho, mu), 5.445012646076632e-05, 1e-12 * 5.4e-5);
-  EXPECT_NEAR(drag::KochHill(d, 0.5, slip, rho, mu), 0.00010773257519937585, 1e-12 * 1.1e-4);
-  EXPECT_NEAR(drag::Beetstra(d, 0.7, slip, rho, mu), 5.463009745052035e-05, 1e-12 * 5.5e-5);
+  // Koch & Hill (Hill, Koch & Ladd 2001; F = F0 + F3 Re/2 with Re on the diameter, as CFDEM's KochHillDrag),
+  // eps 0.7 (phi 0.3 < 0.4): F0 = (1 + 3 sqrt(0.15) + 135/64 0.3 ln 0.3 + 16.14 x 0.3)/(1 + 0.681 x 0.3
+  // - 8.48 x 0.09 + 8.16 x 0.027) = 9.43728034, F3 = 0.0673 + 0.212 x 0.3 + 0.0232/0.7^5 = 0.268937722,
+  // F = 9.43728034 + 0.5 x 0.268937722 x 35 = 14.1436905; K = 3 pi mu d eps^2 F = 6.53175598e-5.
+  EXPECT_NEAR(drag::KochHill(d, 0.7, slip, rho, mu), 6.531755975212285e-05, 1e-12 * 6.5e-5);
+  // eps 0.5 (phi >= 0.4): F0 = 10 x 0.5/0.125 = 40, F3 = 0.0673 + 0.106 + 0.0232 x 32 = 0.9157, Re = 25,
+  // F = 40 + 0.5 x 0.9157 x 25 = 51.44625; K = 3 pi mu d 0.25 F = 1.21217371e-4.
+  EXPECT_NEAR(drag::KochHill(d, 0.5, slip, rho, mu), 0.00012121737079105792, 1e-12 * 1.2e-4);
+  // Beetstra, van der Hoef & Kuipers (2007), eps 0.7: F = 10 phi/eps^2 + eps^2 (1 + 1.5 sqrt phi)
+  // + 0.413 Re/(24 eps^2) (1/eps + 3 eps phi + 8.4 Re^-0.343)/(1 + 10^(3 phi) Re^-(1 + 4 phi)/2)
+  // = 7.01502506 + 4.81443079 = 11.8294559; drag 3 pi mu d eps slip F: K = 7.80429964e-5.
+  EXPECT_NEAR(drag::Beetstra(d, 0.7, slip, rho, mu), 7.804299635788622e-05, 1e-12 * 7.8e-5);
+  // eps 0.45, Re 22.5: F = 27.5882609 + 8.56385159; K = 1.53326535e-4.
+  EXPECT_NEAR(drag::Beetstra(d, 0.45, slip, rho, mu), 0.00015332653468440888, 1e-12 * 1.5e-4);
   // Gidaspow is Wen-Yu above its switch and Ergun below.
   EXPECT_EQ(drag::Gidaspow(d, 0.9, slip, rho, mu, 0.8), drag::WenYu(d, 0.9, slip, rho, mu));
   EXPECT_EQ(drag::Gidaspow(d, 0.5, slip, rho, mu, 0.8), drag::Ergun(d, 0.5, slip, rho, mu));
   EXPECT_EQ(drag::Gidaspow(d, 0.76, slip, rho, mu, 0.74), drag::WenYu(d, 0.76, slip, rho, mu));
+}
+
+TEST(DragLaws, DenseStokesLimitIsCarmanKozeny) {
+  // In a fixed bed at vanishing Re the dense-bed laws must give the Carman-Kozeny pressure gradient
+  // 180 phi^2 mu U/(eps^3 d^2) (Ergun's viscous term has 150): with model A, -grad p = n K u/eps,
+  // n = phi/V, u = U/eps, so K = 30 pi mu d phi/eps exactly for Koch-Hill (F0 = 10 phi/eps^3 at phi >= 0.4)
+  // and within Beetstra's small eps^2 (1 + 1.5 sqrt phi) term; Ergun's K is 150/180 of it.
+  const double tiny = 1e-9;
+  for (double eps : {0.4, 0.5, 0.6}) {
+    const double phi = 1 - eps, carman = 30 * M_PI * mu * d * phi / eps;
+    EXPECT_NEAR(drag::KochHill(d, eps, tiny, rho, mu) / carman, 1, 1e-6) << eps;
+    EXPECT_NEAR(drag::Ergun(d, eps, tiny, rho, mu) / carman, 150.0 / 180.0, 1e-6) << eps;
+    const double extra = eps * eps * (1 + 1.5 * std::sqrt(phi)) / (10 * phi / (eps * eps));  // Beetstra's second term
+    EXPECT_NEAR(drag::Beetstra(d, eps, tiny, rho, mu) / carman, 1 + extra, 1e-3) << eps;
+  }
 }
 
 TEST(DragLaws, StokesLimit) {

@@ -9,11 +9,12 @@
 //     the fluid velocity u taken implicitly: K_p and K_p v_p are projected to the faces and the flow
 //     relaxes u toward their ratio at the rate K/(V (eps rho)_f) (Flow::SetFaceRelaxation), which dense
 //     beds of a light fluid need for stability (CFDEM's implicit coupling likewise); the exchange is then
-//     exact in steady state and lags by a step in between. The pressure projection does not see this
-//     drag, so a dense bed builds its pressure drop only over about dt K/(V eps rho) steps: measured
-//     in ex34, not yet fixed (the drag belongs in the projection's coefficient);
+//     exact in steady state and lags by a step in between. The projection's coefficient carries the
+//     drag's 1/(1 + dt c) (FlowDragProjection.cpp), so a dense bed builds its pressure drop in a few
+//     steps (without it, over about dt K/(V eps rho) steps: hundreds in ex34);
 //  2. the flow step;
-//  3. averaging (K1, K2) at every particle: fluid velocity and eps (eps-weighted), pressure gradient
+//  3. averaging (K1, K2) at every particle: fluid velocity (eps-weighted), eps (plain average, or
+//     eps-weighted with -coupling_fraction_average weighted), pressure gradient
 //     (unweighted); the drag coefficient K of the chosen law (DragLaws.hpp) from the slip, after the
 //     self-disturbance correction (K1b); the pressure-gradient force -V grad p (with the hydrostatic
 //     pressure in p it is the buoyancy, P1);
@@ -85,6 +86,7 @@ private:
   PetscBool                pressureForce_ = PETSC_TRUE, selfCorrection_ = PETSC_TRUE;
   PetscReal                minEps_ = 0.1, selfMinEps_ = 0.9;
   PetscBool                implicitFluid_ = PETSC_FALSE;  // -coupling_fluid_drag implicit
+  PetscBool                weightedFraction_ = PETSC_FALSE;  // -coupling_fraction_average weighted
   std::vector<PetscReal>   selfTable_;  // H C of Kernel.hpp at Re_H = 10^(-3 + k/20), k = 0..140
   PetscReal                SelfCoefficient(PetscReal H, PetscReal ReH) const;  // C (1/m) by log interpolation
 

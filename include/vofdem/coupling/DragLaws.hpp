@@ -4,7 +4,7 @@
 // fluid velocity at the particle (K1), v the particle's velocity, d its diameter, eps the averaged
 // fluid fraction, slip = |u - v|. The pressure-gradient force -V grad p is a separate term (P1,
 // CFD-DEM "model A"); where a correlation gives the total fluid-particle force of a homogeneous bed
-// (Di Felice, Koch-Hill, Beetstra), the drag part is eps times the total (Zhou et al. 2010, J. Fluid
+// (Di Felice, Koch-Hill), the drag part is eps times the total (Zhou et al. 2010, J. Fluid
 // Mech. 661: in a homogeneous bed -V grad p = (1 - eps)/eps f_drag, so total = f_drag/eps).
 #pragma once
 
@@ -36,11 +36,11 @@ double SchillerNaumann(double d, double slip, double rho, double mu);
 // Di Felice (1994): total force (pi/8) Cd rho d^2 eps^2 |u-v| (u-v) eps^-chi, Cd = (0.63 + 4.8/sqrt(Re))^2,
 // chi = 3.7 - 0.65 exp(-(1.5 - log10 Re)^2/2), Re = eps rho d |u-v|/mu; drag = eps x total.
 double DiFelice(double d, double eps, double slip, double rho, double mu);
-// Koch & Hill (2001; Hill, Koch & Ladd 2001): total force 3 pi mu d eps (u-v) F, F = F0(phi) + F3(phi) Re_a/2,
-// phi = 1 - eps, Re_a = rho eps |u-v| d/(2 mu); drag = eps x total.
+// Koch & Hill (2001; Hill, Koch & Ladd 2001): total force 3 pi mu d eps (u-v) F, F = F0(phi) + F3(phi) Re/2,
+// phi = 1 - eps, Re = rho eps |u-v| d/mu (F3 Re_a with Koch & Hill's Re_a on the radius); drag = eps x total.
 double KochHill(double d, double eps, double slip, double rho, double mu);
-// Beetstra, van der Hoef & Kuipers (2007), monodisperse: total force 3 pi mu d eps (u-v) F(phi, Re),
-// Re = rho eps |u-v| d/mu; drag = eps x total.
+// Beetstra, van der Hoef & Kuipers (2007), monodisperse: drag 3 pi mu d eps (u-v) F(phi, Re), Re = rho eps |u-v| d/mu;
+// F is normalised as the drag already (F -> 10 phi/eps^2 = eps x Carman-Kozeny's total force at Re -> 0).
 double Beetstra(double d, double eps, double slip, double rho, double mu);
 
 // The law by name (eSwitch: Gidaspow's switch).

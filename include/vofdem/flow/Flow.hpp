@@ -152,6 +152,9 @@ private:
   Vec       faceForce_[3] = {nullptr, nullptr, nullptr};  // FaceForce(); null unless asked for
   Vec       faceAcceleration_[3] = {nullptr, nullptr, nullptr};
   Vec       relaxRate_[3] = {nullptr, nullptr, nullptr}, relaxTarget_[3] = {nullptr, nullptr, nullptr};
+  // With a relaxation: the projection's coefficient eps/(rho (1 + dt c)) (FlowDragProjection.cpp)
+  Vec            dragBeta_ = nullptr, dragBetaLocal_ = nullptr, rateLocal_[3] = {nullptr, nullptr, nullptr};
+  PetscErrorCode DragProjectionCoefficient(PetscReal dt);
   void     *forcingCtx_ = nullptr;
   // last step, for the monitor
   FlowSummary last_;
