@@ -41,7 +41,7 @@ vofdem_bad_input(typo_in_scene      "unknown or unused option -dem_restitusion" 
 vofdem_bad_input(unknown_physics    "option -physics: unknown name 'magic'"        -physics dem,magic)
 vofdem_bad_input(physics_not_built  "option -physics: 'energy' is not available"   -physics flow,energy)
 vofdem_bad_input(vof_without_flow   "option -physics: 'vof' needs 'flow'"           -physics vof)
-vofdem_bad_input(vof_with_dem       "option -physics: particles with a free surface" -physics dem,flow,vof)
+vofdem_bad_input(vof_dem_no_eps_rate "option -coupling_eps_rate: particles with a free surface" -physics dem,flow,vof -grid_upper 0.01,0.01,0.01 -coupling_eps_rate 0)
 vofdem_bad_input(physics_missing    "option -physics is missing"                   -max_steps 1)
 vofdem_bad_input(not_a_number       "option -dem_radius: 'abc' is not a number"    ${_dem} -dem_radius abc)
 vofdem_bad_input(not_an_integer     "option -max_steps: '2.5' is not an integer"   ${_dem} -max_steps 2.5)

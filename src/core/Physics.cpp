@@ -44,9 +44,6 @@ PetscErrorCode MakePhysicsSet(MPI_Comm comm, const std::vector<std::string> &nam
   }
   // Particles and fluid in one scene are coupled (src/coupling, -coupling_*).
   if (set->vof && !set->flow) VofdemInputError(comm, "option -physics: 'vof' needs 'flow' (the interface moves with the fluid)");
-  // The coupled step does not yet carry the interface (its forces on particles, eps in its transport).
-  if (set->vof && set->dem)
-    VofdemInputError(comm, "option -physics: particles with a free surface (dem,flow,vof) are not available yet; use dem,flow or flow,vof");
   PetscFunctionReturn(0);
 }
 

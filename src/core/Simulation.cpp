@@ -66,6 +66,9 @@ PetscErrorCode Simulation::SetFromOptions() {
     PetscCall(coupling_->SetFromOptions(comm_));
     if (!(physics_.dem && physics_.flow)) coupling_.reset();
     else PetscCall(coupling_->CheckParticleSize(grid_, 2 * dem_->Radius()));
+    // F1b: with moving particles, the interface's transport conserves both phases only with d(eps)/dt.
+    if (coupling_ && physics_.vof && !coupling_->EpsRate())
+      VofdemInputError(comm_, "option -coupling_eps_rate: particles with a free surface (dem,flow,vof) need it on: without d(eps)/dt the volumes of both phases drift as particles move");
   }
   PetscFunctionReturn(0);
 }
@@ -108,6 +111,15 @@ PetscErrorCode Simulation::SetUp() {
     if (couplingStage_ < 0) PetscCall(PetscLogStageRegister("Coupling", &couplingStage_));
     PetscCall(PetscLogStagePush(couplingStage_));
     PetscCall(coupling_->SetUp(*flow_, *dem_));
+    if (physics_.vof) {  // particles with a free surface: eps in the interface's transport (F1b), its forces on them (P1)
+      vof_->SetFluidFraction(flow_->FluidFraction(), coupling_->FluidFractionChange());
+      coupling_->SetInterfaceForces(vof_->SurfaceTensionCoefficient() > 0);
+      PetscCall(coupling_->Average());  // again, with the interface's force field
+      VofSummary vs;
+      PetscCall(vof_->Summarize(&vs));  // the particles displace their volume of either phase from the start
+      vofVolume0_ = vs.volume;
+      vofOtherVolume0_ = vs.otherVolume;
+    }
     PetscCall(PetscLogStagePop());
   }
   PetscCall(ChooseTimeStep());
@@ -129,7 +141,8 @@ PetscErrorCode Simulation::SetUp() {
         std::fprintf(csv_, "step,time_s,dt_s,particles,kinetic_energy_J,rotational_energy_J,pair_contacts,coordination,wall_contacts,max_overlap_per_diameter,floor_force_z_N,inserted,deleted,wall_time_s%s%s%s%s%s\n",
                      physics_.dem ? dem_->WallLoadColumns().c_str() : "", physics_.dem ? dem_->MonitorHeader().c_str() : "",
                      physics_.flow ? ",flow_kinetic_energy_J,flow_max_velocity_m_s,flow_max_divergence_1_s,flow_cfl,pressure_iterations,pressure_residual,pressure_pc_reused,viscous_iterations" : "",
-                     physics_.vof ? ",vof_volume_m3,vof_volume_relative_change,vof_bound_violation,vof_interface_cells" : "",
+                     physics_.vof ? (coupling_ ? ",vof_volume_m3,vof_volume_relative_change,vof_bound_violation,vof_interface_cells,vof_phase0_volume_m3,vof_phase0_volume_relative_change"
+                                               : ",vof_volume_m3,vof_volume_relative_change,vof_bound_violation,vof_interface_cells") : "",
                      coupling_ ? ",coupling_min_eps,coupling_eps_clipped_cells,coupling_drag_x_N,coupling_drag_y_N,coupling_drag_z_N,coupling_exchange_error,coupling_volume_error" : "");
     }
     PetscCallMPI(MPI_Allreduce(&ok, &allOk, 1, MPI_INT, MPI_MIN, comm_));
@@ -198,15 +211,29 @@ PetscErrorCode Simulation::Step() {
   PetscFunctionBeginUser;
   const PetscReal dt = finalTime_ < PETSC_MAX_REAL ? std::min(dt_, finalTime_ - time_) : dt_;
   // The coupled step (ARCHITECTURE.md, Coupling.hpp): projection, flow step, averaging, DEM sub-steps.
+  // With a free surface the interface's force joins the flow step and the interface moves with the
+  // projected velocity before the particles read the fluid (its new density and viscosity, P1).
   if (coupling_) {
     PetscCall(PetscLogStagePush(couplingStage_));
     PetscCall(coupling_->Project());
     PetscCall(PetscLogStagePop());
+    if (physics_.vof) {
+      PetscCall(PetscLogStagePush(vofStage_));
+      PetscCall(vof_->SurfaceTension(*flow_));
+      PetscCall(PetscLogStagePop());
+    }
     PetscCall(PetscLogStagePush(flowStage_));
     PetscCall(flow_->Step(time_, dt));
     PetscCall(PetscLogStagePop());
+    if (physics_.vof) {
+      PetscCall(PetscLogStagePush(vofStage_));
+      Vec u[3] = {flow_->Velocity(0), flow_->Velocity(1), flow_->Velocity(2)};
+      PetscCall(vof_->Advect(u, dt));
+      PetscCall(vof_->UpdateProperties(*flow_));
+      PetscCall(PetscLogStagePop());
+    }
     PetscCall(PetscLogStagePush(couplingStage_));
-    PetscCall(coupling_->Average());
+    PetscCall(coupling_->Average(dt));
     PetscCall(PetscLogStagePop());
     PetscCall(PetscLogStagePush(demStage_));
     const PetscInt n = coupling_->Substeps(dt);
@@ -220,7 +247,7 @@ PetscErrorCode Simulation::Step() {
     PetscCall(dem_->Step(dt));
     PetscCall(PetscLogStagePop());
   }
-  if (physics_.vof) {  // surface tension of the current interface, for the flow's predictor (F2)
+  if (physics_.vof && !coupling_) {  // surface tension of the current interface, for the flow's predictor (F2)
     PetscCall(PetscLogStagePush(vofStage_));
     PetscCall(vof_->SurfaceTension(*flow_));
     PetscCall(PetscLogStagePop());
@@ -230,7 +257,7 @@ PetscErrorCode Simulation::Step() {
     PetscCall(flow_->Step(time_, dt));
     PetscCall(PetscLogStagePop());
   }
-  if (physics_.vof) {
+  if (physics_.vof && !coupling_) {
     // The interface moves with the projected (divergence-free) velocity of the step just taken, then
     // sets the density and viscosity of the next one (ARCHITECTURE.md, the coupled step, 4-5).
     PetscCall(PetscLogStagePush(vofStage_));
@@ -302,6 +329,13 @@ PetscErrorCode Simulation::Monitor() {
     flowScreen += vb;
     std::snprintf(vb, sizeof vb, ",%.16e,%.6e,%.6e,%d", (double)vs.volume, (double)volErr, (double)vs.boundViolation, (int)vs.interfaceCells);
     extraCsv += vb;
+    if (coupling_) {  // F1b with particles: the other phase's volume too (eps (1 - alpha) V)
+      const PetscReal otherErr = vofOtherVolume0_ > 0 ? (vs.otherVolume - vofOtherVolume0_) / vofOtherVolume0_ : 0;
+      std::snprintf(vb, sizeof vb, "  phase-0 volume %.10e m^3  rel. change %.2e", (double)vs.otherVolume, (double)otherErr);
+      flowScreen += vb;
+      std::snprintf(vb, sizeof vb, ",%.16e,%.6e", (double)vs.otherVolume, (double)otherErr);
+      extraCsv += vb;
+    }
   }
   if (coupling_) {  // C3 in every run: the fluid's source is minus the particles' drag, projected volume = particle volume
     CouplingSummary c;
@@ -397,6 +431,7 @@ PetscErrorCode Simulation::SaveState(PetscViewer viewer) {
     PetscCall(PetscViewerHDF5PushGroup(viewer, "vof"));
     PetscCall(vof_->Save(viewer));
     PetscCall(PetscViewerHDF5WriteAttribute(viewer, "/vof", "vof_initial_volume", PETSC_REAL, &vofVolume0_));
+    if (coupling_) PetscCall(PetscViewerHDF5WriteAttribute(viewer, "/vof", "vof_initial_phase0_volume", PETSC_REAL, &vofOtherVolume0_));
     PetscCall(PetscViewerHDF5PopGroup(viewer));
   }
   if (coupling_) PetscCall(coupling_->Save(viewer));
@@ -441,6 +476,7 @@ PetscErrorCode Simulation::LoadState(PetscViewer viewer) {
     PetscCall(PetscViewerHDF5PushGroup(viewer, "vof"));
     PetscCall(vof_->Load(viewer));
     PetscCall(PetscViewerHDF5ReadAttribute(viewer, "/vof", "vof_initial_volume", PETSC_REAL, nullptr, &vofVolume0_));
+    if (coupling_) PetscCall(PetscViewerHDF5ReadAttribute(viewer, "/vof", "vof_initial_phase0_volume", PETSC_REAL, nullptr, &vofOtherVolume0_));
     PetscCall(PetscViewerHDF5PopGroup(viewer));
   }
   if (coupling_) PetscCall(coupling_->Load(viewer));

@@ -49,6 +49,9 @@ PetscErrorCode Coupling::SetFromOptions(MPI_Comm comm) {
                            {"plain", "weighted"}, &fa));
     if (fa.size() != 1) VofdemInputError(comm, "option -coupling_fraction_average: give plain or weighted");
     weightedFraction_ = fa[0] == "weighted" ? PETSC_TRUE : PETSC_FALSE;
+    PetscCall(opt.Real("-added_mass", "Added-mass coefficient C_vm of f_vm = C_vm rho_f V (Du/Dt - dv/dt) (P1; 0.5 for a sphere), rho_f the kernel-averaged local density", "-",
+                       &addedMass_, RealRange::NonNegative()));
+    PetscCall(opt.Bool("-eps_rate", "The fluid the particles displace: the projection makes div(eps u) = -d(eps)/dt (F1) and the VOF transport carries eps (F1b)", &epsRate_));
     PetscCall(opt.Real("-min_fluid_fraction", "Floor of the fluid fraction eps (cells below it are counted in the monitor)", "-", &minEps_, RealRange::LeftOpen(0, 1)));
   }
   PetscOptionsEnd();
@@ -106,6 +109,11 @@ PetscErrorCode Coupling::SetUp(Flow &flow, Dem &dem) {
   PetscCall(DMCreateLocalVector(sg.Cells(), &cellLocal_));
   PetscCall(DMCreateLocalVector(sg.Cells(), &rhoLocal_));
   PetscCall(DMCreateGlobalVector(sg.Cells(), &volume_));
+  if (epsRate_) {
+    PetscCall(VecDuplicate(volume_, &epsChange_));
+    PetscCall(VecSet(epsChange_, 0));
+    flow.SetFluidFractionChange(epsChange_);
+  }
   flow.SetFaceAcceleration(accel_);
   if (implicitFluid_) flow.SetFaceRelaxation(rate_, target_);
   dem.SetFluidCoupled(true);
@@ -113,6 +121,7 @@ PetscErrorCode Coupling::SetUp(Flow &flow, Dem &dem) {
   PetscCall(PetscLogEventRegister("CouplingAverage", DM_CLASSID, &evAverage_));
   // The particles displace the fluid from the start; the flow's first step sees them.
   PetscCall(Project());
+  if (epsChange_) PetscCall(VecSet(epsChange_, 0));  // the particles were there from the start: nothing displaced
   PetscCall(Average());
   PetscFunctionReturn(0);
 }
@@ -126,11 +135,11 @@ PetscErrorCode Coupling::View(PetscViewer viewer, PetscReal dt) const {
   const PetscReal *h = flow_->Staggered().Base().Spacing();
   const PetscReal  Vc = h[0] * h[1] * h[2], hmax = std::max(h[0], std::max(h[1], h[2]));
   const PetscReal  rho = flow_->ReferenceDensity(), mu = flow_->ReferenceViscosity();
-  PetscCall(PetscViewerASCIIPrintf(viewer, "coupling: kernel %s, H = max(%g d, %g cells)%s, drag %s%s (fluid side %s), pressure-gradient force %s, self-disturbance correction (K1b) %s, ghost width %d cells\n",
+  PetscCall(PetscViewerASCIIPrintf(viewer, "coupling: kernel %s, H = max(%g d, %g cells)%s, drag %s%s (fluid side %s), pressure-gradient force %s, self-disturbance correction (K1b) %s, added mass C_vm %g, d(eps)/dt in continuity %s, ghost width %d cells\n",
                                    kernelName_.c_str(), (double)kappa_, (double)minWidthCells_,
                                    kernel_.shape == kernel::Shape::Truncated ? (", cut at " + std::to_string((double)kernel_.truncation) + " H").c_str() : "",
                                    drag::Name(law_), law_ == drag::Law::Gidaspow ? (" (switch at eps " + std::to_string((double)dragSwitch_) + ")").c_str() : "", implicitFluid_ ? "implicit" : "explicit",
-                                   pressureForce_ ? "on" : "off", selfCorrection_ ? "on" : "off", (int)avg_.GhostWidth()));
+                                   pressureForce_ ? "on" : "off", selfCorrection_ ? "on" : "off", (double)addedMass_, epsRate_ ? "on" : "off", (int)avg_.GhostWidth()));
   const PetscReal rhoP = dem_->Material().density;
   std::vector<PetscReal> radii = {dem_->MinRadius()};
   if (dem_->MaxRadius() > dem_->MinRadius()) radii.push_back(dem_->MaxRadius());
@@ -169,9 +178,10 @@ PetscErrorCode Coupling::Destroy() {
   PetscFunctionBeginUser;
   if (flow_) flow_->SetFaceAcceleration(nullptr);
   if (flow_) flow_->SetFaceRelaxation(nullptr, nullptr);
+  if (flow_) flow_->SetFluidFractionChange(nullptr);
   for (int d = 0; d < 3; ++d)
     for (Vec *v : {&faceEps_[d], &gradP_[d], &accel_[d], &rate_[d], &target_[d]}) PetscCall(VecDestroy(v));
-  for (Vec *v : {&cellLocal_, &rhoLocal_, &volume_}) PetscCall(VecDestroy(v));
+  for (Vec *v : {&cellLocal_, &rhoLocal_, &volume_, &epsChange_}) PetscCall(VecDestroy(v));
   PetscCall(avg_.Destroy());
   PetscFunctionReturn(0);
 }

@@ -49,19 +49,22 @@ PetscErrorCode Coupling::Project() {
   // eps = 1 - particle volume / cell volume, floored (PHYSICS.md F: eps is the cell's fluid fraction).
   {
     Vec                e = flow_->FluidFraction();
-    PetscScalar       *ea;
+    PetscScalar       *ea, *ca = nullptr;
     const PetscScalar *va;
     PetscInt           m, clipped = 0;
     PetscReal          lo = 1;
     PetscCall(VecGetLocalSize(e, &m));
     PetscCall(VecGetArray(e, &ea));
     PetscCall(VecGetArrayRead(volume_, &va));
+    if (epsChange_) PetscCall(VecGetArray(epsChange_, &ca));
     for (PetscInt k = 0; k < m; ++k) {
       PetscReal v = 1 - PetscRealPart(va[k]) / Vc;
       if (v < minEps_) v = minEps_, ++clipped;
+      if (ca) ca[k] = v - PetscRealPart(ea[k]);  // what the particles displaced since the last projection (F1)
       ea[k] = v;
       lo    = std::min(lo, v);
     }
+    if (epsChange_) PetscCall(VecRestoreArray(epsChange_, &ca));
     PetscCall(VecRestoreArrayRead(volume_, &va));
     PetscCall(VecRestoreArray(e, &ea));
     PetscCallMPI(MPI_Allreduce(&clipped, &last_.clipped, 1, MPIU_INT, MPI_SUM, comm_));
@@ -181,7 +184,7 @@ PetscErrorCode Coupling::FaceFields() {
 }
 
 // Step 3: the fluid at each particle and the forces the DEM sub-steps apply.
-PetscErrorCode Coupling::Average() {
+PetscErrorCode Coupling::Average(PetscReal dt) {
   ParticleArrays a;
 
   PetscFunctionBeginUser;
@@ -191,23 +194,37 @@ PetscErrorCode Coupling::Average() {
   PetscCall(sw.GetArrays(&a));
   const PetscInt n = a.n;
   PetscCheck((PetscInt)H_.size() == n, PETSC_COMM_SELF, PETSC_ERR_ORDER, "coupling: Average() needs the particles of the last Project()");
-  std::vector<PetscReal> u(3 * n), gp(3 * n), e(n);
+  std::vector<PetscReal> u(3 * n), gp(3 * n), e(n), rf(n), mf(n), st(interfaceForces_ ? 3 * n : 0);
   for (int d = 0; d < 3; ++d) {
-    // The velocity (eps-weighted, wall faces included) and the pressure gradient (not computed on
-    // wall faces) of one component share the kernel weights: one pass.
-    const Vec  fields[2]  = {flow_->Velocity(d), gradP_[d]};
-    const Vec  weights[2] = {faceEps_[d], nullptr};
-    const bool walls[2]   = {true, false};
-    PetscReal *outs[2]    = {u.data() + d, gp.data() + d};
-    PetscCall(avg_.Average(d, pressureForce_ ? 2 : 1, fields, weights, walls, n, a.x, H_.data(), outs, 3));
+    // One pass per location (the kernel weights are the costly part): the velocity (eps-weighted, wall
+    // faces included), the pressure gradient and the interface's face force (surface tension and
+    // Marangoni per unit volume, P1) (unweighted, K2; not computed on wall faces).
+    Vec        fields[3], weights[3] = {faceEps_[d], nullptr, nullptr};
+    bool       walls[3] = {true, false, false};
+    PetscReal *outs[3]  = {u.data() + d, nullptr, nullptr};
+    PetscInt   nf       = 1;
+    fields[0]           = flow_->Velocity(d);
+    if (pressureForce_) fields[nf] = gradP_[d], outs[nf++] = gp.data() + d;
+    if (interfaceForces_) {
+      PetscCall(flow_->FaceForce(d, &fields[nf]));
+      outs[nf++] = st.data() + d;
+    }
+    PetscCall(avg_.Average(d, nf, fields, weights, walls, n, a.x, H_.data(), outs, 3));
   }
   // eps at the particle: by default the plain kernel average, so that eps times the (eps-weighted) velocity
   // read is the kernel average of the superficial velocity eps u, as the drag laws assume; the eps-weighted
   // average of K1 reads eps high by var(eps)/eps and at a bed's edges by more (ex34, -coupling_fraction_average).
-  PetscCall(avg_.Average(3, flow_->FluidFraction(), weightedFraction_ ? flow_->FluidFraction() : nullptr, n, a.x, H_.data(), e.data(), 1));
-  const PetscReal rho = flow_->ReferenceDensity(), mu = flow_->ReferenceViscosity();
+  // The local mixture's density and viscosity are eps-weighted (K1; PHYSICS.md F: with a free surface rho
+  // and mu follow alpha). One pass for the three.
+  {
+    const Vec  fields[3]  = {flow_->FluidFraction(), flow_->Density(), flow_->Viscosity()};
+    const Vec  weights[3] = {weightedFraction_ ? flow_->FluidFraction() : nullptr, flow_->FluidFraction(), flow_->FluidFraction()};
+    const bool walls[3]   = {true, true, true};
+    PetscReal *outs[3]    = {e.data(), rf.data(), mf.data()};
+    PetscCall(avg_.Average(3, 3, fields, weights, walls, n, a.x, H_.data(), outs, 1));
+  }
   for (PetscInt p = 0; p < n; ++p) {
-    const PetscReal d = 2 * a.radius[p], V = PETSC_PI * d * d * d / 6;
+    const PetscReal d = 2 * a.radius[p], V = PETSC_PI * d * d * d / 6, rho = rf[p], mu = mf[p];
     PetscReal       uf[3], slip2 = 0;
     for (int c = 0; c < 3; ++c) {
       uf[c] = u[3 * p + c];
@@ -228,10 +245,17 @@ PetscErrorCode Coupling::Average() {
       }
     }
     a.fluidDrag[p] = drag::Coefficient(law_, d, e[p], std::sqrt(slip2), rho, mu, dragSwitch_);
+    // Added mass (P1): m_a = C_vm rho V, taken implicitly by the kick (Dem.cpp); m_a Du/Dt explicitly,
+    // Du/Dt from the change of the (undisturbed) fluid velocity read over the step. A particle that has
+    // not been read yet (m_a still 0: new, or the set-up) gets no acceleration.
+    const PetscReal ma = addedMass_ * rho * V, dUdt = dt > 0 && a.fluidAddedMass[p] > 0 ? 1 / dt : 0;
     for (int c = 0; c < 3; ++c) {
+      const PetscReal fvm = ma * (uf[c] - a.fluidVelocity[3 * p + c]) * dUdt;
       a.fluidVelocity[3 * p + c] = uf[c];
-      a.fluidForce[3 * p + c]    = pressureForce_ ? -V * gp[3 * p + c] : 0;
+      a.fluidForce[3 * p + c]    = (pressureForce_ ? -V * gp[3 * p + c] : 0) + (interfaceForces_ ? V * st[3 * p + c] : 0) + fvm;
+      a.fluidImpulse[3 * p + c] += fvm * dt;  // the explicit part of f_vm's impulse over the coming sub-steps (F5)
     }
+    a.fluidAddedMass[p] = ma;
   }
   PetscCall(sw.RestoreArrays(&a));
   PetscCall(PetscLogEventEnd(evAverage_, 0, 0, 0, 0));

@@ -222,12 +222,18 @@ PetscErrorCode Dem::SetUp(Grid &grid, const PetscReal gravity[3], std::uint64_t 
 // a fluid (Coupling.hpp), the other fluid forces join F and the drag K (u - v) is taken implicitly,
 // v' = (v + (h K/m) u)/(1 + h K/m) (stable for any response time m/K); its impulse is summed for the
 // fluid's reaction (PHYSICS.md F5), so the fluid gets exactly what the particles got.
+// The added mass m_a = C_vm rho_f V (P1, f_vm = m_a (Du/Dt - dv/dt)) is taken implicitly: its -m_a dv/dt
+// part moves to the left, (m + m_a) dv/dt = F + ..., and the coupling puts m_a Du/Dt into the fluid
+// force; the fluid gets -f_vm as well (F5). Without it (m_a = 0) the kick is the one above.
 template <bool fluid>
 static void HalfKick(const ParticleArrays &a, PetscReal dt) {
   for (PetscInt p = 0; p < a.n; ++p) {
     if (a.clump[p] >= 0) continue;
-    const PetscReal h = 0.5 * dt / a.mass[p], hI = h / (0.4 * a.radius[p] * a.radius[p]);
+    const PetscReal ma = fluid ? a.fluidAddedMass[p] : 0, m = a.mass[p] + ma;
+    const PetscReal h = 0.5 * dt / m, hI = 0.5 * dt / a.mass[p] / (0.4 * a.radius[p] * a.radius[p]);
+    PetscReal       v0[3];
     for (int d = 0; d < 3; ++d) {
+      v0[d] = a.v[3 * p + d];
       a.v[3 * p + d] += h * a.f[3 * p + d];
       a.omega[3 * p + d] += hI * a.torque[3 * p + d];
     }
@@ -237,7 +243,10 @@ static void HalfKick(const ParticleArrays &a, PetscReal dt) {
         const PetscReal v = a.v[3 * p + d] + h * a.fluidForce[3 * p + d];
         const PetscReal u = a.fluidVelocity[3 * p + d];
         const PetscReal w = (v + c * u) / (1 + c);
-        a.fluidImpulse[3 * p + d] += a.mass[p] * (w - v);
+        a.fluidImpulse[3 * p + d] += m * (w - v);
+        // The implicit part of the f_vm impulse, -m_a (w - v0); its explicit part m_a Du/Dt dt the
+        // coupling adds once per fluid step (Coupling::Average).
+        if (ma > 0) a.fluidImpulse[3 * p + d] -= ma * (w - v0[d]);
         a.v[3 * p + d] = w;
       }
     }

@@ -29,6 +29,7 @@ PetscErrorCode ParticleSwarm::Create(const Grid &grid) {
   PetscCall(DMSwarmRegisterPetscDatatypeField(swarm_, field::fluidVelocity, 3, PETSC_REAL));
   PetscCall(DMSwarmRegisterPetscDatatypeField(swarm_, field::fluidForce, 3, PETSC_REAL));
   PetscCall(DMSwarmRegisterPetscDatatypeField(swarm_, field::fluidImpulse, 3, PETSC_REAL));
+  PetscCall(DMSwarmRegisterPetscDatatypeField(swarm_, field::fluidAddedMass, 1, PETSC_REAL));
 
   PetscCall(DMSwarmFinalizeFieldRegister(swarm_));
   PetscCall(DMSwarmSetLocalSizes(swarm_, 0, 64));
@@ -60,6 +61,7 @@ PetscErrorCode ParticleSwarm::GetArrays(ParticleArrays *a) const {
   PetscCall(DMSwarmGetField(swarm_, field::fluidVelocity, nullptr, nullptr, (void **)&a->fluidVelocity));
   PetscCall(DMSwarmGetField(swarm_, field::fluidForce, nullptr, nullptr, (void **)&a->fluidForce));
   PetscCall(DMSwarmGetField(swarm_, field::fluidImpulse, nullptr, nullptr, (void **)&a->fluidImpulse));
+  PetscCall(DMSwarmGetField(swarm_, field::fluidAddedMass, nullptr, nullptr, (void **)&a->fluidAddedMass));
 
   PetscFunctionReturn(0);
 }
@@ -68,6 +70,7 @@ PetscErrorCode ParticleSwarm::RestoreArrays(ParticleArrays *a) const {
   PetscFunctionBeginUser;
 
   PetscCall(DMSwarmRestoreField(swarm_, field::rigid, nullptr, nullptr, (void **)&a->rigid));
+  PetscCall(DMSwarmRestoreField(swarm_, field::fluidAddedMass, nullptr, nullptr, (void **)&a->fluidAddedMass));
   PetscCall(DMSwarmRestoreField(swarm_, field::fluidImpulse, nullptr, nullptr, (void **)&a->fluidImpulse));
   PetscCall(DMSwarmRestoreField(swarm_, field::fluidForce, nullptr, nullptr, (void **)&a->fluidForce));
   PetscCall(DMSwarmRestoreField(swarm_, field::fluidVelocity, nullptr, nullptr, (void **)&a->fluidVelocity));
@@ -104,7 +107,7 @@ PetscErrorCode ParticleSwarm::AddLocal(PetscInt n, PetscInt *first) {
     for (int k = 0; k < kRigidWidth; ++k) rigid[kRigidWidth * p + k] = k == 0 ? 1 : 0;
   PetscCall(DMSwarmRestoreField(swarm_, field::rigid, nullptr, nullptr, (void **)&rigid));
   // New particles feel no fluid until the coupling's next update.
-  for (const char *name : {field::fluidDrag, field::fluidVelocity, field::fluidForce, field::fluidImpulse}) {
+  for (const char *name : {field::fluidDrag, field::fluidVelocity, field::fluidForce, field::fluidImpulse, field::fluidAddedMass}) {
     PetscReal *v;
     PetscInt   bs;
     PetscCall(DMSwarmGetField(swarm_, name, &bs, nullptr, (void **)&v));

@@ -3,6 +3,8 @@
 #include "vofdem/core/Options.hpp"
 #include "vofdem/core/Runtime.hpp"
 
+#include <petscviewerhdf5.h>
+
 #include <algorithm>
 #include <cmath>
 #include <vector>
@@ -410,6 +412,10 @@ PetscErrorCode Flow::Save(PetscViewer viewer) const {
   for (int d = 0; d < 3; ++d) PetscCall(VecView(u_[d], viewer));
   for (int d = 0; d < 3; ++d) PetscCall(VecView(Hold_[d], viewer));
   for (Vec v : {p_, phi_, rho_, mu_, eps_}) PetscCall(VecView(v, viewer));
+  {  // properties changed since the pressure coefficient was last set (a free surface moved at the end of the step)
+    const PetscInt pending = propertiesDirty_ ? 1 : 0;
+    PetscCall(PetscViewerHDF5WriteAttribute(viewer, nullptr, "flow_properties_pending", PETSC_INT, &pending));
+  }
   PetscMPIInt rank;
   PetscCallMPI(MPI_Comm_rank(grid_->Comm(), &rank));
   PetscCall(VecCreateMPI(grid_->Comm(), rank == 0 ? 3 : 0, 3, &scalars));
@@ -490,10 +496,18 @@ PetscErrorCode Flow::Load(PetscViewer viewer) {
   // The fields above are the material the preconditioner reference is compared with: set them up
   // first (this builds a preconditioner from the current coefficient), then restore the saved
   // reference, which rebuilds the one the saved run was using.
+  // When the saving run's properties had changed after its last coefficient (VOF and particles move rho
+  // and eps between steps), its next step compares the coefficient of that step with the reference:
+  // so does this one (checkpoints without the flag: none pending).
+  PetscInt pending = 0, none = 0;
+  PetscCall(PetscViewerHDF5ReadAttribute(viewer, nullptr, "flow_properties_pending", PETSC_INT, &none, &pending));
   PetscCall(UpdateLocals(true));
   PetscCall(pressure_.Load(viewer));
-  PetscCall(pressure_.SetCoefficient(beta_, "flow: eps/rho"));
-  PetscCall(pressure_.RestoreReuseFlag(s[2] > 0 ? PETSC_TRUE : PETSC_FALSE));
+  if (pending) propertiesDirty_ = true;
+  else {
+    PetscCall(pressure_.SetCoefficient(beta_, "flow: eps/rho"));
+    PetscCall(pressure_.RestoreReuseFlag(s[2] > 0 ? PETSC_TRUE : PETSC_FALSE));
+  }
   PetscFunctionReturn(0);
 }
 

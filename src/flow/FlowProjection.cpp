@@ -1,6 +1,6 @@
 // The projection of Flow (Flow.hpp): -div((eps/rho) G phi) = -div(eps u*)/dt with PressureSolver,
-// then u = u* - dt (1/rho)_f G phi and p += phi. PHYSICS.md (F1): div(eps U) = 0 (eps constant in time
-// until the coupling makes it move; its rate then joins the rhs).
+// then u = u* - dt (1/rho)_f G phi and p += phi. PHYSICS.md (F1): div(eps U) = -d(eps)/dt, the rate
+// from the coupling's change of eps over the step (SetFluidFractionChange; 0 without particles).
 #include "vofdem/flow/Flow.hpp"
 
 #include <algorithm>
@@ -10,7 +10,7 @@ namespace vofdem {
 
 // rhsOut = scale * div(eps u) per cell (needs uLocal_ current); maxAbs = max |div(eps u)|.
 PetscErrorCode Flow::Divergence(Vec rhsOut, PetscReal scale, PetscReal *maxAbs) const {
-  LocalField u[3], eps, out;
+  LocalField u[3], eps, out, chg;
   PetscInt   s[3], n[3];
   PetscReal  mx = 0;
 
@@ -18,6 +18,10 @@ PetscErrorCode Flow::Divergence(Vec rhsOut, PetscReal scale, PetscReal *maxAbs) 
   for (int d = 0; d < 3; ++d) PetscCall(sg_.GetLocal(d, uLocal_[d], &u[d]));
   PetscCall(sg_.GetLocal(3, epsLocal_, &eps));
   if (rhsOut) PetscCall(sg_.GetGlobal(3, rhsOut, &out));
+  // The particles' displacement (F1): div(eps U) + d(eps)/dt is what must vanish.
+  const bool      moving = epsChange_ && epsChangeDt_ > 0;
+  const PetscReal idt    = moving ? 1 / epsChangeDt_ : 0;
+  if (moving) PetscCall(sg_.GetGlobal(3, epsChange_, &chg));
   sg_.Owned(3, s, n);
   const PetscReal *h = grid_->Spacing();
   const PetscReal  ih[3] = {1 / h[0], 1 / h[1], 1 / h[2]};
@@ -26,9 +30,10 @@ PetscErrorCode Flow::Divergence(Vec rhsOut, PetscReal scale, PetscReal *maxAbs) 
       // neighbours as offsets from the row's first point in each array (Flow.hpp: arrays differ in size)
       const PetscScalar *e = &eps.at(s[0], j, k), *uc[3];
       for (int d = 0; d < 3; ++d) uc[d] = &u[d].at(s[0], j, k);
-      PetscScalar *o = rhsOut ? &out.at(s[0], j, k) : nullptr;
+      PetscScalar       *o = rhsOut ? &out.at(s[0], j, k) : nullptr;
+      const PetscScalar *c = moving ? &chg.at(s[0], j, k) : nullptr;
       for (PetscInt i = 0; i < n[0]; ++i) {
-        PetscReal div = 0;
+        PetscReal div = c ? PetscRealPart(c[i]) * idt : 0;
         for (int d = 0; d < 3; ++d) {
           // eps at the faces: mean of the two cells (the mirror ghost makes it the cell's own at the box)
           const PetscInt  es = eps.stride[d], us = u[d].stride[d];
@@ -39,6 +44,7 @@ PetscErrorCode Flow::Divergence(Vec rhsOut, PetscReal scale, PetscReal *maxAbs) 
         if (o) o[i] = scale * div;
       }
     }
+  if (moving) PetscCall(sg_.RestoreGlobal(3, epsChange_, &chg));
   if (rhsOut) PetscCall(sg_.RestoreGlobal(3, rhsOut, &out));
   PetscCall(sg_.RestoreLocal(3, epsLocal_, &eps));
   for (int d = 0; d < 3; ++d) PetscCall(sg_.RestoreLocal(d, uLocal_[d], &u[d]));
@@ -54,6 +60,7 @@ PetscErrorCode Flow::Project(PetscReal dt, Vec *) {
   PetscFunctionBeginUser;
   PetscCall(PetscLogEventBegin(evProject_, 0, 0, 0, 0));
   for (int d = 0; d < 3; ++d) PetscCall(DMGlobalToLocal(sg_.Face(d), u_[d], INSERT_VALUES, uLocal_[d]));
+  epsChangeDt_ = dt;
   PetscCall(Divergence(divRhs_, -1 / dt, &dummy));
   if (relaxRate_[0]) PetscCall(DragProjectionCoefficient(dt));  // the drag acts on the correction too
   const Vec coefficient = relaxRate_[0] ? dragBetaLocal_ : betaLocal_;

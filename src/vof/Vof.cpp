@@ -78,6 +78,7 @@ PetscErrorCode Vof::Destroy() {
   PetscCall(VecDestroy(&kappaLocal_));
   PetscCall(VecDestroy(&alphaLocal_));
   PetscCall(VecDestroy(&alpha_));
+  for (Vec *v : {&epsLocal_, &changeLocal_, &cellScratch_}) PetscCall(VecDestroy(v));
   PetscCall(DMDestroy(&da_));
   PetscFunctionReturn(0);
 }
@@ -112,13 +113,19 @@ PetscErrorCode Vof::SetFraction(Shape shape, void *ctx, const PetscInt samples[3
 }
 
 PetscErrorCode Vof::FillGhosts() {
+  PetscFunctionBeginUser;
+  PetscCall(DMGlobalToLocal(da_, alpha_, INSERT_VALUES, alphaLocal_));
+  PetscCall(MirrorBoundary(alphaLocal_));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode Vof::MirrorBoundary(Vec local) const {
   PetscScalar ***a;
   PetscInt       gs[3], gm[3];
 
   PetscFunctionBeginUser;
-  PetscCall(DMGlobalToLocal(da_, alpha_, INSERT_VALUES, alphaLocal_));
   PetscCall(DMDAGetGhostCorners(da_, &gs[0], &gs[1], &gs[2], &gm[0], &gm[1], &gm[2]));
-  PetscCall(DMDAVecGetArray(da_, alphaLocal_, &a));
+  PetscCall(DMDAVecGetArray(da_, local, &a));
   const PetscInt *N = grid_->Cells();
   // Walls and open faces: zero normal gradient (a 90 degree contact angle); direction by direction
   // over the whole ghosted extent, so edges and corners come out consistent.
@@ -137,7 +144,7 @@ PetscErrorCode Vof::FillGhosts() {
           }
     }
   }
-  PetscCall(DMDAVecRestoreArray(da_, alphaLocal_, &a));
+  PetscCall(DMDAVecRestoreArray(da_, local, &a));
   PetscFunctionReturn(0);
 }
 
@@ -162,22 +169,27 @@ PetscErrorCode Vof::Summarize(VofSummary *out) const {
 
   PetscFunctionBeginUser;
   const PetscReal *h = grid_->Spacing();
+  const PetscScalar *e = nullptr;
   PetscCall(VecGetLocalSize(alpha_, &n));
   PetscCall(VecGetArrayRead(alpha_, &a));
-  PetscReal sum = 0, mn = PETSC_MAX_REAL, mx = PETSC_MIN_REAL, cells = 0;
+  if (eps_) PetscCall(VecGetArrayRead(eps_, &e));  // the same layout as alpha (F1b: volumes are eps alpha V)
+  PetscReal sum = 0, mn = PETSC_MAX_REAL, mx = PETSC_MIN_REAL, cells = 0, other = 0;
   for (PetscInt i = 0; i < n; ++i) {
-    const PetscReal v = PetscRealPart(a[i]);
-    sum += v;
+    const PetscReal v = PetscRealPart(a[i]), f = e ? PetscRealPart(e[i]) : 1;
+    sum += e ? f * v : v;
+    other += f * (1 - v);
     mn = std::min(mn, v);
     mx = std::max(mx, v);
     cells += v > tiny_ && v < 1 - tiny_;  // not round-off off full or empty
   }
+  if (eps_) PetscCall(VecRestoreArrayRead(eps_, &e));
   PetscCall(VecRestoreArrayRead(alpha_, &a));
-  PetscReal loc[2] = {sum, cells}, glob[2], lmax[3] = {-mn, mx, boundViolation_}, gmax[3];
-  PetscCallMPI(MPI_Allreduce(loc, glob, 2, MPIU_REAL, MPIU_SUM, grid_->Comm()));
+  PetscReal loc[3] = {sum, cells, other}, glob[3], lmax[3] = {-mn, mx, boundViolation_}, gmax[3];
+  PetscCallMPI(MPI_Allreduce(loc, glob, 3, MPIU_REAL, MPIU_SUM, grid_->Comm()));
   PetscCallMPI(MPI_Allreduce(lmax, gmax, 3, MPIU_REAL, MPI_MAX, grid_->Comm()));
   out->volume         = glob[0] * h[0] * h[1] * h[2];
   out->interfaceCells = glob[1];
+  out->otherVolume    = glob[2] * h[0] * h[1] * h[2];
   out->minAlpha       = -gmax[0];
   out->maxAlpha       = gmax[1];
   out->boundViolation = std::max({gmax[2], gmax[0], gmax[1] - 1, (PetscReal)0});

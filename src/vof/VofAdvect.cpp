@@ -109,8 +109,8 @@ bool Vof::Reconstruct(const LocalField &f, const PetscInt q[3], double n[3], dou
   return true;
 }
 
-PetscErrorCode Vof::Sweep(int d, Vec const uLocal[3], PetscReal dt, PetscReal *heightCells, PetscReal *interfaceCells) {
-  LocalField a, u, g;
+PetscErrorCode Vof::Sweep(int d, int stage, Vec const uLocal[3], PetscReal dt, PetscReal *heightCells, PetscReal *interfaceCells) {
+  LocalField a, u, g, E, D;
   PetscInt   s[3], n[3], gs[3], gm[3];
 
   PetscFunctionBeginUser;
@@ -123,6 +123,17 @@ PetscErrorCode Vof::Sweep(int d, Vec const uLocal[3], PetscReal dt, PetscReal *h
   a.stride[1] = gm[0];
   a.stride[2] = gm[0] * gm[1];
   PetscCall(sg_->GetLocal(d, uLocal[d], &u));
+  if (eps_) {  // eps and its change, with alpha's ghost layout (Vof.hpp SetFluidFraction)
+    E = a, D = a;
+    PetscCall(VecGetArray(epsLocal_, &E.data));
+    PetscCall(VecGetArray(changeLocal_, &D.data));
+  }
+  // eps at face q (between cells q - e_d and q): the mean the flow's projection uses (FlowProjection.cpp).
+  auto faceEps = [&](const PetscInt q[3]) {
+    PetscInt m[3] = {q[0], q[1], q[2]};
+    m[d] -= 1;
+    return 0.5 * (PetscRealPart(E.at(m)) + PetscRealPart(E.at(q)));
+  };
   // Face fluxes (fraction of a cell's volume crossing, positive along +d) of the owned cells' faces:
   // face index f lies between cells f-1 and f.
   PetscInt nf[3] = {n[0], n[1], n[2]};
@@ -143,12 +154,14 @@ PetscErrorCode Vof::Sweep(int d, Vec const uLocal[3], PetscReal dt, PetscReal *h
         bool         heights;
         if (!Reconstruct(a, donor, nrm, &c, &heights)) {
           flux_[idx] = cour * v;  // full, empty or without a gradient: uniform
-          continue;
+        } else {
+          double lo[3] = {0, 0, 0}, hi[3] = {1, 1, 1};
+          if (vel > 0) lo[d] = 1 - cour;
+          else hi[d] = -cour;
+          flux_[idx] = cour * plic::BoxFraction(nrm, c, lo, hi);
         }
-        double lo[3] = {0, 0, 0}, hi[3] = {1, 1, 1};
-        if (vel > 0) lo[d] = 1 - cour;
-        else hi[d] = -cour;
-        flux_[idx] = cour * plic::BoxFraction(nrm, c, lo, hi);
+        // F1b: the fluid crossing is eps_f u_f dt/h of a cell; alpha's PLIC share of the slab it sweeps.
+        if (eps_) flux_[idx] *= faceEps(q);
       }
   // Counts for the summary: the owned interface cells and how many got height-function normals.
   for (PetscInt k = s[2]; k < s[2] + n[2]; ++k)
@@ -172,12 +185,27 @@ PetscErrorCode Vof::Sweep(int d, Vec const uLocal[3], PetscReal dt, PetscReal *h
         PetscInt       qp[3] = {i, j, k};
         qp[d] += 1;
         const size_t   cell  = (size_t)((i - s[0]) + n[0] * ((j - s[1]) + n[1] * (k - s[2])));
-        const double   divU  = r * (PetscRealPart(u.at(qp)) - PetscRealPart(u.at(q)));
-        const double   v     = PetscRealPart(a.at(q)) - (flux_[f0 + sf[d]] - flux_[f0]) + (fullAtStart_[cell] ? divU : 0.0);
-        g.at(q)              = v;
+        double         v;
+        if (!eps_) {
+          const double divU = r * (PetscRealPart(u.at(qp)) - PetscRealPart(u.at(q)));
+          v                 = PetscRealPart(a.at(q)) - (flux_[f0 + sf[d]] - flux_[f0]) + (fullAtStart_[cell] ? divU : 0.0);
+        } else {
+          // F1b on m = eps alpha: the cell's eps goes from eps_n = eps - change to eps in thirds
+          // (e0 before this sweep, e1 after); the c-term adds the swept fluid volume and this sweep's
+          // third of the change, so a full cell ends each sweep exactly full (Vof.hpp).
+          const double eN = PetscRealPart(E.at(q)), dE = PetscRealPart(D.at(q));
+          const double e0 = eN - dE * (1 - (stage - 1) / 3.0), e1 = eN - dE * (1 - stage / 3.0);
+          const double divQ = r * (faceEps(qp) * PetscRealPart(u.at(qp)) - faceEps(q) * PetscRealPart(u.at(q))) + dE / 3;
+          v = (PetscRealPart(a.at(q)) * e0 - (flux_[f0 + sf[d]] - flux_[f0]) + (fullAtStart_[cell] ? divQ : 0.0)) / e1;
+        }
+        g.at(q) = v;
         worst                = std::max(worst, std::max(-v, v - 1));
       }
   boundViolation_ = worst;
+  if (eps_) {
+    PetscCall(VecRestoreArray(changeLocal_, &D.data));
+    PetscCall(VecRestoreArray(epsLocal_, &E.data));
+  }
   PetscCall(sg_->RestoreGlobal(3, alpha_, &g));
   PetscCall(sg_->RestoreLocal(d, uLocal[d], &u));
   PetscCall(VecRestoreArray(alphaLocal_, &a.data));
@@ -192,6 +220,7 @@ PetscErrorCode Vof::Advect(Vec const u[3], PetscReal dt) {
   if (!advect_) PetscFunctionReturn(0);  // a frozen interface (-vof_advect 0)
   for (int d = 0; d < 3; ++d) PetscCall(DMGlobalToLocal(sg_->Face(d), u[d], INSERT_VALUES, uLocal_[d]));
   PetscCall(FillGhosts());
+  if (eps_) PetscCall(FluidFractionGhosts());
   // c_i from the state at the start of the step, the same in every sweep (exact conservation).
   PetscCall(VecGetLocalSize(alpha_, &n));
   PetscCall(VecGetArrayRead(alpha_, &a));
@@ -201,7 +230,7 @@ PetscErrorCode Vof::Advect(Vec const u[3], PetscReal dt) {
   PetscReal counts[2]   = {0, 0}, total[2];
   for (int p = 0; p < 3; ++p) {
     const int d = order[steps_ % 2][p];
-    PetscCall(Sweep(d, uLocal_, dt, &counts[0], &counts[1]));
+    PetscCall(Sweep(d, p + 1, uLocal_, dt, &counts[0], &counts[1]));
     PetscCall(FillGhosts());
   }
   PetscCallMPI(MPI_Allreduce(counts, total, 2, MPIU_REAL, MPIU_SUM, grid_->Comm()));

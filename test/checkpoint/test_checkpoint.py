@@ -19,7 +19,7 @@
                         zero exit on every rank (test/badinput/expect-error); -restart latest skips a
                         corrupted newest file and says so; a write that fails mid-run is one error line
                         and leaves the previous checkpoint valid.
-SCENE is dem, flow, vof or coupled (coupled: bitwise only). Usage: test_checkpoint.py VOFDEM CASE ARGS..."""
+SCENE is dem, flow, vof, coupled or coupledvof (the coupled ones: bitwise only). Usage: test_checkpoint.py VOFDEM CASE ARGS..."""
 import glob
 import os
 import re
@@ -54,6 +54,13 @@ SCENES = {
     # impulses (swarm fields) and the coupling's last step length carry the exchange across a restart.
     "coupled": ("-physics dem,flow -grid_cells 8,8,12 -grid_upper 0.008,0.008,0.012 -dem_radius 5e-4 -dem_density 2500 -dem_fill_count 20 "
                 "-dem_fill_jitter 0.5 -flow_viscosity 0.01 -seed 7".split(), 10, (10, 10)),
+    # -physics dem,flow,vof (issue 9): 20 spheres falling from air into water across the free surface; eps
+    # alpha, the added mass and the fluid velocity the particles last read (swarm fields) and the initial
+    # volumes of both phases must all come back.
+    "coupledvof": ("-physics dem,flow,vof -grid_cells 8,8,12 -grid_upper 0.008,0.008,0.012 -gravity 0,0,-9.81 -flow_density 1.2 -flow_viscosity 1.8e-5 "
+                   "-flow_pressure_pc boomeramg -flow_pressure_ksp_rtol 1e-12 -vof_density 1000 -vof_viscosity 1e-3 -vof_boxes 0,0,0,0.008,0.008,0.007 "
+                   "-dem_radius 5e-4 -dem_density 2500 -dem_fill_count 20 -dem_fill_lower 0,0,0.0075 -dem_fill_upper 0.008,0.008,0.012 -dem_fill_jitter 0.5 "
+                   "-coupling_fluid_drag implicit -dt 1e-3 -seed 7".split(), 10, (10, 10)),
 }  # (options, N of the bitwise case, (restart step, steps after it) of the rank-count case)
 QUIET = "-monitor_every 1000000 -monitor_timing 0".split()
 
@@ -83,7 +90,7 @@ def case_bitwise(exe, scene, ranks):
     tmp = tempfile.mkdtemp(prefix="vofdem-ckpt-")
     a, b, c = (os.path.join(tmp, x) for x in "abc")
     index, every = {"dem": ("particles.xmf", "-dem_output_every"), "flow": ("flow.xmf", "-flow_output_every"), "vof": ("flow.xmf", "-flow_output_every"),
-                    "coupled": ("particles.xmf", "-dem_output_every")}[scene]
+                    "coupled": ("particles.xmf", "-dem_output_every"), "coupledvof": ("particles.xmf", "-dem_output_every")}[scene]
     out = [every, str(n // 4)]  # the ParaView series, whose index a restart must continue
     run(exe, ranks, scene, ["-max_steps", str(2 * n), "-checkpoint_dir", a, "-output_dir", a + "-out"] + out)
     run(exe, ranks, scene, ["-max_steps", str(n), "-checkpoint_dir", b, "-output_dir", b + "-out"] + out)

@@ -59,6 +59,7 @@ private:
   std::unique_ptr<Flow> flow_;
   std::unique_ptr<Vof>  vof_;
   PetscReal  vofVolume0_ = 0;  // phase-1 volume at the start (monitor: volume error)
+  PetscReal  vofOtherVolume0_ = 0;  // phase-0 volume at the start, with particles (eps (1 - alpha) V)
   std::unique_ptr<Coupling> coupling_;  // -physics dem,flow
   Checkpoint checkpoint_;
 

@@ -13,9 +13,11 @@
 //     drag's 1/(1 + dt c) (FlowDragProjection.cpp), so a dense bed builds its pressure drop in a few
 //     steps (without it, over about dt K/(V eps rho) steps: hundreds in ex34);
 //  2. the flow step;
-//  3. averaging (K1, K2) at every particle: fluid velocity (eps-weighted), eps (plain average, or
-//     eps-weighted with -coupling_fraction_average weighted), pressure gradient
-//     (unweighted); the drag coefficient K of the chosen law (DragLaws.hpp) from the slip, after the
+//  3. averaging (K1, K2) at every particle: fluid velocity, density and viscosity (eps-weighted:
+//     with a free surface the local mixture of the two phases), eps (plain average, or eps-weighted
+//     with -coupling_fraction_average weighted), pressure gradient and the interface's face force
+//     (unweighted); the added mass C_vm rho V (P1, taken implicitly by the DEM kick, the fluid's
+//     acceleration Du/Dt explicitly from the change of the averaged velocity); the drag coefficient K of the chosen law (DragLaws.hpp) from the slip, after the
 //     self-disturbance correction (K1b); the pressure-gradient force -V grad p (with the hydrostatic
 //     pressure in p it is the buoyancy, P1);
 //  4. DEM sub-steps of at most the DEM's stable step, with the drag K (u - v) taken implicitly in
@@ -57,7 +59,9 @@ public:
   // Project() (step 1), the flow step, Average() (step 3), Substeps() DEM steps of dt/Substeps(dt)
   // (step 4), Finish(dt).
   PetscErrorCode Project();
-  PetscErrorCode Average();
+  // dt: the fluid step just taken (the interval since the last Average, for the fluid acceleration
+  // Du/Dt of the added mass); 0 at set-up (no acceleration).
+  PetscErrorCode Average(PetscReal dt = 0);
   PetscInt       Substeps(PetscReal dt) const;
   void           Finish(PetscReal dt) { dtLast_ = dt; }
   PetscErrorCode View(PetscViewer viewer, PetscReal dt) const;  // settings and diagnostics (banner)
@@ -65,6 +69,14 @@ public:
   PetscErrorCode Save(PetscViewer viewer) const;
   PetscErrorCode Load(PetscViewer viewer);
   PetscErrorCode Destroy();
+
+  // With a free surface (-physics dem,flow,vof): the particles also feel the kernel average of the
+  // flow's face force (surface tension and Marangoni, P1), which the VOF module fills every step.
+  void SetInterfaceForces(bool on) { interfaceForces_ = on; }
+  // The change of eps made by the last Project() (global cell vector; zero at set-up), which the flow's
+  // projection (F1) and the VOF transport (F1b) read; nullptr with -coupling_eps_rate 0.
+  Vec FluidFractionChange() const { return epsChange_; }
+  bool EpsRate() const { return epsRate_ == PETSC_TRUE; }
 
   // The kernel width of a particle of diameter d: max(kappa d, -coupling_kernel_min_width cells).
   PetscReal KernelWidth(PetscReal d) const;
@@ -87,13 +99,16 @@ private:
   PetscReal                minEps_ = 0.1, selfMinEps_ = 0.9;
   PetscBool                implicitFluid_ = PETSC_FALSE;  // -coupling_fluid_drag implicit
   PetscBool                weightedFraction_ = PETSC_FALSE;  // -coupling_fraction_average weighted
+  PetscReal                addedMass_ = 0.5;             // C_vm (P1)
+  PetscBool                epsRate_ = PETSC_TRUE;         // d(eps)/dt in the continuity equation (F1)
+  bool                     interfaceForces_ = false;
   std::vector<PetscReal>   selfTable_;  // H C of Kernel.hpp at Re_H = 10^(-3 + k/20), k = 0..140
   PetscReal                SelfCoefficient(PetscReal H, PetscReal ReH) const;  // C (1/m) by log interpolation
 
   // fields
   Vec faceEps_[3] = {nullptr, nullptr, nullptr}, gradP_[3] = {nullptr, nullptr, nullptr}, accel_[3] = {nullptr, nullptr, nullptr};
   Vec rate_[3] = {nullptr, nullptr, nullptr}, target_[3] = {nullptr, nullptr, nullptr};  // implicit fluid drag (Flow::SetFaceRelaxation)
-  Vec cellLocal_ = nullptr, rhoLocal_ = nullptr, volume_ = nullptr;
+  Vec cellLocal_ = nullptr, rhoLocal_ = nullptr, volume_ = nullptr, epsChange_ = nullptr;
   std::vector<PetscReal> H_, scratch_, lastForce_;  // per local particle, between Project and Average
 
   // state (saved): the length of the last step, whose drag impulse the next step projects

@@ -28,6 +28,7 @@ inline constexpr const char *fluidDrag     = "fluid_drag";      // kg/s, drag co
 inline constexpr const char *fluidVelocity = "fluid_velocity";  // m/s, the fluid velocity u the drag relaxes to
 inline constexpr const char *fluidForce    = "fluid_force";     // N, the other fluid forces (pressure gradient), explicit
 inline constexpr const char *fluidImpulse  = "fluid_impulse";   // N s, drag impulse received since the coupling last read it
+inline constexpr const char *fluidAddedMass = "fluid_added_mass";  // kg, C_vm rho_f V: the added mass taken implicitly (P1 f_vm)
 }  // namespace field
 // q (4), centre in the body frame (3), clump mass, principal moments (3): see Clumps.hpp.
 inline constexpr int kRigidWidth = 11;
@@ -40,7 +41,7 @@ struct ParticleArrays {
   PetscReal  *omega = nullptr, *torque = nullptr, *rigid = nullptr;
   PetscInt64 *id = nullptr, *clump = nullptr;
   PetscInt   *type = nullptr;
-  PetscReal  *fluidDrag = nullptr, *fluidVelocity = nullptr, *fluidForce = nullptr, *fluidImpulse = nullptr;
+  PetscReal  *fluidDrag = nullptr, *fluidVelocity = nullptr, *fluidForce = nullptr, *fluidImpulse = nullptr, *fluidAddedMass = nullptr;
 };
 
 class ParticleSwarm {

@@ -82,6 +82,10 @@ public:
   void SetFaceRelaxation(Vec c[3], Vec w[3]) {
     for (int d = 0; d < 3; ++d) relaxRate_[d] = c ? c[d] : nullptr, relaxTarget_[d] = c ? w[d] : nullptr;
   }
+  // The change of eps over the coming step (a global cell vector, owned by the caller, set by the
+  // coupling; nullptr: none): the projection then makes div(eps U) = -(change)/dt (PHYSICS.md F1), the
+  // fluid the particles displace. The summary's divergence is div(eps U) + change/dt of the last step.
+  void SetFluidFractionChange(Vec change) { epsChange_ = change; }
   // Makes the velocity field satisfy the boundary conditions and div(eps U) = 0 (an initial projection).
   PetscErrorCode ProjectInitialVelocity();
   // Sets the pressure to the one that balances gravity (done by the first Step unless Load came first).
@@ -155,6 +159,8 @@ private:
   // With a relaxation: the projection's coefficient eps/(rho (1 + dt c)) (FlowDragProjection.cpp)
   Vec            dragBeta_ = nullptr, dragBetaLocal_ = nullptr, rateLocal_[3] = {nullptr, nullptr, nullptr};
   PetscErrorCode DragProjectionCoefficient(PetscReal dt);
+  Vec       epsChange_ = nullptr;  // SetFluidFractionChange
+  PetscReal epsChangeDt_ = 0;     // the step it belongs to (set by Project)
   void     *forcingCtx_ = nullptr;
   // last step, for the monitor
   FlowSummary last_;

@@ -28,7 +28,8 @@ class Flow;
 enum class VofNormals { Youngs, Height };
 
 struct VofSummary {
-  PetscReal volume = 0;          // m^3: sum alpha dV
+  PetscReal volume = 0;          // m^3: sum eps alpha dV (eps = 1 without particles)
+  PetscReal otherVolume = 0;     // m^3: sum eps (1 - alpha) dV, phase 0
   PetscReal minAlpha = 0, maxAlpha = 0;  // now
   PetscReal boundViolation = 0;  // max(-alpha, alpha - 1, 0) seen after any sweep since SetUp (no clipping is done)
   PetscReal interfaceCells = 0;  // cells with 1e-12 < alpha < 1 - 1e-12 (as a real: a sum over ranks)
@@ -64,6 +65,15 @@ public:
   // flow's -flow_density, -flow_viscosity), then flow.PropertiesChanged().
   PetscErrorCode UpdateProperties(Flow &flow) const;
   PetscReal Density() const { return density_; }
+  // Particles in the fluid (-physics dem,flow,vof; PHYSICS.md F1b, VofFluidFraction.cpp): eps, the flow's
+  // fluid fraction (global cell vector), and its change over the coming step (the coupling's, which the
+  // flow's projection also reads: dt div(eps u) = -change). alpha is then the fraction of the fluid
+  // volume eps V of a cell, and Advect transports eps alpha: each sweep moves eps_f u_f times the PLIC
+  // fraction of the swept slab, and the Weymouth-Yue term c_i carries the swept fluid volume plus a third
+  // of the change, so that a full cell stays full while its eps moves and the volumes of both phases,
+  // sum eps alpha V and sum eps (1 - alpha) V, change only by c_i times the continuity residual.
+  // nullptr: eps = 1 (bitwise the scheme without particles).
+  void SetFluidFraction(Vec eps, Vec change) { eps_ = eps; epsChange_ = change; }
   // Surface tension (-vof_surface_tension sigma > 0; VofSurfaceTension.cpp): height-function
   // curvature and the balanced face force sigma kappa_f (alpha_R - alpha_L)/h into flow.FaceForce();
   // with -vof_dsigma_dT and -vof_temperature_gradient (a prescribed linear temperature, until the
@@ -79,7 +89,10 @@ public:
 
 private:
   PetscErrorCode FillGhosts();  // alpha_ -> alphaLocal_, boundary layers by zero gradient
-  PetscErrorCode Sweep(int d, Vec const uLocal[3], PetscReal dt, PetscReal *heightCells, PetscReal *interfaceCells);
+  PetscErrorCode MirrorBoundary(Vec local) const;  // a local vector of da_: boundary layers by zero gradient
+  PetscErrorCode FluidFractionGhosts();  // eps_, epsChange_ -> epsLocal_, changeLocal_ (VofFluidFraction.cpp)
+  // Sweep `stage` (1-3) of a step along d.
+  PetscErrorCode Sweep(int d, int stage, Vec const uLocal[3], PetscReal dt, PetscReal *heightCells, PetscReal *interfaceCells);
   // The PLIC plane of the cell at q in cell units (n, c); false for a full, empty or flat-field cell.
   bool Reconstruct(const LocalField &a, const PetscInt q[3], double n[3], double *c, bool *fromHeights) const;
 
@@ -91,6 +104,8 @@ private:
   Vec                  kappa_ = nullptr, kappaLocal_ = nullptr;  // SurfaceTension
   std::vector<char>    fullAtStart_;  // c_i of the current step, owned cells
   std::vector<double>  flux_;         // face fluxes of one sweep
+  Vec                  eps_ = nullptr, epsChange_ = nullptr;  // SetFluidFraction (not owned)
+  Vec                  epsLocal_ = nullptr, changeLocal_ = nullptr, cellScratch_ = nullptr;  // on da_
 
   // options
   VofNormals  normals_ = VofNormals::Height;
