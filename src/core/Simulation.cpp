@@ -220,6 +220,16 @@ PetscErrorCode Simulation::Step() {
     PetscCall(dem_->Step(dt));
     PetscCall(PetscLogStagePop());
   }
+  const bool consistent = physics_.vof && vof_->ConsistentMomentum();
+  if (consistent) {
+    // Mass-consistent momentum (PHYSICS.md F2, VofMomentum.cpp): alpha and rho u move together with
+    // u^n and the same geometric fluxes; the flow's step then works with rho^{n+1} and the surface
+    // tension of the moved interface.
+    PetscCall(PetscLogStagePush(vofStage_));
+    PetscCall(vof_->AdvectWithMomentum(*flow_, dt));
+    PetscCall(vof_->UpdateProperties(*flow_));
+    PetscCall(PetscLogStagePop());
+  }
   if (physics_.vof) {  // surface tension of the current interface, for the flow's predictor (F2)
     PetscCall(PetscLogStagePush(vofStage_));
     PetscCall(vof_->SurfaceTension(*flow_));
@@ -230,7 +240,7 @@ PetscErrorCode Simulation::Step() {
     PetscCall(flow_->Step(time_, dt));
     PetscCall(PetscLogStagePop());
   }
-  if (physics_.vof) {
+  if (physics_.vof && !consistent) {
     // The interface moves with the projected (divergence-free) velocity of the step just taken, then
     // sets the density and viscosity of the next one (ARCHITECTURE.md, the coupled step, 4-5).
     PetscCall(PetscLogStagePush(vofStage_));

@@ -26,6 +26,10 @@ namespace vofdem {
 class Flow;
 
 enum class VofNormals { Youngs, Height };
+// How momentum moves with the interface (PHYSICS.md F2; VofMomentum.cpp): Consistent transports
+// rho u on the faces with the mass fluxes of the geometric VOF sweeps; Advective leaves the flow's
+// non-conservative -(U.grad)U (kept to show what consistency buys, ex36).
+enum class VofMomentum { Consistent, Advective };
 
 struct VofSummary {
   PetscReal volume = 0;          // m^3: sum alpha dV
@@ -63,6 +67,14 @@ public:
   // The flow's density and viscosity from alpha (phase 1: -vof_density, -vof_viscosity; phase 0: the
   // flow's -flow_density, -flow_viscosity), then flow.PropertiesChanged().
   PetscErrorCode UpdateProperties(Flow &flow) const;
+  // Advect with mass-consistent momentum transport (VofMomentum.cpp; PHYSICS.md F2): call instead of
+  // Advect, before UpdateProperties, with the flow at u^n. After each split sweep of alpha, every
+  // velocity component is moved along that sweep's direction by the sweep's own mass fluxes; the
+  // result goes to the flow through SetAdvectionAcceleration, so that its predictor starts from the
+  // transported velocity with the face density rho_f^{n+1}.
+  PetscErrorCode AdvectWithMomentum(Flow &flow, PetscReal dt);
+  // True when AdvectWithMomentum is to be used this step (-vof_momentum consistent, interface moving).
+  bool ConsistentMomentum() const { return momentum_ == VofMomentum::Consistent && advect_; }
   PetscReal Density() const { return density_; }
   // Surface tension (-vof_surface_tension sigma > 0; VofSurfaceTension.cpp): height-function
   // curvature and the balanced face force sigma kappa_f (alpha_R - alpha_L)/h into flow.FaceForce();
@@ -81,6 +93,7 @@ private:
   PetscErrorCode FillGhosts();  // alpha_ -> alphaLocal_, boundary layers by zero gradient
   PetscErrorCode Sweep(int d, Vec const uLocal[3], PetscReal dt, PetscReal *heightCells, PetscReal *interfaceCells);
   // The PLIC plane of the cell at q in cell units (n, c); false for a full, empty or flat-field cell.
+  PetscErrorCode MomentumSweep(int d, PetscReal dt);  // VofMomentum.cpp
   bool Reconstruct(const LocalField &a, const PetscInt q[3], double n[3], double *c, bool *fromHeights) const;
 
   const Grid          *grid_ = nullptr;
@@ -91,6 +104,13 @@ private:
   Vec                  kappa_ = nullptr, kappaLocal_ = nullptr;  // SurfaceTension
   std::vector<char>    fullAtStart_;  // c_i of the current step, owned cells
   std::vector<double>  flux_;         // face fluxes of one sweep
+  Vec                  phaseFlux_[3] = {nullptr, nullptr, nullptr};  // phase-1 volume flux of the last sweep along d per face (m/s), global on sg.Face(d)
+  // AdvectWithMomentum's state: the flow (null otherwise), the sweep's mass fluxes and the velocity
+  // being transported (ghosted, face DMDAs), alpha at the start of the sweep, the result for the flow.
+  Flow                *momentumFlow_ = nullptr;
+  Vec                  massLocal_[3] = {nullptr, nullptr, nullptr}, velocity_[3] = {nullptr, nullptr, nullptr}, velocityLocal_[3] = {nullptr, nullptr, nullptr};
+  Vec                  momentumAcc_[3] = {nullptr, nullptr, nullptr};
+  Vec                  alphaPrev_ = nullptr;
 
   // options
   VofNormals  normals_ = VofNormals::Height;
@@ -101,6 +121,7 @@ private:
   PetscReal   sigma_ = 0;                         // surface tension coefficient at T0, N/m
   PetscReal   dsigmadT_ = 0, gradT_[3] = {0, 0, 0};   // Marangoni: dsigma/dT (N/(m K)), prescribed grad T (K/m)
   PetscBool   advect_ = PETSC_TRUE;               // -vof_advect 0: a frozen interface (V3)
+  VofMomentum momentum_ = VofMomentum::Consistent;  // -vof_momentum
   PetscReal   missingCurvature_ = 0;
   std::vector<PetscReal> boxes_, spheres_;        // initial shapes of phase 1
   PetscInt    samples_ = 8;                       // per direction and cell, for the initial fraction
