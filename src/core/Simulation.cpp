@@ -60,6 +60,7 @@ PetscErrorCode Simulation::SetFromOptions() {
     vof_ = std::make_unique<Vof>();
     PetscCall(vof_->SetFromOptions(grid_));
     if (!physics_.vof) vof_.reset();
+    else if (flow_) PetscCall(vof_->CheckFlowOptions(*flow_));
   }
   if ((physics_.dem && physics_.flow) || help) {
     coupling_ = std::make_unique<Coupling>();
@@ -170,6 +171,11 @@ PetscErrorCode Simulation::ChooseTimeStep() {
     if (cap < limit) {
       limit        = cap;
       dtLimitName_ = "capillary sqrt(rho_mean h^3/(2 pi sigma))";
+    }
+    const PetscReal vis = vof_->ViscosityJumpTimeStep(flow_->ReferenceDensity(), flow_->ReferenceViscosity());
+    if (vis < limit) {
+      limit        = vis;
+      dtLimitName_ = "viscosity jump (explicit div(mu grad U^T): min(rho)/(4 |mu_1 - mu_0| sum 1/h^2))";
     }
   }
   if (!(limit < PETSC_MAX_REAL) && step_ > 0) PetscFunctionReturn(0);  // came to rest: keep the step
@@ -385,6 +391,16 @@ PetscErrorCode Simulation::View(PetscViewer viewer) const {
     std::string basis;
     PetscCall(flow_->StableTimeStep(&f, &basis));
     PetscCall(PetscViewerASCIIPrintf(viewer, "time step limits: flow %g s (%s)%s\n", (double)f, basis.c_str(), dtUser_ > 0 ? "" : "; adapted every step"));
+  }
+  if (physics_.vof) {  // the interface's fixed limits (PETSC_MAX_REAL: none)
+    const PetscReal cap = vof_->CapillaryTimeStep(flow_->ReferenceDensity()), vis = vof_->ViscosityJumpTimeStep(flow_->ReferenceDensity(), flow_->ReferenceViscosity());
+    if (cap < PETSC_MAX_REAL || vis < PETSC_MAX_REAL) {
+      std::string line = "time step limits: vof";
+      char        b[160];
+      if (cap < PETSC_MAX_REAL) std::snprintf(b, sizeof b, " capillary %g s", (double)cap), line += b;
+      if (vis < PETSC_MAX_REAL) std::snprintf(b, sizeof b, "%s viscosity jump %g s (explicit div(mu grad U^T))", cap < PETSC_MAX_REAL ? ";" : "", (double)vis), line += b;
+      PetscCall(PetscViewerASCIIPrintf(viewer, "%s\n", line.c_str()));
+    }
   }
   PetscCall(PetscViewerASCIIPrintf(viewer, "time step: %g s (set by %s); gravity (%g, %g, %g) m/s^2; seed %" PetscInt_FMT "\n", (double)dt_,
                                    dtLimitName_.c_str(), (double)gravity_[0], (double)gravity_[1], (double)gravity_[2], seed_));

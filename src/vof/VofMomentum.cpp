@@ -126,11 +126,16 @@ void AdvancedFaces(const StaggeredGrid &sg, const Grid &grid, int c, PetscInt s[
 
 }  // namespace
 
-PetscErrorCode Vof::AdvectWithMomentum(Flow &flow, PetscReal dt) {
+PetscErrorCode Vof::CheckFlowOptions(const Flow &flow) const {
   PetscFunctionBeginUser;
-  if (flow.AdvectionLimiter() == Limiter::Central)
+  if (ConsistentMomentum() && flow.AdvectionLimiter() == Limiter::Central)
     VofdemInputError(grid_->Comm(), "option -flow_advection central: unbounded and unstable with the forward-Euler momentum transport of -vof_momentum consistent; "
                                     "choose a limiter (e.g. vanleer) or -vof_momentum advective");
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode Vof::AdvectWithMomentum(Flow &flow, PetscReal dt) {
+  PetscFunctionBeginUser;
   if (!momentumAcc_[0]) {
     for (int d = 0; d < 3; ++d) {
       PetscCall(DMCreateGlobalVector(sg_->Face(d), &momentumAcc_[d]));
@@ -186,7 +191,7 @@ PetscErrorCode Vof::MomentumSweep(int e, PetscReal dt) {
     AdvancedFaces(*sg_, *grid_, c, s, n);
     switch (flow.AdvectionLimiter()) {
     case Limiter::Upwind: MomentumSweepKernel<Limiter::Upwind>(c, e, F, s, n, r); break;
-    case Limiter::Central: break;  // refused in AdvectWithMomentum
+    case Limiter::Central: break;  // refused by CheckFlowOptions
     case Limiter::Minmod: MomentumSweepKernel<Limiter::Minmod>(c, e, F, s, n, r); break;
     case Limiter::VanLeer: MomentumSweepKernel<Limiter::VanLeer>(c, e, F, s, n, r); break;
     case Limiter::MC: MomentumSweepKernel<Limiter::MC>(c, e, F, s, n, r); break;
