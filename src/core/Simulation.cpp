@@ -60,6 +60,7 @@ PetscErrorCode Simulation::SetFromOptions() {
     vof_ = std::make_unique<Vof>();
     PetscCall(vof_->SetFromOptions(grid_));
     if (!physics_.vof) vof_.reset();
+    else if (flow_) PetscCall(vof_->CheckFlowOptions(*flow_));
   }
   if ((physics_.dem && physics_.flow) || help) {
     coupling_ = std::make_unique<Coupling>();
@@ -184,6 +185,11 @@ PetscErrorCode Simulation::ChooseTimeStep() {
       limit        = cap;
       dtLimitName_ = "capillary sqrt(rho_mean h^3/(2 pi sigma))";
     }
+    const PetscReal vis = vof_->ViscosityJumpTimeStep(flow_->ReferenceDensity(), flow_->ReferenceViscosity());
+    if (vis < limit) {
+      limit        = vis;
+      dtLimitName_ = "viscosity jump (explicit div(mu grad U^T): min(rho)/(4 |mu_1 - mu_0| sum 1/h^2))";
+    }
   }
   if (!(limit < PETSC_MAX_REAL) && step_ > 0) PetscFunctionReturn(0);  // came to rest: keep the step
   if (!(limit < PETSC_MAX_REAL) && !(dtUser_ > 0))
@@ -247,6 +253,18 @@ PetscErrorCode Simulation::Step() {
     PetscCall(dem_->Step(dt));
     PetscCall(PetscLogStagePop());
   }
+  // With particles the coupled step above moves the interface after the flow step, with the
+  // flow's own (advective) momentum transport: the mass-consistent sweeps do not carry eps yet.
+  const bool consistent = physics_.vof && !coupling_ && vof_->ConsistentMomentum();
+  if (consistent) {
+    // Mass-consistent momentum (PHYSICS.md F2, VofMomentum.cpp): alpha and rho u move together with
+    // u^n and the same geometric fluxes; the flow's step then works with rho^{n+1} and the surface
+    // tension of the moved interface.
+    PetscCall(PetscLogStagePush(vofStage_));
+    PetscCall(vof_->AdvectWithMomentum(*flow_, dt));
+    PetscCall(vof_->UpdateProperties(*flow_));
+    PetscCall(PetscLogStagePop());
+  }
   if (physics_.vof && !coupling_) {  // surface tension of the current interface, for the flow's predictor (F2)
     PetscCall(PetscLogStagePush(vofStage_));
     PetscCall(vof_->SurfaceTension(*flow_));
@@ -257,7 +275,7 @@ PetscErrorCode Simulation::Step() {
     PetscCall(flow_->Step(time_, dt));
     PetscCall(PetscLogStagePop());
   }
-  if (physics_.vof && !coupling_) {
+  if (physics_.vof && !coupling_ && !consistent) {
     // The interface moves with the projected (divergence-free) velocity of the step just taken, then
     // sets the density and viscosity of the next one (ARCHITECTURE.md, the coupled step, 4-5).
     PetscCall(PetscLogStagePush(vofStage_));
@@ -409,6 +427,16 @@ PetscErrorCode Simulation::View(PetscViewer viewer) const {
     std::string basis;
     PetscCall(flow_->StableTimeStep(&f, &basis));
     PetscCall(PetscViewerASCIIPrintf(viewer, "time step limits: flow %g s (%s)%s\n", (double)f, basis.c_str(), dtUser_ > 0 ? "" : "; adapted every step"));
+  }
+  if (physics_.vof) {  // the interface's fixed limits (PETSC_MAX_REAL: none)
+    const PetscReal cap = vof_->CapillaryTimeStep(flow_->ReferenceDensity()), vis = vof_->ViscosityJumpTimeStep(flow_->ReferenceDensity(), flow_->ReferenceViscosity());
+    if (cap < PETSC_MAX_REAL || vis < PETSC_MAX_REAL) {
+      std::string line = "time step limits: vof";
+      char        b[160];
+      if (cap < PETSC_MAX_REAL) std::snprintf(b, sizeof b, " capillary %g s", (double)cap), line += b;
+      if (vis < PETSC_MAX_REAL) std::snprintf(b, sizeof b, "%s viscosity jump %g s (explicit div(mu grad U^T))", cap < PETSC_MAX_REAL ? ";" : "", (double)vis), line += b;
+      PetscCall(PetscViewerASCIIPrintf(viewer, "%s\n", line.c_str()));
+    }
   }
   PetscCall(PetscViewerASCIIPrintf(viewer, "time step: %g s (set by %s); gravity (%g, %g, %g) m/s^2; seed %" PetscInt_FMT "\n", (double)dt_,
                                    dtLimitName_.c_str(), (double)gravity_[0], (double)gravity_[1], (double)gravity_[2], seed_));

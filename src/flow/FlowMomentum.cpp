@@ -10,6 +10,7 @@ struct TermFields {
   LocalField u[3];      // ghosted velocities
   LocalField em, beta, eps;  // ghosted cell fields: eps*mu, eps/rho, eps
   LocalField H, L;      // outputs (global, component d)
+  bool       advect = true;  // false: another module transports momentum (Flow::SetAdvectionAcceleration)
 };
 
 // Explicit terms for component d at the owned faces [s, s+n) that are not boundary faces:
@@ -77,7 +78,7 @@ void MomentumTerms(int d, const TermFields &F, const PetscInt s[3], const PetscI
         }
         const PetscReal bL = be[i - cs_d], bR = be[i];
         const PetscReal eF = 0.5 * (ep[i - cs_d] + ep[i]), bF = 2 * bL * bR / (bL + bR);
-        Ho[i] = -adv + trans * bF / (eF * eF);  // (eps rho)_f = eps_f^2 / b_f
+        Ho[i] = (F.advect ? -adv : 0) + trans * bF / (eF * eF);  // (eps rho)_f = eps_f^2 / b_f
         Lo[i] = lap;
       }
     }
@@ -95,6 +96,7 @@ PetscErrorCode Flow::ComputeExplicitTerms() {
   PetscCall(sg_.GetLocal(3, emLocal_, &F.em));
   PetscCall(sg_.GetLocal(3, betaLocal_, &F.beta));
   PetscCall(sg_.GetLocal(3, epsLocal_, &F.eps));
+  F.advect = advectionAcceleration_[0] == nullptr;
   const PetscReal *h = grid_->Spacing();
   for (int d = 0; d < 3; ++d) {
     PetscCall(sg_.GetGlobal(d, H_[d], &F.H));
@@ -202,9 +204,10 @@ PetscErrorCode Flow::Predict(PetscReal t, PetscReal dt) {
     PetscCall(sg_.GetGlobal(d, haveOld_ ? Hold_[d] : H_[d], &Ho));
     PetscCall(sg_.GetGlobal(d, L_[d], &L));
     PetscCall(sg_.GetGlobal(d, rhsFace_[d], &R));
-    LocalField F, A;  // FaceForce(), when a module asked for it
+    LocalField F, A, V;  // FaceForce(), when a module asked for it
     if (faceForce_[d]) PetscCall(sg_.GetGlobal(d, faceForce_[d], &F));
     if (faceAcceleration_[d]) PetscCall(sg_.GetGlobal(d, faceAcceleration_[d], &A));
+    if (advectionAcceleration_[d]) PetscCall(sg_.GetGlobal(d, advectionAcceleration_[d], &V));
     sg_.Owned(d, s, n);
     const PetscInt  last = sg_.Points(d, d) - 1, cs = beta.stride[d];  // cs: the cell below a face
     const bool      walls = !grid_->Periodic(d);
@@ -216,6 +219,7 @@ PetscErrorCode Flow::Predict(PetscReal t, PetscReal dt) {
         const PetscScalar *bq = &beta.at(s[0], j, k), *eq = &eps.at(s[0], j, k), *pq = &p.at(s[0], j, k);
         const PetscScalar *Fq = faceForce_[d] ? &F.at(s[0], j, k) : nullptr;
         const PetscScalar *aq = faceAcceleration_[d] ? &A.at(s[0], j, k) : nullptr;
+        const PetscScalar *vq = advectionAcceleration_[d] ? &V.at(s[0], j, k) : nullptr;
         const PetscInt     qd = d == 1 ? j : k;  // the face index along d when d is not x
         const bool         rowOnWall = walls && d != 0 && (qd == 0 || qd == last);
         for (PetscInt i = 0; i < n[0]; ++i) {
@@ -230,6 +234,7 @@ PetscErrorCode Flow::Predict(PetscReal t, PetscReal dt) {
           acc -= invRho * PetscRealPart(pq[i] - pq[i - cs]) / h[d];
           if (Fq) acc += invRho * PetscRealPart(Fq[i]);  // balanced with the pressure gradient
           if (aq) acc += PetscRealPart(aq[i]);
+          if (vq) acc += PetscRealPart(vq[i]);
           if (forcing_) {
             const PetscInt q[3] = {s[0] + i, j, k};
             PetscReal      x[3];
@@ -247,6 +252,7 @@ PetscErrorCode Flow::Predict(PetscReal t, PetscReal dt) {
       }
     if (faceForce_[d]) PetscCall(sg_.RestoreGlobal(d, faceForce_[d], &F));
     if (faceAcceleration_[d]) PetscCall(sg_.RestoreGlobal(d, faceAcceleration_[d], &A));
+    if (advectionAcceleration_[d]) PetscCall(sg_.RestoreGlobal(d, advectionAcceleration_[d], &V));
     PetscCall(sg_.RestoreGlobal(d, rhsFace_[d], &R));
     PetscCall(sg_.RestoreGlobal(d, L_[d], &L));
     PetscCall(sg_.RestoreGlobal(d, haveOld_ ? Hold_[d] : H_[d], &Ho));

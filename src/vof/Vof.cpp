@@ -25,6 +25,12 @@ PetscErrorCode Vof::SetFromOptions(const Grid &grid) {
     PetscCall(opt.Real("-surface_tension", "Surface tension coefficient sigma (0: none); height-function curvature, balanced-force face force", "N/m", &sigma_, RealRange::NonNegative()));
     PetscCall(opt.Real("-dsigma_dT", "Temperature coefficient of the surface tension (Marangoni force, PHYSICS.md F2)", "N/(m K)", &dsigmadT_));
     PetscCall(opt.RealVector("-temperature_gradient", "Prescribed uniform temperature gradient (T = T0 + G.(x - lower corner)) for the Marangoni force until the energy module exists", "K/m", gradT_, 3));
+    std::vector<std::string> mom = {momentum_ == VofMomentum::Consistent ? "consistent" : "advective"};
+    PetscCall(opt.NameList("-momentum",
+                           "Momentum transport: consistent (rho u moved with the mass fluxes of the VOF sweeps, stable at large density ratios) or advective (the flow's -(U.grad)U, for comparison)",
+                           {"consistent", "advective"}, &mom));
+    if (mom.size() != 1) VofdemInputError(grid.Comm(), "option -vof_momentum: give one method (consistent or advective)");
+    momentum_ = mom[0] == "consistent" ? VofMomentum::Consistent : VofMomentum::Advective;
     PetscCall(opt.Bool("-advect", "Move the interface with the flow (0: a frozen interface, for verification)", &advect_));
     PetscCall(opt.RealList("-boxes", "Phase 1 at the start: boxes x0,y0,z0,x1,y1,z1[,...]", "m", &boxes_, 6 * 64));
     PetscCall(opt.RealList("-spheres", "Phase 1 at the start: spheres cx,cy,cz,r[,...]", "m", &spheres_, 4 * 64));
@@ -64,7 +70,10 @@ PetscErrorCode Vof::SetUp(const StaggeredGrid &sg) {
   PetscCall(DMCreateGlobalVector(da_, &alpha_));
   PetscCall(PetscObjectSetName((PetscObject)alpha_, "vof_alpha"));
   PetscCall(DMCreateLocalVector(da_, &alphaLocal_));
-  for (int d = 0; d < 3; ++d) PetscCall(DMCreateLocalVector(sg.Face(d), &uLocal_[d]));
+  for (int d = 0; d < 3; ++d) {
+    PetscCall(DMCreateLocalVector(sg.Face(d), &uLocal_[d]));
+    PetscCall(DMCreateGlobalVector(sg.Face(d), &phaseFlux_[d]));
+  }
   PetscInt s[3], n[3];
   PetscCall(DMDAGetCorners(da_, &s[0], &s[1], &s[2], &n[0], &n[1], &n[2]));
   fullAtStart_.assign((size_t)(n[0] * n[1] * n[2]), 0);
@@ -73,7 +82,15 @@ PetscErrorCode Vof::SetUp(const StaggeredGrid &sg) {
 
 PetscErrorCode Vof::Destroy() {
   PetscFunctionBeginUser;
-  for (int d = 0; d < 3; ++d) PetscCall(VecDestroy(&uLocal_[d]));
+  for (int d = 0; d < 3; ++d) {
+    PetscCall(VecDestroy(&uLocal_[d]));
+    PetscCall(VecDestroy(&phaseFlux_[d]));
+    PetscCall(VecDestroy(&massLocal_[d]));
+    PetscCall(VecDestroy(&velocity_[d]));
+    PetscCall(VecDestroy(&velocityLocal_[d]));
+    PetscCall(VecDestroy(&momentumAcc_[d]));
+  }
+  PetscCall(VecDestroy(&alphaPrev_));
   PetscCall(VecDestroy(&kappa_));
   PetscCall(VecDestroy(&kappaLocal_));
   PetscCall(VecDestroy(&alphaLocal_));
@@ -249,9 +266,9 @@ PetscErrorCode Vof::Load(PetscViewer viewer) {
 
 PetscErrorCode Vof::View(PetscViewer viewer) const {
   PetscFunctionBeginUser;
-  PetscCall(PetscViewerASCIIPrintf(viewer, "vof: PLIC with %s normals, split geometric advection (Weymouth & Yue), sweep Courant number <= %g; phase 1 density %g kg/m^3, viscosity %g Pa s; surface tension %g N/m; %d box(es), %d sphere(s) of phase 1 at the start\n",
+  PetscCall(PetscViewerASCIIPrintf(viewer, "vof: PLIC with %s normals, split geometric advection (Weymouth & Yue), sweep Courant number <= %g; phase 1 density %g kg/m^3, viscosity %g Pa s; surface tension %g N/m; %s momentum transport; %d box(es), %d sphere(s) of phase 1 at the start\n",
                                    normals_ == VofNormals::Height ? "height-function" : "Youngs", (double)cfl_, (double)density_, (double)viscosity_, (double)sigma_,
-                                   (int)(boxes_.size() / 6), (int)(spheres_.size() / 4)));
+                                   momentum_ == VofMomentum::Consistent ? "mass-consistent" : "advective (non-conservative)", (int)(boxes_.size() / 6), (int)(spheres_.size() / 4)));
   PetscFunctionReturn(0);
 }
 

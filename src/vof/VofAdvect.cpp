@@ -163,6 +163,17 @@ PetscErrorCode Vof::Sweep(int d, int stage, Vec const uLocal[3], PetscReal dt, P
         // F1b: the fluid crossing is eps_f u_f dt/h of a cell; alpha's PLIC share of the slab it sweeps.
         if (eps_) flux_[idx] *= faceEps(q);
       }
+  {  // this sweep's phase-1 volume flux per face (m/s), for the consistent momentum (VofMomentum.cpp)
+    LocalField pf;
+    PetscInt   fs[3], fn[3];
+    sg_->Owned(d, fs, fn);
+    PetscCall(sg_->GetGlobal(d, phaseFlux_[d], &pf));
+    for (PetscInt k = fs[2]; k < fs[2] + fn[2]; ++k)
+      for (PetscInt j = fs[1]; j < fs[1] + fn[1]; ++j)
+        for (PetscInt i = fs[0]; i < fs[0] + fn[0]; ++i)
+          pf.at(i, j, k) = flux_[(size_t)((i - s[0]) + nf[0] * ((j - s[1]) + nf[1] * (k - s[2])))] / r;
+    PetscCall(sg_->RestoreGlobal(d, phaseFlux_[d], &pf));
+  }
   // Counts for the summary: the owned interface cells and how many got height-function normals.
   for (PetscInt k = s[2]; k < s[2] + n[2]; ++k)
     for (PetscInt j = s[1]; j < s[1] + n[1]; ++j)
@@ -230,8 +241,10 @@ PetscErrorCode Vof::Advect(Vec const u[3], PetscReal dt) {
   PetscReal counts[2]   = {0, 0}, total[2];
   for (int p = 0; p < 3; ++p) {
     const int d = order[steps_ % 2][p];
+    if (momentumFlow_) PetscCall(VecCopy(alphaLocal_, alphaPrev_));  // the sweep's start, for MomentumSweep
     PetscCall(Sweep(d, p + 1, uLocal_, dt, &counts[0], &counts[1]));
     PetscCall(FillGhosts());
+    if (momentumFlow_) PetscCall(MomentumSweep(d, dt));  // AdvectWithMomentum (VofMomentum.cpp)
   }
   PetscCallMPI(MPI_Allreduce(counts, total, 2, MPIU_REAL, MPIU_SUM, grid_->Comm()));
   heightShare_ = total[1] > 0 ? total[0] / total[1] : 0;

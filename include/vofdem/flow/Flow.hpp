@@ -74,6 +74,12 @@ public:
   // -F_p/(eps rho)_f of PHYSICS.md (F5), set by the coupling. a[d]: a global vector of Staggered().Face(d),
   // owned by the caller; nullptr: none.
   void SetFaceAcceleration(Vec a[3]) { for (int d = 0; d < 3; ++d) faceAcceleration_[d] = a ? a[d] : nullptr; }
+  // Momentum transport supplied by another module, replacing the flow's own -(U.grad)U: the VOF
+  // module's mass-consistent transport of rho u (PHYSICS.md F2; VofMomentum.cpp). a[d] (m/s^2, global
+  // vectors of Staggered().Face(d), owned by the caller) is added in Predict once (forward Euler, not
+  // in the AB2 history, which then holds only the transpose viscous term); nullptr: the flow's own.
+  void SetAdvectionAcceleration(Vec a[3]) { for (int d = 0; d < 3; ++d) advectionAcceleration_[d] = a ? a[d] : nullptr; }
+  Limiter AdvectionLimiter() const { return limiter_; }
   // A linear drag toward a velocity w per face, rate c (1/s), taken implicitly right after the
   // predictor (operator splitting): u* <- (u* + dt c w)/(1 + dt c). The coupling's fluid side of the
   // drag in dense beds (F5), whose relaxation time eps rho/beta can be far below dt. c[d], w[d]: global
@@ -155,6 +161,7 @@ private:
   Forcing   forcing_ = nullptr;
   Vec       faceForce_[3] = {nullptr, nullptr, nullptr};  // FaceForce(); null unless asked for
   Vec       faceAcceleration_[3] = {nullptr, nullptr, nullptr};
+  Vec       advectionAcceleration_[3] = {nullptr, nullptr, nullptr};  // SetAdvectionAcceleration
   Vec       relaxRate_[3] = {nullptr, nullptr, nullptr}, relaxTarget_[3] = {nullptr, nullptr, nullptr};
   // With a relaxation: the projection's coefficient eps/(rho (1 + dt c)) (FlowDragProjection.cpp)
   Vec            dragBeta_ = nullptr, dragBetaLocal_ = nullptr, rateLocal_[3] = {nullptr, nullptr, nullptr};

@@ -26,6 +26,10 @@ namespace vofdem {
 class Flow;
 
 enum class VofNormals { Youngs, Height };
+// How momentum moves with the interface (PHYSICS.md F2; VofMomentum.cpp): Consistent transports
+// rho u on the faces with the mass fluxes of the geometric VOF sweeps; Advective leaves the flow's
+// non-conservative -(U.grad)U (kept to show what consistency buys, ex36).
+enum class VofMomentum { Consistent, Advective };
 
 struct VofSummary {
   PetscReal volume = 0;          // m^3: sum eps alpha dV (eps = 1 without particles)
@@ -64,6 +68,16 @@ public:
   // The flow's density and viscosity from alpha (phase 1: -vof_density, -vof_viscosity; phase 0: the
   // flow's -flow_density, -flow_viscosity), then flow.PropertiesChanged().
   PetscErrorCode UpdateProperties(Flow &flow) const;
+  // Advect with mass-consistent momentum transport (VofMomentum.cpp; PHYSICS.md F2): call instead of
+  // Advect, before UpdateProperties, with the flow at u^n. After each split sweep of alpha, every
+  // velocity component is moved along that sweep's direction by the sweep's own mass fluxes; the
+  // result goes to the flow through SetAdvectionAcceleration, so that its predictor starts from the
+  // transported velocity with the face density rho_f^{n+1}.
+  PetscErrorCode AdvectWithMomentum(Flow &flow, PetscReal dt);
+  // Refuses flow options the VOF's choices cannot work with (VofMomentum.cpp); after both SetFromOptions.
+  PetscErrorCode CheckFlowOptions(const Flow &flow) const;
+  // True when AdvectWithMomentum is to be used this step (-vof_momentum consistent, interface moving).
+  bool ConsistentMomentum() const { return momentum_ == VofMomentum::Consistent && advect_; }
   PetscReal Density() const { return density_; }
   // Particles in the fluid (-physics dem,flow,vof; PHYSICS.md F1b, VofFluidFraction.cpp): eps, the flow's
   // fluid fraction (global cell vector), and its change over the coming step (the coupling's, which the
@@ -82,6 +96,9 @@ public:
   PetscReal      SurfaceTensionCoefficient() const { return sigma_; }
   // The capillary time-step limit sqrt(rho_mean h^3 / (2 pi sigma)) (PETSC_MAX_REAL without sigma).
   PetscReal CapillaryTimeStep(PetscReal otherDensity) const;
+  // The limit of the flow's explicit div(mu (grad U)^T) across the viscosity jump (VofPhases.cpp):
+  // min(rho) / (4 |mu_1 - mu_0| sum 1/h^2) (PETSC_MAX_REAL with equal viscosities).
+  PetscReal ViscosityJumpTimeStep(PetscReal otherDensity, PetscReal otherViscosity) const;
   Vec       Curvature() const { return kappa_; }  // 1/m, 1e300 where none (after SurfaceTension)
   Vec Fraction() const { return alpha_; }  // global vector of FractionDM()
   DM  FractionDM() const { return da_; }
@@ -94,6 +111,7 @@ private:
   // Sweep `stage` (1-3) of a step along d.
   PetscErrorCode Sweep(int d, int stage, Vec const uLocal[3], PetscReal dt, PetscReal *heightCells, PetscReal *interfaceCells);
   // The PLIC plane of the cell at q in cell units (n, c); false for a full, empty or flat-field cell.
+  PetscErrorCode MomentumSweep(int d, PetscReal dt);  // VofMomentum.cpp
   bool Reconstruct(const LocalField &a, const PetscInt q[3], double n[3], double *c, bool *fromHeights) const;
 
   const Grid          *grid_ = nullptr;
@@ -106,6 +124,13 @@ private:
   std::vector<double>  flux_;         // face fluxes of one sweep
   Vec                  eps_ = nullptr, epsChange_ = nullptr;  // SetFluidFraction (not owned)
   Vec                  epsLocal_ = nullptr, changeLocal_ = nullptr, cellScratch_ = nullptr;  // on da_
+  Vec                  phaseFlux_[3] = {nullptr, nullptr, nullptr};  // phase-1 volume flux of the last sweep along d per face (m/s), global on sg.Face(d)
+  // AdvectWithMomentum's state: the flow (null otherwise), the sweep's mass fluxes and the velocity
+  // being transported (ghosted, face DMDAs), alpha at the start of the sweep, the result for the flow.
+  Flow                *momentumFlow_ = nullptr;
+  Vec                  massLocal_[3] = {nullptr, nullptr, nullptr}, velocity_[3] = {nullptr, nullptr, nullptr}, velocityLocal_[3] = {nullptr, nullptr, nullptr};
+  Vec                  momentumAcc_[3] = {nullptr, nullptr, nullptr};
+  Vec                  alphaPrev_ = nullptr;
 
   // options
   VofNormals  normals_ = VofNormals::Height;
@@ -116,6 +141,7 @@ private:
   PetscReal   sigma_ = 0;                         // surface tension coefficient at T0, N/m
   PetscReal   dsigmadT_ = 0, gradT_[3] = {0, 0, 0};   // Marangoni: dsigma/dT (N/(m K)), prescribed grad T (K/m)
   PetscBool   advect_ = PETSC_TRUE;               // -vof_advect 0: a frozen interface (V3)
+  VofMomentum momentum_ = VofMomentum::Consistent;  // -vof_momentum
   PetscReal   missingCurvature_ = 0;
   std::vector<PetscReal> boxes_, spheres_;        // initial shapes of phase 1
   PetscInt    samples_ = 8;                       // per direction and cell, for the initial fraction
