@@ -319,5 +319,5 @@ int main(int argc, char **argv) {
   test:
     suffix: balance_1
     nsize: 1
-    args: -width 0.007 -particles 784 -settle_time 0.2 -velocities 0.004 -steps 40 -check_balance
+    args: -width 0.007 -particles 784 -settle_time 0.2 -velocities 0.004 -steps 40 -check_balance -coupling_eps_rate 0
 TEST*/

@@ -124,6 +124,9 @@ PetscErrorCode Run() {
   PetscCall(PetscOptionsSetValue(nullptr, "-coupling_drag", "schillernaumann"));
   PetscCall(Set("-coupling_added_mass", kCvm));
   PetscCall(Set("-dt", dt));
+  // The viscosity-jump limit of the explicit div(mu grad U^T) (VofPhases.cpp) is a safe bound, not a sharp
+  // one (a dam break ran stably at 117 times it); this run is checked against the ODE at the seed's step.
+  PetscCall(PetscOptionsSetValue(nullptr, "-dt_force", "1"));
   PetscCall(PetscOptionsSetValue(nullptr, "-max_steps", "1000000"));
 
   PetscCall(PetscPrintf(PETSC_COMM_WORLD, "V6 sphere entry: d %g m, %g kg/m^3, released with its lowest point %g m above a %g m deep pool (water %g kg/m^3, %g Pa s; air %g, %g);\n",

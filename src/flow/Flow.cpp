@@ -412,7 +412,11 @@ PetscErrorCode Flow::Save(PetscViewer viewer) const {
   for (int d = 0; d < 3; ++d) PetscCall(VecView(u_[d], viewer));
   for (int d = 0; d < 3; ++d) PetscCall(VecView(Hold_[d], viewer));
   for (Vec v : {p_, phi_, rho_, mu_, eps_}) PetscCall(VecView(v, viewer));
-  {  // properties changed since the pressure coefficient was last set (a free surface moved at the end of the step)
+  PetscBool hdf5;
+  PetscCall(PetscObjectTypeCompare((PetscObject)viewer, PETSCVIEWERHDF5, &hdf5));
+  if (hdf5) {  // properties changed since the pressure coefficient was last set (a free surface moved at the end of the step)
+    // An HDF5 attribute, so that checkpoints written before it load as they did; a binary viewer
+    // (in-memory Save/Load, ex27) has no attributes and keeps the former behaviour (none pending).
     const PetscInt pending = propertiesDirty_ ? 1 : 0;
     PetscCall(PetscViewerHDF5WriteAttribute(viewer, nullptr, "flow_properties_pending", PETSC_INT, &pending));
   }
@@ -499,8 +503,10 @@ PetscErrorCode Flow::Load(PetscViewer viewer) {
   // When the saving run's properties had changed after its last coefficient (VOF and particles move rho
   // and eps between steps), its next step compares the coefficient of that step with the reference:
   // so does this one (checkpoints without the flag: none pending).
-  PetscInt pending = 0, none = 0;
-  PetscCall(PetscViewerHDF5ReadAttribute(viewer, nullptr, "flow_properties_pending", PETSC_INT, &none, &pending));
+  PetscInt  pending = 0, none = 0;
+  PetscBool hdf5;
+  PetscCall(PetscObjectTypeCompare((PetscObject)viewer, PETSCVIEWERHDF5, &hdf5));
+  if (hdf5) PetscCall(PetscViewerHDF5ReadAttribute(viewer, nullptr, "flow_properties_pending", PETSC_INT, &none, &pending));
   PetscCall(UpdateLocals(true));
   PetscCall(pressure_.Load(viewer));
   if (pending) propertiesDirty_ = true;

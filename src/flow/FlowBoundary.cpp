@@ -102,6 +102,29 @@ PetscReal FlowBoundary::Prescribed(int f, int d, const PetscReal x[3]) const {
   return v;
 }
 
+namespace {
+
+// The ghost plane g along e of a ghosted region (x innermost): its index bounds, and a copy of the
+// plane `mirror` into it (even reflection, or zero gradient when mirror is the boundary point).
+void GhostPlane(const PetscInt gs[3], const PetscInt gm[3], int e, PetscInt g, PetscInt pl[3], PetscInt ph[3]) {
+  for (int c = 0; c < 3; ++c) pl[c] = gs[c], ph[c] = gs[c] + gm[c];
+  pl[e] = g;
+  ph[e] = g + 1;
+}
+
+void CopyPlane(const LocalField &f, const PetscInt gs[3], const PetscInt gm[3], int e, PetscInt g, PetscInt mirror) {
+  PetscInt pl[3], ph[3];
+  GhostPlane(gs, gm, e, g, pl, ph);
+  const PetscInt shift = (mirror - g) * f.stride[e], nx = ph[0] - pl[0];
+  for (PetscInt k = pl[2]; k < ph[2]; ++k)
+    for (PetscInt j = pl[1]; j < ph[1]; ++j) {
+      PetscScalar *row = &f.at(pl[0], j, k);
+      for (PetscInt i = 0; i < nx; ++i) row[i] = row[i + shift];
+    }
+}
+
+}  // namespace
+
 // The ghost planes are filled plane by plane, x innermost (contiguous), the directions in the order
 // x, y, z so that edge and corner ghosts take the values of the planes filled before them.
 PetscErrorCode FlowBoundary::FillVelocityGhosts(const StaggeredGrid &sg, int d, Vec local) const {
@@ -138,9 +161,12 @@ PetscErrorCode FlowBoundary::FillVelocityGhosts(const StaggeredGrid &sg, int d, 
           }
         } else mode = Even;  // slip, outflow: zero gradient
         if (mode == Boundary) mirror = side ? last : 0;
-        PetscInt pl[3] = {gs[0], gs[1], gs[2]}, ph[3] = {gs[0] + gm[0], gs[1] + gm[1], gs[2] + gm[2]};
-        pl[e] = g;
-        ph[e] = g + 1;
+        if (mode == Even || mode == Boundary) {
+          CopyPlane(u, gs, gm, e, g, mirror);
+          continue;
+        }
+        PetscInt pl[3], ph[3];
+        GhostPlane(gs, gm, e, g, pl, ph);
         const PetscInt shift = (mirror - g) * u.stride[e], nx = ph[0] - pl[0];
         for (PetscInt k = pl[2]; k < ph[2]; ++k)
           for (PetscInt j = pl[1]; j < ph[1]; ++j) {
@@ -148,8 +174,7 @@ PetscErrorCode FlowBoundary::FillVelocityGhosts(const StaggeredGrid &sg, int d, 
             switch (mode) {
             case Even:
             case Boundary:
-              for (PetscInt i = 0; i < nx; ++i) row[i] = row[i + shift];
-              break;
+              break;  // copied above
             case Odd:
               for (PetscInt i = 0; i < nx; ++i) row[i] = -row[i + shift];
               break;
@@ -187,16 +212,7 @@ PetscErrorCode FlowBoundary::FillCellGhosts(const StaggeredGrid &sg, Vec local) 
     for (int side = 0; side < 2; ++side) {
       const PetscInt a = side ? last + 1 : gs[e], b = side ? gs[e] + gm[e] : 0;
       for (PetscInt g = a; g < b; ++g) {
-        const PetscInt mirror = side ? 2 * last + 1 - g : -g - 1;
-        PetscInt       pl[3] = {gs[0], gs[1], gs[2]}, ph[3] = {gs[0] + gm[0], gs[1] + gm[1], gs[2] + gm[2]};
-        pl[e] = g;
-        ph[e] = g + 1;
-        const PetscInt shift = (mirror - g) * c.stride[e], nx = ph[0] - pl[0];
-        for (PetscInt k = pl[2]; k < ph[2]; ++k)
-          for (PetscInt j = pl[1]; j < ph[1]; ++j) {
-            PetscScalar *row = &c.at(pl[0], j, k);
-            for (PetscInt i = 0; i < nx; ++i) row[i] = row[i + shift];
-          }
+        CopyPlane(c, gs, gm, e, g, side ? 2 * last + 1 - g : -g - 1);  // mirror about the boundary face
       }
     }
   }

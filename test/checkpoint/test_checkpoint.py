@@ -60,7 +60,7 @@ SCENES = {
     "coupledvof": ("-physics dem,flow,vof -grid_cells 8,8,12 -grid_upper 0.008,0.008,0.012 -gravity 0,0,-9.81 -flow_density 1.2 -flow_viscosity 1.8e-5 "
                    "-flow_pressure_pc boomeramg -flow_pressure_ksp_rtol 1e-12 -vof_density 1000 -vof_viscosity 1e-3 -vof_boxes 0,0,0,0.008,0.008,0.007 "
                    "-dem_radius 5e-4 -dem_density 2500 -dem_fill_count 20 -dem_fill_lower 0,0,0.0075 -dem_fill_upper 0.008,0.008,0.012 -dem_fill_jitter 0.5 "
-                   "-coupling_fluid_drag implicit -dt 1e-3 -seed 7".split(), 10, (10, 10)),
+                   "-coupling_fluid_drag implicit -dt 1e-3 -dt_force -seed 7".split(), 10, (10, 10)),
 }  # (options, N of the bitwise case, (restart step, steps after it) of the rank-count case)
 QUIET = "-monitor_every 1000000 -monitor_timing 0".split()
 
