@@ -28,14 +28,21 @@ PetscErrorCode Coupling::Project() {
   H_.resize(a.n);
   scratch_.resize(a.n);
   lastForce_.assign(3 * (size_t)a.n, 0);
-  PetscReal localVolume = 0;
+  explicitForce_.assign(implicitFluid_ ? 3 * (size_t)a.n : 0, 0);
+  // The explicit forces (f_vm's m_a Du/Dt, the capillary force) reach the fluid as a face acceleration
+  // with either fluid side of the drag; with the implicit one, on top of the relaxation.
+  const bool explicitForces = addedMass_ > 0 || Capillary();
+  PetscReal  localVolume    = 0;
   for (PetscInt p = 0; p < a.n; ++p) {
     H_[p]       = KernelWidth(2 * a.radius[p]);
     scratch_[p] = 4.0 / 3.0 * PETSC_PI * a.radius[p] * a.radius[p] * a.radius[p];
     localVolume += scratch_[p];
     if (dtLast_ > 0)
-      for (int d = 0; d < 3; ++d) lastForce_[3 * p + d] = a.fluidImpulse[3 * p + d] / dtLast_;
-    for (int d = 0; d < 3; ++d) a.fluidImpulse[3 * p + d] = 0;
+      for (int d = 0; d < 3; ++d) {
+        lastForce_[3 * p + d] = (a.fluidImpulse[3 * p + d] + a.fluidExplicitImpulse[3 * p + d]) / dtLast_;
+        if (implicitFluid_) explicitForce_[3 * p + d] = a.fluidExplicitImpulse[3 * p + d] / dtLast_;
+      }
+    for (int d = 0; d < 3; ++d) a.fluidImpulse[3 * p + d] = a.fluidExplicitImpulse[3 * p + d] = 0;
   }
   PetscCall(VecSet(volume_, 0));
   PetscCall(avg_.Deposit(3, a.n, a.x, H_.data(), scratch_.data(), 1, volume_));
@@ -117,9 +124,9 @@ PetscErrorCode Coupling::Project() {
       PetscCall(sg.RestoreGlobal(d, flow_->Velocity(d), &U));
       PetscCall(sg.RestoreGlobal(d, target_[d], &W));
       PetscCall(sg.RestoreGlobal(d, rate_[d], &C));
-      continue;
+      if (!explicitForces) continue;
     }
-    PetscCall(avg_.Deposit(d, a.n, a.x, H_.data(), lastForce_.data() + d, 3, accel_[d]));
+    PetscCall(avg_.Deposit(d, a.n, a.x, H_.data(), (implicitFluid_ ? explicitForce_.data() : lastForce_.data()) + d, 3, accel_[d]));
     PetscCall(sg.GetGlobal(d, accel_[d], &A));
     sg.Owned(d, s, n);
     const PetscInt last = sg.Points(d, d) - 1;
@@ -195,13 +202,15 @@ PetscErrorCode Coupling::Average(PetscReal dt) {
   const PetscInt n = a.n;
   PetscCheck((PetscInt)H_.size() == n, PETSC_COMM_SELF, PETSC_ERR_ORDER, "coupling: Average() needs the particles of the last Project()");
   std::vector<PetscReal> u(3 * n), gp(3 * n), e(n), rf(n), mf(n), st(interfaceForces_ ? 3 * n : 0);
+  std::vector<PetscReal> al(Capillary() ? n : 0), ga(Capillary() ? 3 * n : 0);  // alpha and grad alpha (CouplingCapillary.cpp)
+  if (Capillary()) PetscCall(AlphaGradient());
   for (int d = 0; d < 3; ++d) {
     // One pass per location (the kernel weights are the costly part): the velocity (eps-weighted, wall
     // faces included), the pressure gradient and the interface's face force (surface tension and
     // Marangoni per unit volume, P1) (unweighted, K2; not computed on wall faces).
-    Vec        fields[3], weights[3] = {faceEps_[d], nullptr, nullptr};
-    bool       walls[3] = {true, false, false};
-    PetscReal *outs[3]  = {u.data() + d, nullptr, nullptr};
+    Vec        fields[4], weights[4] = {faceEps_[d], nullptr, nullptr, nullptr};
+    bool       walls[4] = {true, false, false, false};
+    PetscReal *outs[4]  = {u.data() + d, nullptr, nullptr, nullptr};
     PetscInt   nf       = 1;
     fields[0]           = flow_->Velocity(d);
     if (pressureForce_) fields[nf] = gradP_[d], outs[nf++] = gp.data() + d;
@@ -209,6 +218,7 @@ PetscErrorCode Coupling::Average(PetscReal dt) {
       PetscCall(flow_->FaceForce(d, &fields[nf]));
       outs[nf++] = st.data() + d;
     }
+    if (Capillary()) fields[nf] = gradAlpha_[d], outs[nf++] = ga.data() + d;
     PetscCall(avg_.Average(d, nf, fields, weights, walls, n, a.x, H_.data(), outs, 3));
   }
   // eps at the particle: by default the plain kernel average, so that eps times the (eps-weighted) velocity
@@ -217,11 +227,13 @@ PetscErrorCode Coupling::Average(PetscReal dt) {
   // The local mixture's density and viscosity are eps-weighted (K1; PHYSICS.md F: with a free surface rho
   // and mu follow alpha). One pass for the three.
   {
-    const Vec  fields[3]  = {flow_->FluidFraction(), flow_->Density(), flow_->Viscosity()};
-    const Vec  weights[3] = {weightedFraction_ ? flow_->FluidFraction() : nullptr, flow_->FluidFraction(), flow_->FluidFraction()};
-    const bool walls[3]   = {true, true, true};
-    PetscReal *outs[3]    = {e.data(), rf.data(), mf.data()};
-    PetscCall(avg_.Average(3, 3, fields, weights, walls, n, a.x, H_.data(), outs, 1));
+    // With the capillary force, also the liquid fraction alpha, unweighted: F of Capillary.hpp is the
+    // plain kernel's marginal.
+    const Vec  fields[4]  = {flow_->FluidFraction(), flow_->Density(), flow_->Viscosity(), alpha_};
+    const Vec  weights[4] = {weightedFraction_ ? flow_->FluidFraction() : nullptr, flow_->FluidFraction(), flow_->FluidFraction(), nullptr};
+    const bool walls[4]   = {true, true, true, true};
+    PetscReal *outs[4]    = {e.data(), rf.data(), mf.data(), al.data()};
+    PetscCall(avg_.Average(3, Capillary() ? 4 : 3, fields, weights, walls, n, a.x, H_.data(), outs, 1));
   }
   for (PetscInt p = 0; p < n; ++p) {
     const PetscReal d = 2 * a.radius[p], V = PETSC_PI * d * d * d / 6, rho = rf[p], mu = mf[p];
@@ -249,11 +261,15 @@ PetscErrorCode Coupling::Average(PetscReal dt) {
     // Du/Dt from the change of the (undisturbed) fluid velocity read over the step. A particle that has
     // not been read yet (m_a still 0: new, or the set-up) gets no acceleration.
     const PetscReal ma = addedMass_ * rho * V, dUdt = dt > 0 && a.fluidAddedMass[p] > 0 ? 1 / dt : 0;
+    PetscReal       fc[3] = {0, 0, 0};  // the capillary force (-coupling_contact_angle)
+    if (Capillary()) CapillaryForce(a.radius[p], H_[p], al[p], &ga[3 * p], fc);
     for (int c = 0; c < 3; ++c) {
       const PetscReal fvm = ma * (uf[c] - a.fluidVelocity[3 * p + c]) * dUdt;
       a.fluidVelocity[3 * p + c] = uf[c];
-      a.fluidForce[3 * p + c]    = (pressureForce_ ? -V * gp[3 * p + c] : 0) + (interfaceForces_ ? V * st[3 * p + c] : 0) + fvm;
-      a.fluidImpulse[3 * p + c] += fvm * dt;  // the explicit part of f_vm's impulse over the coming sub-steps (F5)
+      a.fluidForce[3 * p + c]    = (pressureForce_ ? -V * gp[3 * p + c] : 0) + (interfaceForces_ ? V * st[3 * p + c] : 0) + fvm + fc[c];
+      // The explicit forces' impulse over the coming sub-steps, f_vm's explicit part and the capillary force,
+      // which the fluid receives with the opposite sign (F5).
+      a.fluidExplicitImpulse[3 * p + c] += (fvm + fc[c]) * dt;
     }
     a.fluidAddedMass[p] = ma;
   }
