@@ -15,7 +15,7 @@
 // Checks: theta = 90 deg and b = 90 deg: 0 (a neutral sphere floats centred); theta = 120 deg: zero at
 // b = 60 deg (centre R/2 above the interface), F_n < 0 above it and > 0 below (restoring, stiffness
 // dF_n/ds = -2 pi sigma cos(b + theta) at the zero); the largest force toward the gas over b is
-// 2 pi R sigma sin^2(theta/2) (at b = (180 deg - theta)/2), the classical detachment force of a sphere
+// 2 pi R sigma sin^2(theta/2) (at b = 180 deg - theta/2), the classical detachment force of a sphere
 // from a flat interface (Scheludko; Nutt 1960); theta = 0 pulls the sphere into the liquid at every b.
 // The interface's deformation by the particle (the meniscus) and the line tension are not modelled.
 //
