@@ -29,9 +29,9 @@ PetscErrorCode Coupling::Project() {
   scratch_.resize(a.n);
   lastForce_.assign(3 * (size_t)a.n, 0);
   explicitForce_.assign(implicitFluid_ ? 3 * (size_t)a.n : 0, 0);
-  // The explicit forces (f_vm's m_a Du/Dt, the capillary force) reach the fluid as a face acceleration
-  // with either fluid side of the drag; with the implicit one, on top of the relaxation.
-  const bool explicitForces = addedMass_ > 0 || Capillary();
+  // The explicit forces (f_vm's m_a Du/Dt; the capillary force, DepositCapillary) reach the fluid as a
+  // face acceleration with either fluid side of the drag; with the implicit one, on top of the relaxation.
+  const bool explicitForces = addedMass_ > 0;
   PetscReal  localVolume    = 0;
   for (PetscInt p = 0; p < a.n; ++p) {
     H_[p]       = KernelWidth(2 * a.radius[p]);
@@ -47,8 +47,13 @@ PetscErrorCode Coupling::Project() {
   PetscCall(VecSet(volume_, 0));
   PetscCall(avg_.Deposit(3, a.n, a.x, H_.data(), scratch_.data(), 1, volume_));
   PetscReal sums[4] = {localVolume, 0, 0, 0}, all[4];
+  capForce_.assign(Capillary() ? 3 * (size_t)a.n : 0, 0);
   for (PetscInt p = 0; p < a.n; ++p)
-    for (int d = 0; d < 3; ++d) sums[1 + d] += lastForce_[3 * p + d];
+    for (int d = 0; d < 3; ++d) {
+      if (Capillary() && dtLast_ > 0) capForce_[3 * p + d] = a.fluidCapillaryImpulse[3 * p + d] / dtLast_;
+      if (Capillary()) a.fluidCapillaryImpulse[3 * p + d] = 0;
+      sums[1 + d] += lastForce_[3 * p + d] + (Capillary() ? capForce_[3 * p + d] : 0);
+    }
   PetscCallMPI(MPI_Allreduce(sums, all, 4, MPIU_REAL, MPIU_SUM, comm_));
   last_.particleVolume = all[0];
   for (int d = 0; d < 3; ++d) last_.dragSum[d] = all[1 + d];
@@ -124,7 +129,10 @@ PetscErrorCode Coupling::Project() {
       PetscCall(sg.RestoreGlobal(d, flow_->Velocity(d), &U));
       PetscCall(sg.RestoreGlobal(d, target_[d], &W));
       PetscCall(sg.RestoreGlobal(d, rate_[d], &C));
-      if (!explicitForces) continue;
+      if (!explicitForces) {
+        if (Capillary()) PetscCall(DepositCapillary(d, a, eps, rho, &source[d]));
+        continue;
+      }
     }
     PetscCall(avg_.Deposit(d, a.n, a.x, H_.data(), (implicitFluid_ ? explicitForce_.data() : lastForce_.data()) + d, 3, accel_[d]));
     PetscCall(sg.GetGlobal(d, accel_[d], &A));
@@ -143,6 +151,7 @@ PetscErrorCode Coupling::Project() {
           A.at(q) = -PetscRealPart(A.at(q)) / (Vc * eF * eF / bF);
         }
     PetscCall(sg.RestoreGlobal(d, accel_[d], &A));
+    if (Capillary()) PetscCall(DepositCapillary(d, a, eps, rho, &source[d]));  // after the conversion above
   }
   PetscCall(sg.RestoreLocal(3, rhoLocal_, &rho));
   PetscCall(sg.RestoreLocal(3, cellLocal_, &eps));
@@ -262,14 +271,15 @@ PetscErrorCode Coupling::Average(PetscReal dt) {
     // not been read yet (m_a still 0: new, or the set-up) gets no acceleration.
     const PetscReal ma = addedMass_ * rho * V, dUdt = dt > 0 && a.fluidAddedMass[p] > 0 ? 1 / dt : 0;
     PetscReal       fc[3] = {0, 0, 0};  // the capillary force (-coupling_contact_angle)
-    if (Capillary()) CapillaryForce(a.radius[p], H_[p], al[p], &ga[3 * p], fc);
+    if (Capillary()) CapillaryForce(a.radius[p], H_[p], al[p], &ga[3 * p], &a.v[3 * p], dt, fc);
     for (int c = 0; c < 3; ++c) {
       const PetscReal fvm = ma * (uf[c] - a.fluidVelocity[3 * p + c]) * dUdt;
       a.fluidVelocity[3 * p + c] = uf[c];
       a.fluidForce[3 * p + c]    = (pressureForce_ ? -V * gp[3 * p + c] : 0) + (interfaceForces_ ? V * st[3 * p + c] : 0) + fvm + fc[c];
-      // The explicit forces' impulse over the coming sub-steps, f_vm's explicit part and the capillary force,
-      // which the fluid receives with the opposite sign (F5).
-      a.fluidExplicitImpulse[3 * p + c] += (fvm + fc[c]) * dt;
+      // f_vm's explicit impulse over the coming sub-steps and the capillary force, which the fluid
+      // receives with the opposite sign (F5).
+      a.fluidExplicitImpulse[3 * p + c] += fvm * dt;
+      if (Capillary()) a.fluidCapillaryImpulse[3 * p + c] += fc[c] * dt;
     }
     a.fluidAddedMass[p] = ma;
   }

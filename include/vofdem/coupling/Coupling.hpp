@@ -93,9 +93,12 @@ public:
 private:
   PetscErrorCode FaceFields();  // eps at faces and the pressure gradient at faces, from the flow
   PetscErrorCode AlphaGradient();  // the liquid fraction's gradient at the faces (CouplingCapillary.cpp)
-  // The capillary force on a particle of radius R and kernel width H from the kernel averages of alpha
-  // and of its gradient (CouplingCapillary.cpp).
-  void           CapillaryForce(PetscReal R, PetscReal H, PetscReal alphaAvg, const PetscReal grad[3], PetscReal f[3]) const;
+  // The capillary force on a particle of radius R, kernel width H and velocity v from the kernel averages
+  // of alpha and of its gradient, for the coming step of about dt (CouplingCapillary.cpp).
+  void           CapillaryForce(PetscReal R, PetscReal H, PetscReal alphaAvg, const PetscReal grad[3], const PetscReal v[3], PetscReal dt, PetscReal f[3]) const;
+  // The fluid's share -F of the capillary forces on the faces of component d, added to accel_[d]
+  // (eps and rho: the cells' local fields; source: the diagnostic sum). CouplingCapillary.cpp.
+  PetscErrorCode DepositCapillary(int d, const ParticleArrays &a, LocalField &eps, LocalField &rho, PetscReal *source);
 
   Flow          *flow_ = nullptr;
   Dem           *dem_ = nullptr;
@@ -132,6 +135,8 @@ private:
   Vec cellLocal_ = nullptr, rhoLocal_ = nullptr, volume_ = nullptr, epsChange_ = nullptr;
   std::vector<PetscReal> H_, scratch_, lastForce_;  // per local particle, between Project and Average
   std::vector<PetscReal> explicitForce_;             // the explicit forces' part of lastForce_ (implicit fluid drag)
+  std::vector<PetscReal> capForce_, capMass_, capShare_;  // per local particle: the capillary force of the last step,
+                                                         // the averaged face (eps rho), -F/that (DepositCapillary)
 
   // state (saved): the length of the last step, whose drag impulse the next step projects
   PetscReal dtLast_ = 0;

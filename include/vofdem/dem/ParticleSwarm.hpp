@@ -32,6 +32,7 @@ inline constexpr const char *fluidAddedMass = "fluid_added_mass";  // kg, C_vm r
 // N s, the explicit fluid forces' impulse over the coming sub-steps (f_vm's m_a Du/Dt, the capillary force),
 // kept apart from the drag impulse so the fluid receives it with either -coupling_fluid_drag (F5)
 inline constexpr const char *fluidExplicitImpulse = "fluid_explicit_impulse";
+inline constexpr const char *fluidCapillaryImpulse = "fluid_capillary_impulse";  // N s, the capillary force's, likewise (its own deposit)
 }  // namespace field
 // q (4), centre in the body frame (3), clump mass, principal moments (3): see Clumps.hpp.
 inline constexpr int kRigidWidth = 11;
@@ -45,7 +46,7 @@ struct ParticleArrays {
   PetscInt64 *id = nullptr, *clump = nullptr;
   PetscInt   *type = nullptr;
   PetscReal  *fluidDrag = nullptr, *fluidVelocity = nullptr, *fluidForce = nullptr, *fluidImpulse = nullptr, *fluidAddedMass = nullptr;
-  PetscReal  *fluidExplicitImpulse = nullptr;
+  PetscReal  *fluidExplicitImpulse = nullptr, *fluidCapillaryImpulse = nullptr;
 };
 
 class ParticleSwarm {
