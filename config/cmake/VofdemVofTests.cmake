@@ -35,3 +35,18 @@ add_test(NAME vof/viscosity_jump_limit
 set_tests_properties(vof/viscosity_jump_limit PROPERTIES LABELS "quick;vof" PROCESSORS 1 TIMEOUT 120
                      PASS_REGULAR_EXPRESSION "time step limits: vof viscosity jump 0\\.000325527 s.*time step: 0\\.000325527 s \\(set by viscosity jump"
                      ENVIRONMENT "OMPI_ALLOW_RUN_AS_ROOT=1;OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1;OMP_NUM_THREADS=1")
+
+# V7 (issue 9): ex42's own options, and the two scenes of the particle-laden dam break load and step
+# (the coupled scene with a few poured beads instead of bed.csv, at the unresolved mode's cells).
+add_test(NAME badinput/ex42_particle_dam_break_mode COMMAND ${VOFDEM_PYTHON} ${_expect} --ranks 2 --match "option -mode: 'coarse' is neither semi nor unresolved"
+         -- $<TARGET_FILE:ex42_particle_dam_break> -mode coarse)
+add_test(NAME badinput/ex42_particle_dam_break_layer COMMAND ${VOFDEM_PYTHON} ${_expect} --ranks 2 --match "option -layer_height: 0.5 m is outside the tank"
+         -- $<TARGET_FILE:ex42_particle_dam_break> -layer_height 0.5)
+set_tests_properties(badinput/ex42_particle_dam_break_mode badinput/ex42_particle_dam_break_layer PROPERTIES LABELS "quick;badinput" PROCESSORS 2 TIMEOUT 120)
+add_test(NAME vof/particle_dam_break_bed_scene
+         COMMAND $<TARGET_FILE:vofdem_app> -options_file_yaml ${CMAKE_CURRENT_SOURCE_DIR}/config/scenes/particle-dam-break-bed.yaml -max_steps 20 -monitor_every 20)
+add_test(NAME vof/particle_dam_break_scene
+         COMMAND $<TARGET_FILE:vofdem_app> -options_file_yaml ${CMAKE_CURRENT_SOURCE_DIR}/config/scenes/particle-dam-break.yaml -grid_cells 25,12,37 -coupling_kernel unresolved
+                 -dem_fill_mode random -dem_fill_count 100 -dem_fill_upper 0.05,0.1,0.02 -dem_output_every 0 -flow_output_every 0 -max_steps 3)
+set_tests_properties(vof/particle_dam_break_bed_scene PROPERTIES LABELS "quick;vof" PROCESSORS 1 TIMEOUT 120 PASS_REGULAR_EXPRESSION "particles 3883 .*finished after 20 steps")
+set_tests_properties(vof/particle_dam_break_scene PROPERTIES LABELS "quick;vof" PROCESSORS 1 TIMEOUT 120 PASS_REGULAR_EXPRESSION "coupling: kernel unresolved.*fluid side implicit.*finished after 3 steps")
