@@ -45,6 +45,7 @@ vofdem_bad_input(vof_dem_no_eps_rate "option -coupling_eps_rate: particles with 
 vofdem_bad_input(contact_angle_range "option -coupling_contact_angle: 200\\.? is out of range" -physics dem,flow,vof -grid_upper 0.01,0.01,0.01 -coupling_contact_angle 200)
 vofdem_bad_input(contact_angle_no_vof "option -coupling_contact_angle: the capillary force acts at a free surface" -physics dem,flow -grid_upper 0.01,0.01,0.01 -coupling_contact_angle 100)
 vofdem_bad_input(contact_angle_unresolved "option -coupling_contact_angle: the capillary force finds the interface" -physics dem,flow,vof -grid_upper 0.01,0.01,0.01 -coupling_contact_angle 100 -coupling_kernel unresolved)
+vofdem_bad_input(added_mass_acceleration "option -coupling_added_mass_acceleration: .*bogus" -physics dem,flow -grid_upper 0.01,0.01,0.01 -coupling_added_mass_acceleration bogus)
 vofdem_bad_input(physics_missing    "option -physics is missing"                   -max_steps 1)
 vofdem_bad_input(not_a_number       "option -dem_radius: 'abc' is not a number"    ${_dem} -dem_radius abc)
 vofdem_bad_input(not_an_integer     "option -max_steps: '2.5' is not an integer"   ${_dem} -max_steps 2.5)

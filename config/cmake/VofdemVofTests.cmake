@@ -48,5 +48,8 @@ add_test(NAME vof/particle_dam_break_bed_scene
 add_test(NAME vof/particle_dam_break_scene
          COMMAND $<TARGET_FILE:vofdem_app> -options_file_yaml ${CMAKE_CURRENT_SOURCE_DIR}/config/scenes/particle-dam-break.yaml -grid_cells 25,12,37 -coupling_kernel unresolved
                  -dem_fill_mode random -dem_fill_count 100 -dem_fill_upper 0.05,0.1,0.02 -dem_output_every 0 -flow_output_every 0 -max_steps 3)
+add_test(NAME vof/sphere_entry_scene
+         COMMAND $<TARGET_FILE:vofdem_app> -options_file_yaml ${CMAKE_CURRENT_SOURCE_DIR}/config/scenes/sphere-entry.yaml -flow_output_every 0 -dem_output_every 0 -max_steps 20 -monitor_every 20)
+set_tests_properties(vof/sphere_entry_scene PROPERTIES LABELS "quick;vof" PROCESSORS 1 TIMEOUT 120 PASS_REGULAR_EXPRESSION "step +20 .*particles 1 .*finished after 20 steps")
 set_tests_properties(vof/particle_dam_break_bed_scene PROPERTIES LABELS "quick;vof" PROCESSORS 1 TIMEOUT 120 PASS_REGULAR_EXPRESSION "particles 3883 .*finished after 20 steps")
 set_tests_properties(vof/particle_dam_break_scene PROPERTIES LABELS "quick;vof" PROCESSORS 1 TIMEOUT 120 PASS_REGULAR_EXPRESSION "coupling: kernel unresolved.*fluid side implicit.*finished after 3 steps")

@@ -29,11 +29,11 @@ PetscErrorCode Coupling::Project() {
   scratch_.resize(a.n);
   lastForce_.assign(3 * (size_t)a.n, 0);
   explicitForce_.assign(implicitFluid_ ? 3 * (size_t)a.n : 0, 0);
-  // The capillary force's reaction reaches the fluid with either fluid side of the drag (DepositCapillary,
-  // shared by face mass). f_vm's explicit part does so only with the explicit side: deposited by kernel
-  // weight on top of the implicit relaxation, its share in a light gas threw particles out of ex44's box
-  // (60 spheres into water); shared by face mass like the capillary force it may work (open).
-  const bool explicitForces = false;
+  // The reactions of the explicit particle forces in the implicit fluid side of the drag (f_vm's m_a Du/Dt) and
+  // of the capillary force (either side) are shared by face mass (DepositByFaceMass): by kernel weight on top of
+  // the implicit relaxation, f_vm's share in a light gas threw particles out of ex44's box (60 spheres into water).
+  const bool explicitForces = !implicitFluid_;
+  const bool byMass         = Capillary() || implicitFluid_;
   PetscReal  localVolume    = 0;
   for (PetscInt p = 0; p < a.n; ++p) {
     H_[p]       = KernelWidth(2 * a.radius[p]);
@@ -49,12 +49,14 @@ PetscErrorCode Coupling::Project() {
   PetscCall(VecSet(volume_, 0));
   PetscCall(avg_.Deposit(3, a.n, a.x, H_.data(), scratch_.data(), 1, volume_));
   PetscReal sums[4] = {localVolume, 0, 0, 0}, all[4];
-  capForce_.assign(Capillary() ? 3 * (size_t)a.n : 0, 0);
+  massForce_.assign(byMass ? 3 * (size_t)a.n : 0, 0);
   for (PetscInt p = 0; p < a.n; ++p)
     for (int d = 0; d < 3; ++d) {
-      if (Capillary() && dtLast_ > 0) capForce_[3 * p + d] = a.fluidCapillaryImpulse[3 * p + d] / dtLast_;
+      PetscReal cap = 0;
+      if (Capillary() && dtLast_ > 0) cap = a.fluidCapillaryImpulse[3 * p + d] / dtLast_;
       if (Capillary()) a.fluidCapillaryImpulse[3 * p + d] = 0;
-      sums[1 + d] += lastForce_[3 * p + d] + (Capillary() ? capForce_[3 * p + d] : 0);
+      if (byMass) massForce_[3 * p + d] = cap + (implicitFluid_ ? explicitForce_[3 * p + d] : 0);
+      sums[1 + d] += lastForce_[3 * p + d] + cap;
     }
   PetscCallMPI(MPI_Allreduce(sums, all, 4, MPIU_REAL, MPIU_SUM, comm_));
   last_.particleVolume = all[0];
@@ -132,11 +134,11 @@ PetscErrorCode Coupling::Project() {
       PetscCall(sg.RestoreGlobal(d, target_[d], &W));
       PetscCall(sg.RestoreGlobal(d, rate_[d], &C));
       if (!explicitForces) {
-        if (Capillary()) PetscCall(DepositCapillary(d, a, eps, rho, &source[d]));
+        PetscCall(DepositByFaceMass(d, a, eps, rho, &source[d]));
         continue;
       }
     }
-    PetscCall(avg_.Deposit(d, a.n, a.x, H_.data(), (implicitFluid_ ? explicitForce_.data() : lastForce_.data()) + d, 3, accel_[d]));
+    PetscCall(avg_.Deposit(d, a.n, a.x, H_.data(), lastForce_.data() + d, 3, accel_[d]));
     PetscCall(sg.GetGlobal(d, accel_[d], &A));
     sg.Owned(d, s, n);
     const PetscInt last = sg.Points(d, d) - 1;
@@ -153,7 +155,7 @@ PetscErrorCode Coupling::Project() {
           A.at(q) = -PetscRealPart(A.at(q)) / (Vc * eF * eF / bF);
         }
     PetscCall(sg.RestoreGlobal(d, accel_[d], &A));
-    if (Capillary()) PetscCall(DepositCapillary(d, a, eps, rho, &source[d]));  // after the conversion above
+    if (byMass) PetscCall(DepositByFaceMass(d, a, eps, rho, &source[d]));  // after the conversion above
   }
   PetscCall(sg.RestoreLocal(3, rhoLocal_, &rho));
   PetscCall(sg.RestoreLocal(3, cellLocal_, &eps));
@@ -224,7 +226,8 @@ PetscErrorCode Coupling::Average(PetscReal dt) {
     PetscReal *outs[4]  = {u.data() + d, nullptr, nullptr, nullptr};
     PetscInt   nf       = 1;
     fields[0]           = flow_->Velocity(d);
-    if (pressureForce_) fields[nf] = gradP_[d], outs[nf++] = gp.data() + d;
+    const bool needGradP = pressureForce_ || (addedMass_ > 0 && addedMassAccel_ == FluidAcceleration::Pressure);
+    if (needGradP) fields[nf] = gradP_[d], outs[nf++] = gp.data() + d;
     if (interfaceForces_) {
       PetscCall(flow_->FaceForce(d, &fields[nf]));
       outs[nf++] = st.data() + d;
@@ -268,20 +271,26 @@ PetscErrorCode Coupling::Average(PetscReal dt) {
       }
     }
     a.fluidDrag[p] = drag::Coefficient(law_, d, e[p], std::sqrt(slip2), rho, mu, dragSwitch_);
-    // Added mass (P1): m_a = C_vm rho V, taken implicitly by the kick (Dem.cpp); m_a Du/Dt explicitly,
-    // Du/Dt from the change of the (undisturbed) fluid velocity read over the step. A particle that has
-    // not been read yet (m_a still 0: new, or the set-up) gets no acceleration.
+    // Added mass (P1): m_a = C_vm rho V, taken implicitly by the kick (Dem.cpp); m_a Du/Dt explicitly, Du/Dt
+    // (-coupling_added_mass_acceleration) by default from the change of the (undisturbed) fluid velocity read
+    // over the step; or from the fluid's momentum balance without viscous and particle forces, (-grad p +
+    // f_st)/rho + g, zero in fluid at rest whatever the particle does (the velocity read contains the fluid
+    // the particle pushes: at a free surface, where that is light gas, a floating sphere's bobbing grew until
+    // it left the surface, ex41); or none. A particle that has not been read yet (m_a still 0: new, or the
+    // set-up) gets no acceleration in the velocity form.
     const PetscReal ma = addedMass_ * rho * V, dUdt = dt > 0 && a.fluidAddedMass[p] > 0 ? 1 / dt : 0;
-    PetscReal       fc[3] = {0, 0, 0};  // the capillary force (-coupling_contact_angle)
-    if (Capillary()) CapillaryForce(a.radius[p], H_[p], al[p], &ga[3 * p], &a.v[3 * p], dt, fc);
+    const PetscReal *g = flow_->Gravity();
+    // The capillary force (-coupling_contact_angle) the DEM kicks take at the particle's current height above
+    // the surface plane read here (Dem.cpp HalfKick), and sum for the fluid's reaction.
+    if (Capillary()) SurfacePlane(H_[p], al[p], &ga[3 * p], &a.x[3 * p], &a.fluidSurfacePlane[4 * p]);
     for (int c = 0; c < 3; ++c) {
-      const PetscReal fvm = ma * (uf[c] - a.fluidVelocity[3 * p + c]) * dUdt;
+      const PetscReal fvm = ma == 0 || addedMassAccel_ == FluidAcceleration::None ? 0
+                            : addedMassAccel_ == FluidAcceleration::Pressure ? ma * ((-gp[3 * p + c] + (interfaceForces_ ? st[3 * p + c] : 0)) / rho + g[c])
+                                                                             : ma * (uf[c] - a.fluidVelocity[3 * p + c]) * dUdt;
       a.fluidVelocity[3 * p + c] = uf[c];
-      a.fluidForce[3 * p + c]    = (pressureForce_ ? -V * gp[3 * p + c] : 0) + (interfaceForces_ ? V * st[3 * p + c] : 0) + fvm + fc[c];
-      // f_vm's explicit impulse over the coming sub-steps and the capillary force, which the fluid
-      // receives with the opposite sign (F5).
+      a.fluidForce[3 * p + c]    = (pressureForce_ ? -V * gp[3 * p + c] : 0) + (interfaceForces_ ? V * st[3 * p + c] : 0) + fvm;
+      // f_vm's explicit impulse over the coming sub-steps, which the fluid receives with the opposite sign (F5).
       a.fluidExplicitImpulse[3 * p + c] += fvm * dt;
-      if (Capillary()) a.fluidCapillaryImpulse[3 * p + c] += fc[c] * dt;
     }
     a.fluidAddedMass[p] = ma;
   }

@@ -93,12 +93,12 @@ public:
 private:
   PetscErrorCode FaceFields();  // eps at faces and the pressure gradient at faces, from the flow
   PetscErrorCode AlphaGradient();  // the liquid fraction's gradient at the faces (CouplingCapillary.cpp)
-  // The capillary force on a particle of radius R, kernel width H and velocity v from the kernel averages
-  // of alpha and of its gradient, for the coming step of about dt (CouplingCapillary.cpp).
-  void           CapillaryForce(PetscReal R, PetscReal H, PetscReal alphaAvg, const PetscReal grad[3], const PetscReal v[3], PetscReal dt, PetscReal f[3]) const;
-  // The fluid's share -F of the capillary forces on the faces of component d, added to accel_[d]
-  // (eps and rho: the cells' local fields; source: the diagnostic sum). CouplingCapillary.cpp.
-  PetscErrorCode DepositCapillary(int d, const ParticleArrays &a, LocalField &eps, LocalField &rho, PetscReal *source);
+  // The local free surface a particle at x with kernel width H sees, from the kernel averages of alpha and of
+  // its gradient, as the plane of field::fluidSurfacePlane (CouplingCapillary.cpp).
+  void           SurfacePlane(PetscReal H, PetscReal alphaAvg, const PetscReal grad[3], const PetscReal x[3], PetscReal plane[4]) const;
+  // The fluid's share -F of the forces in massForce_ on the faces of component d, by face mass, added to accel_[d]
+  // (eps and rho: the cells' local fields; source: the diagnostic sum). CouplingMassDeposit.cpp.
+  PetscErrorCode DepositByFaceMass(int d, const ParticleArrays &a, LocalField &eps, LocalField &rho, PetscReal *source);
 
   Flow          *flow_ = nullptr;
   Dem           *dem_ = nullptr;
@@ -116,6 +116,8 @@ private:
   PetscBool                implicitFluid_ = PETSC_FALSE;  // -coupling_fluid_drag implicit
   PetscBool                weightedFraction_ = PETSC_FALSE;  // -coupling_fraction_average weighted
   PetscReal                addedMass_ = 0.5;             // C_vm (P1)
+  enum class FluidAcceleration { Velocity, Pressure, None };
+  FluidAcceleration        addedMassAccel_ = FluidAcceleration::Velocity;  // -coupling_added_mass_acceleration: Du/Dt in f_vm
   PetscBool                epsRate_ = PETSC_TRUE;         // d(eps)/dt in the continuity equation (F1)
   bool                     interfaceForces_ = false;
   PetscReal                contactAngle_ = 90;  // deg, -coupling_contact_angle (one angle for all particles)
@@ -125,6 +127,7 @@ private:
   PetscReal                sigma_ = 0;          // N/m, the VOF's surface tension
   capillary::Marginal      marginal_;           // the kernel's interface marginal F (Capillary.hpp)
   Vec                      gradAlpha_[3] = {nullptr, nullptr, nullptr};
+  Vec                      massWork_[3]  = {nullptr, nullptr, nullptr};  // DepositByFaceMass's scratch
   bool Capillary() const { return alpha_ != nullptr; }
   std::vector<PetscReal>   selfTable_;  // H C of Kernel.hpp at Re_H = 10^(-3 + k/20), k = 0..140
   PetscReal                SelfCoefficient(PetscReal H, PetscReal ReH) const;  // C (1/m) by log interpolation
@@ -135,8 +138,8 @@ private:
   Vec cellLocal_ = nullptr, rhoLocal_ = nullptr, volume_ = nullptr, epsChange_ = nullptr;
   std::vector<PetscReal> H_, scratch_, lastForce_;  // per local particle, between Project and Average
   std::vector<PetscReal> explicitForce_;             // the explicit forces' part of lastForce_ (implicit fluid drag)
-  std::vector<PetscReal> capForce_, capMass_, capShare_;  // per local particle: the capillary force of the last step,
-                                                         // the averaged face (eps rho), -F/that (DepositCapillary)
+  std::vector<PetscReal> massForce_, capMass_, capShare_;  // per local particle: the force of the last step whose reaction
+                                                          // is shared by face mass, the averaged face (eps rho), -F/that (DepositByFaceMass)
 
   // state (saved): the length of the last step, whose drag impulse the next step projects
   PetscReal dtLast_ = 0;
