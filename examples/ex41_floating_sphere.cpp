@@ -12,9 +12,10 @@ static const char help[] = "A glass sphere at a still water surface, with the pa
                            "   kernel's, V F(-s/H) of water instead of the cap; the equilibrium s_k with it differs from s* by |s_k - s*|, and\n"
                            "   the tolerance is twice that plus 1 %% of R for the kernel's view of a flat interface on cells of 0.6 H\n"
                            "   (Capillary.hpp: under 1 %% of s).\n"
-                           " - hydrophilic (-angle below 90) or no option: the sphere must sink, its centre more than R below the surface (the\n"
-                           "   run stops at 2 R below).\n"
-                           "Exits non-zero on failure.\n\n";
+                           " - perfectly wetting (-angle 0) or no option: the sphere must sink, its centre more than R below the surface (the\n"
+                           "   run stops at 2 R below): Princen's force never pulls it up then. Between 0 and 90 deg a sphere this small can\n"
+                           "   still float, deep in the water (the force pulls up once beta > 180 - theta); that case is not checked here.\n"
+"Exits non-zero on failure.\n\n";
 
 #include "vofdem/core/Runtime.hpp"
 #include "vofdem/core/Simulation.hpp"
@@ -98,6 +99,7 @@ PetscErrorCode Run() {
   PetscCall(PetscOptionsClearValue(nullptr, "-angle"));
   PetscCall(PetscOptionsClearValue(nullptr, "-steps"));
   const bool      wetting = angle >= 0, floats = angle >= 90;
+  if (wetting && angle > 0 && angle < 90) VofdemInputError(PETSC_COMM_WORLD, "ex41: option -angle %g: checked cases are 0, 90 to 180, or -1 (no force)", (double)angle);
   const PetscReal L = kNx * kH, Z = kNz * kH, zs0 = kWater * kH;
   std::snprintf(buf, sizeof buf, "%d,%d,%d", (int)kNx, (int)kNx, (int)kNz);
   PetscCall(PetscOptionsSetValue(nullptr, "-grid_cells", buf));

@@ -42,7 +42,10 @@ add_test(NAME badinput/ex42_particle_dam_break_mode COMMAND ${VOFDEM_PYTHON} ${_
          -- $<TARGET_FILE:ex42_particle_dam_break> -mode coarse)
 add_test(NAME badinput/ex42_particle_dam_break_layer COMMAND ${VOFDEM_PYTHON} ${_expect} --ranks 2 --match "option -layer_height: 0.5 m is outside the tank"
          -- $<TARGET_FILE:ex42_particle_dam_break> -layer_height 0.5)
-set_tests_properties(badinput/ex42_particle_dam_break_mode badinput/ex42_particle_dam_break_layer PROPERTIES LABELS "quick;badinput" PROCESSORS 2 TIMEOUT 120)
+# ex41 (issue 9, wettability): an angle it cannot check (a sphere can float deep in water below 90 deg).
+add_test(NAME badinput/ex41_floating_sphere_angle COMMAND ${VOFDEM_PYTHON} ${_expect} --ranks 2 --match "ex41: option -angle 45\\.?: checked cases are 0, 90 to 180"
+         -- $<TARGET_FILE:ex41_floating_sphere> -angle 45)
+set_tests_properties(badinput/ex42_particle_dam_break_mode badinput/ex42_particle_dam_break_layer badinput/ex41_floating_sphere_angle PROPERTIES LABELS "quick;badinput" PROCESSORS 2 TIMEOUT 120)
 add_test(NAME vof/particle_dam_break_bed_scene
          COMMAND $<TARGET_FILE:vofdem_app> -options_file_yaml ${CMAKE_CURRENT_SOURCE_DIR}/config/scenes/particle-dam-break-bed.yaml -max_steps 20 -monitor_every 20)
 add_test(NAME vof/particle_dam_break_scene
