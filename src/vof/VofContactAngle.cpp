@@ -88,7 +88,7 @@ PetscErrorCode Vof::ReadContactAngleOptions(OptionReader &opt) {
     if (periodic && theta != 90)
       VofdemInputError(comm, "option -vof_contact_angle%s: face %s is periodic (-grid_periodic): a contact angle needs a wall", facesGiven ? "_faces" : "", FlowBoundary::FaceName(f));
     if (theta != 90 && grid_->Cells()[f / 2] < kLayers)
-      VofdemInputError(comm, "option -vof_contact_angle: face %s needs at least %d cells across the box in %c, got %d", FlowBoundary::FaceName(f), (int)kLayers, "xyz"[f / 2],
+      VofdemInputError(comm, "option -vof_contact_angle: face %s needs at least %d cells across the box in %c, got %d (-vof_contact_angle_faces names the faces that take it)", FlowBoundary::FaceName(f), (int)kLayers, "xyz"[f / 2],
                        (int)grid_->Cells()[f / 2]);
     contactAngle_[f] = theta;
     if (angles.size() == 6 && theta != 90) contactNamed_[f] = true;
@@ -139,38 +139,45 @@ PetscErrorCode Vof::ContactAngleGhosts(Vec local) {
       q[d] = row, q[t1] = i1, q[t2] = i2;
       return (double)PetscRealPart(a[q[2]][q[1]][q[0]]);
     };
-    // Owned cells of the reflected rows: layer m lives in the m-th row from the face.
+    // Owned cells of the reflected rows: layer m lives in the m-th row from the face. The in-plane
+    // direction is found once per position of the face and serves all its layers.
     PetscInt lo[3] = {s[0], s[1], s[2]}, hi[3] = {s[0] + n[0], s[1] + n[1], s[2] + n[2]};
     if (side == 0) hi[d] = std::min(hi[d], kLayers);
     else lo[d] = std::max(lo[d], N[d] - kLayers);
-    for (PetscInt k = lo[2]; k < hi[2]; ++k)
-      for (PetscInt j = lo[1]; j < hi[1]; ++j)
-        for (PetscInt i = lo[0]; i < hi[0]; ++i) {
-          const PetscInt q[3] = {i, j, k}, p1 = q[t1], p2 = q[t2];
-          const PetscInt m    = side == 0 ? q[d] + 1 : N[d] - q[d];
-          // -grad alpha in the wall's plane (physical units), weighted sum over the window.
-          double gx = 0, gy = 0;
-          for (PetscInt b = -kWindow; b <= kWindow; ++b)
-            for (PetscInt c = -kWindow; c <= kWindow; ++c) {
-              const double w = (double)((kWindow + 1 - std::abs(b)) * (kWindow + 1 - std::abs(c)));
-              gx -= w * (A(p1 + b + 1, p2 + c) - A(p1 + b - 1, p2 + c)) / h[t1];
-              gy -= w * (A(p1 + b, p2 + c + 1) - A(p1 + b, p2 + c - 1)) / h[t2];
-            }
-          const double norm = std::hypot(gx, gy);
-          double       value;
+    if (lo[d] >= hi[d]) {  // this rank holds none of them
+      PetscCall(DMDAVecRestoreArray(da_, contactGhost_[f], &g));
+      continue;
+    }
+    for (PetscInt p2 = lo[t2]; p2 < hi[t2]; ++p2)
+      for (PetscInt p1 = lo[t1]; p1 < hi[t1]; ++p1) {
+        // -grad alpha in the wall's plane (physical units), weighted sum over the window.
+        double gx = 0, gy = 0;
+        for (PetscInt c = -kWindow; c <= kWindow; ++c)
+          for (PetscInt b = -kWindow; b <= kWindow; ++b) {
+            const double w = (double)((kWindow + 1 - std::abs(b)) * (kWindow + 1 - std::abs(c)));
+            gx -= w * (A(p1 + b + 1, p2 + c) - A(p1 + b - 1, p2 + c)) / h[t1];
+            gy -= w * (A(p1 + b, p2 + c + 1) - A(p1 + b, p2 + c - 1)) / h[t2];
+          }
+        const double norm = std::hypot(gx, gy);
+        for (PetscInt r = lo[d]; r < hi[d]; ++r) {
+          const PetscInt m = side == 0 ? r + 1 : N[d] - r;
+          double         value;
           if (!(norm > 0)) value = A(p1, p2);
           else {
             // Translation of layer m in cells of t1 and t2 (capped), and the point it comes from.
-            const double S1 = std::clamp(m * h[d] * cot * gx / norm / h[t1], -kMaxShift, kMaxShift);
-            const double S2 = std::clamp(m * h[d] * cot * gy / norm / h[t2], -kMaxShift, kMaxShift);
-            const double x1 = p1 - S1, x2 = p2 - S2;
+            const double   S1 = std::clamp(m * h[d] * cot * gx / norm / h[t1], -kMaxShift, kMaxShift);
+            const double   S2 = std::clamp(m * h[d] * cot * gy / norm / h[t2], -kMaxShift, kMaxShift);
+            const double   x1 = p1 - S1, x2 = p2 - S2;
             const PetscInt i1 = (PetscInt)std::floor(x1), i2 = (PetscInt)std::floor(x2);
             const double   f1 = x1 - i1, f2 = x2 - i2;
             value = (1 - f2) * ((1 - f1) * A(i1, i2) + (f1 > 0 ? f1 * A(i1 + 1, i2) : 0.0)) +
                     (f2 > 0 ? f2 * ((1 - f1) * A(i1, i2 + 1) + (f1 > 0 ? f1 * A(i1 + 1, i2 + 1) : 0.0)) : 0.0);
           }
-          g[k][j][i] = value;
+          PetscInt q[3];
+          q[d] = r, q[t1] = p1, q[t2] = p2;
+          g[q[2]][q[1]][q[0]] = value;
         }
+      }
     PetscCall(DMDAVecRestoreArray(da_, contactGhost_[f], &g));
   }
   PetscCall(DMDAVecRestoreArrayRead(da_, local, &a));
