@@ -13,8 +13,10 @@ static const char help[] = "Sessile drop reaching its set contact angle (issue 8
                            "angle within -angle_tol degrees (default h/R in radians: the angle is imposed through ghost heights one cell away, and\n"
                            "second-order heights carry an error of order h^2/R over that one-cell lever; 1.8 degrees at 20 cells per R0 and 60\n"
                            "degrees (R = 1.6), 3.6 at 120 (R = 0.79)), R within 1 percent, area to 1e-12 relative, bounds to 1e-12, and an\n"
-                           "equilibrium: the capillary number max|u| mu / sigma at the end below -ca_max (default 1e-4). -show_drop (one rank):\n"
-                           "alpha at the end as characters.\n\n";
+                           "equilibrium: the capillary number max|u| mu / sigma at the end below -ca_max (default 1e-4). -dim 3: a quarter of a\n"
+                           "hemisphere in [0, 2]^2 x [0, 1.5] (x = 0 and y = 0 symmetry planes), a sphere fitted to column heights and to the\n"
+                           "radii of quarter discs of each layer's area, V = pi R^3 (2 - 3 cos theta + cos^3 theta) / 12. -show_drop (one rank):\n"
+                           "alpha at the end as characters (2-D: the first y layer).\n\n";
 
 #include "vofdem/core/Runtime.hpp"
 #include "vofdem/core/Simulation.hpp"
@@ -42,34 +44,45 @@ std::string Str(double v) {
   return b;
 }
 
-// The drop at the start: a half-disc of radius 1 on the floor around the axis x = 0 (a cylinder along y).
+// The drop at the start: in 2-D a half-disc of radius 1 on the floor around the axis x = 0 (a cylinder
+// along y); in 3-D a quarter of a hemisphere around the z axis (x = 0 and y = 0 are symmetry planes).
 PetscReal HalfDisc(void *, const PetscReal x[3]) { return std::hypot(x[0], x[2]) - 1; }
+PetscReal QuarterSphere(void *, const PetscReal x[3]) { return std::hypot(x[0], std::hypot(x[1], x[2])) - 1; }
 
-// Column heights Z_i = h_z sum_k alpha and row widths X_k = h_x sum_i alpha (mean over the y layers),
-// and whether each column's bottom cell is full (one crossing), summed over the ranks.
-PetscErrorCode Profiles(vofdem::Simulation &sim, std::vector<double> *Z, std::vector<double> *X, std::vector<double> *bottom) {
+// Column heights Z = h_z sum_k alpha, the bottom cell's alpha of each column (full: one crossing), and
+// per layer k the row width X_k = h_x sum_i alpha (2-D) or the layer's area h_x h_y sum alpha (3-D),
+// summed over the ranks. In 2-D the columns are the means over the y layers.
+struct Profile {
+  std::vector<double> Z, bottom, layer;
+  PetscInt            nx = 0, ny = 0, nz = 0;  // ny = 1 in 2-D
+};
+
+PetscErrorCode Profiles(vofdem::Simulation &sim, int dim, Profile *p) {
   PetscScalar ***a;
   PetscInt       s[3], n[3];
 
   PetscFunctionBeginUser;
   const PetscInt  *N = sim.GetGrid().Cells();
   const PetscReal *h = sim.GetGrid().Spacing();
-  std::vector<double> loc((size_t)(2 * N[0] + N[2]), 0.0), glob(loc.size());
+  p->nx = N[0], p->ny = dim == 2 ? 1 : N[1], p->nz = N[2];
+  const size_t        cols = (size_t)(p->nx * p->ny);
+  std::vector<double> loc(2 * cols + (size_t)N[2], 0.0), glob(loc.size());
   PetscCall(DMDAGetCorners(sim.Interface()->FractionDM(), &s[0], &s[1], &s[2], &n[0], &n[1], &n[2]));
   PetscCall(DMDAVecGetArray(sim.Interface()->FractionDM(), sim.Interface()->Fraction(), &a));
   for (PetscInt k = s[2]; k < s[2] + n[2]; ++k)
     for (PetscInt j = s[1]; j < s[1] + n[1]; ++j)
       for (PetscInt i = s[0]; i < s[0] + n[0]; ++i) {
-        const double v = PetscRealPart(a[k][j][i]) / N[1];
-        loc[(size_t)i] += v * h[2];
-        loc[(size_t)(N[0] + k)] += v * h[0];
-        if (k == 0) loc[(size_t)(N[0] + N[2] + i)] += v;
+        const size_t c = (size_t)(i + (dim == 2 ? 0 : j * N[0]));
+        const double v = dim == 2 ? PetscRealPart(a[k][j][i]) / N[1] : PetscRealPart(a[k][j][i]);
+        loc[c] += v * h[2];
+        loc[cols + (size_t)k] += dim == 2 ? v * h[0] : v * h[0] * h[1];
+        if (k == 0) loc[cols + (size_t)N[2] + c] += v;
       }
   PetscCall(DMDAVecRestoreArray(sim.Interface()->FractionDM(), sim.Interface()->Fraction(), &a));
   PetscCallMPI(MPI_Allreduce(loc.data(), glob.data(), (int)loc.size(), MPI_DOUBLE, MPI_SUM, PETSC_COMM_WORLD));
-  Z->assign(glob.begin(), glob.begin() + N[0]);
-  X->assign(glob.begin() + N[0], glob.begin() + N[0] + N[2]);
-  bottom->assign(glob.begin() + N[0] + N[2], glob.end());
+  p->Z.assign(glob.begin(), glob.begin() + cols);
+  p->layer.assign(glob.begin() + cols, glob.begin() + cols + N[2]);
+  p->bottom.assign(glob.begin() + cols + N[2], glob.end());
   PetscFunctionReturn(0);
 }
 
@@ -78,15 +91,30 @@ struct CapFit {
   int    points = 0;
 };
 
-// Circle x^2 + (z - z_c)^2 = R^2 through the interface points, least squares on x^2 + z^2 = 2 z_c z + c
-// (Kasa's algebraic fit with the centre on the axis), R^2 = c + z_c^2.
-CapFit FitCap(const std::vector<double> &Z, const std::vector<double> &X, const std::vector<double> &bottom, const PetscReal h[3]) {
+// Circle (sphere) r^2 + (z - z_c)^2 = R^2 through the interface points (r the distance from the axis),
+// least squares on r^2 + z^2 = 2 z_c z + c (Kasa's algebraic fit with the centre on the axis), R^2 = c +
+// z_c^2. Points: columns with one crossing (full bottom, also the neighbours') where the surface is
+// flatter than 45 degrees, at their centres; layers where it is steeper, at the row width (2-D) or the
+// radius of a quarter disc of the layer's area (3-D).
+CapFit FitCap(const Profile &P, int dim, const PetscReal h[3]) {
   std::vector<double> px, pz;
-  const size_t        nx = Z.size(), nz = X.size();
-  for (size_t i = 1; i + 1 < nx; ++i)  // columns: one crossing (full bottom), flatter than 45 degrees, inside the box
-    if (bottom[i] > 1 - 1e-9 && bottom[i - 1] > 1 - 1e-9 && bottom[i + 1] > 1 - 1e-9 && std::fabs(Z[i + 1] - Z[i - 1]) < 2 * h[0] && Z[i] < (nz - 1) * h[2])
-      px.push_back((i + 0.5) * h[0]), pz.push_back(Z[i]);
-  for (size_t k = 0; k + 1 < nz; ++k) {  // rows: steeper than 45 degrees (one-sided at the floor)
+  auto full = [&](PetscInt i, PetscInt j) { return P.bottom[(size_t)(i + j * P.nx)] > 1 - 1e-9; };
+  auto Z    = [&](PetscInt i, PetscInt j) { return P.Z[(size_t)(i + j * P.nx)]; };
+  for (PetscInt j = dim == 2 ? 0 : 1; j < (dim == 2 ? 1 : P.ny - 1); ++j)
+    for (PetscInt i = 1; i + 1 < P.nx; ++i) {
+      if (!(full(i, j) && full(i - 1, j) && full(i + 1, j))) continue;
+      double slope = std::fabs(Z(i + 1, j) - Z(i - 1, j)) / (2 * h[0]);
+      if (dim == 3) {
+        if (!(full(i, j - 1) && full(i, j + 1))) continue;
+        slope = std::hypot(slope, (Z(i, j + 1) - Z(i, j - 1)) / (2 * h[1]));
+      }
+      if (slope < 1 && Z(i, j) < (P.nz - 1) * h[2])
+        px.push_back(dim == 2 ? (i + 0.5) * h[0] : std::hypot((i + 0.5) * h[0], (j + 0.5) * h[1])), pz.push_back(Z(i, j));
+    }
+  std::vector<double> X(P.layer);
+  if (dim == 3)
+    for (double &x : X) x = std::sqrt(4 * x / kPi);
+  for (PetscInt k = 0; k + 1 < P.nz; ++k) {  // layers: steeper than 45 degrees (one-sided at the floor)
     const double slope = k == 0 ? X[1] - X[0] : 0.5 * (X[k + 1] - X[k - 1]);
     if (X[k] > h[0] && X[k + 1] > 0 && std::fabs(slope) < h[2]) px.push_back(X[k]), pz.push_back((k + 0.5) * h[2]);
   }
@@ -141,17 +169,25 @@ PetscErrorCode Run() {
   PetscCall(PetscOptionsGetReal(nullptr, nullptr, "-ca_max", &caMax, nullptr));
   PetscCall(PetscOptionsGetReal(nullptr, nullptr, "-angle_tol", &tol, nullptr));
   PetscCall(PetscOptionsGetString(nullptr, nullptr, "-floor", floor, sizeof floor, nullptr));
+  PetscInt dim = 2;
+  PetscCall(PetscOptionsGetInt(nullptr, nullptr, "-dim", &dim, nullptr));
+  if (dim != 2 && dim != 3) VofdemInputError(PETSC_COMM_WORLD, "option -dim: give 2 or 3, got %d", (int)dim);
   if (std::string(floor) != "slip" && std::string(floor) != "wall") VofdemInputError(PETSC_COMM_WORLD, "option -floor: '%s' is neither slip nor wall", floor);
   if (N < 4) VofdemInputError(PETSC_COMM_WORLD, "option -resolution: give at least 4 cells per radius, got %d", (int)N);
   if (!(ratio >= 1)) VofdemInputError(PETSC_COMM_WORLD, "option -ratio: the drop is the heavier phase, give a ratio >= 1, got %g", (double)ratio);
   const double h = 1.0 / N, sigma = 1, rho = 1, mu = oh * std::sqrt(rho * sigma * 1.0);
   PetscCall(Default("-physics", "flow,vof"));
-  PetscCall(Default("-grid_cells", std::to_string((int)(2.5 * N)) + ",2," + std::to_string(2 * N)));
-  PetscCall(Default("-grid_upper", "2.5," + Str(2 * h) + ",2"));
+  if (dim == 2) {
+    PetscCall(Default("-grid_cells", std::to_string((int)(2.5 * N)) + ",2," + std::to_string(2 * N)));
+    PetscCall(Default("-grid_upper", "2.5," + Str(2 * h) + ",2"));
+    PetscCall(Default("-flow_bc_yhi", "slip"));
+  } else {  // a quarter of the drop: x = 0 and y = 0 are symmetry planes
+    PetscCall(Default("-grid_cells", std::to_string(2 * N) + "," + std::to_string(2 * N) + "," + std::to_string((int)(1.5 * N))));
+    PetscCall(Default("-grid_upper", "2,2," + Str(1.5)));
+  }
   PetscCall(Default("-gravity", "0,0,0"));
   PetscCall(Default("-flow_bc_xlo", "slip"));
   PetscCall(Default("-flow_bc_ylo", "slip"));
-  PetscCall(Default("-flow_bc_yhi", "slip"));
   PetscCall(Default("-flow_bc_zlo", floor));
   PetscCall(Default("-flow_density", Str(rho / ratio)));
   PetscCall(Default("-flow_viscosity", Str(mu)));
@@ -170,37 +206,49 @@ PetscErrorCode Run() {
   PetscCall(sim.SetFromOptions());
   PetscCall(sim.SetUp());
   if (!sim.Interface()) VofdemInputError(PETSC_COMM_WORLD, "ex37: needs -physics flow,vof");
-  const PetscInt samples[3] = {32, 1, 32};
-  PetscCall(sim.Interface()->SetFraction(HalfDisc, nullptr, samples));
+  const PetscInt samples2[3] = {32, 1, 32}, samples3[3] = {16, 16, 16};
+  PetscCall(sim.Interface()->SetFraction(dim == 2 ? HalfDisc : QuarterSphere, nullptr, dim == 2 ? samples2 : samples3));
   PetscCall(sim.Interface()->UpdateProperties(*sim.Fluid()));
   const PetscReal *hs = sim.GetGrid().Spacing();
   const double     theta = sim.Interface()->ContactAngle(4), th = theta * kPi / 180;
   vofdem::VofSummary s0, s1;
   PetscCall(sim.Interface()->Summarize(&s0));
-  const double area = s0.volume / (sim.GetGrid().Cells()[1] * hs[1]);  // of the half drop, in the x-z plane
-  const double Rexact = std::sqrt(2 * area / (th - std::sin(th) * std::cos(th)));
+  const PetscInt *cells = sim.GetGrid().Cells();
+  double          Rexact;
+  if (dim == 2) {
+    const double area = s0.volume / (cells[1] * hs[1]);  // of the half drop, in the x-z plane
+    Rexact            = std::sqrt(2 * area / (th - std::sin(th) * std::cos(th)));
+    PetscCall(PetscPrintf(PETSC_COMM_WORLD, "sessile drop: %d x 2 x %d cells (%d per R0), density ratio %g, Oh %g, floor %s, contact angle %g degrees, to t = %g\n", (int)cells[0], (int)cells[2],
+                          (int)N, (double)ratio, (double)oh, floor, theta, (double)finalTime));
+    PetscCall(PetscPrintf(PETSC_COMM_WORLD, "half-drop area %.10f (pi/2 = %.10f); a cap of this area at %g degrees: R = %.6f, base half-width %.6f, height %.6f\n", area, kPi / 2, theta,
+                          Rexact, Rexact * std::sin(th), Rexact * (1 - std::cos(th))));
+  } else {  // a quarter of a spherical cap: V = pi R^3 (2 - 3 cos theta + cos^3 theta) / 12
+    const double c = std::cos(th);
+    Rexact         = std::cbrt(12 * s0.volume / (kPi * (2 - 3 * c + c * c * c)));
+    PetscCall(PetscPrintf(PETSC_COMM_WORLD, "sessile drop (3-D, a quarter): %d x %d x %d cells (%d per R0), density ratio %g, Oh %g, floor %s, contact angle %g degrees, to t = %g\n",
+                          (int)cells[0], (int)cells[1], (int)cells[2], (int)N, (double)ratio, (double)oh, floor, theta, (double)finalTime));
+    PetscCall(PetscPrintf(PETSC_COMM_WORLD, "quarter-drop volume %.10f (pi/6 = %.10f); a cap of this volume at %g degrees: R = %.6f, base radius %.6f, height %.6f\n", s0.volume, kPi / 6,
+                          theta, Rexact, Rexact * std::sin(th), Rexact * (1 - c)));
+  }
   if (tol < 0) tol = 180 / kPi * hs[0] / Rexact;
-  PetscCall(PetscPrintf(PETSC_COMM_WORLD, "sessile drop: %d x 2 x %d cells (%d per R0), density ratio %g, Oh %g, floor %s, contact angle %g degrees, to t = %g\n",
-                        (int)sim.GetGrid().Cells()[0], (int)sim.GetGrid().Cells()[2], (int)N, (double)ratio, (double)oh, floor, theta, (double)finalTime));
-  PetscCall(PetscPrintf(PETSC_COMM_WORLD, "half-drop area %.10f (pi/2 = %.10f); a cap of this area at %g degrees: R = %.6f, base half-width %.6f, height %.6f\n", area, kPi / 2, theta,
-                        Rexact, Rexact * std::sin(th), Rexact * (1 - std::cos(th))));
-  std::vector<double> Z, X, B;
+  Profile P;
   vofdem::FlowSummary fs;
   int                 report = 1;
   while (sim.Time() < finalTime * (1 - 1e-12)) {
     PetscCall(sim.ChooseTimeStep());
     PetscCall(sim.Step());
     if (sim.Time() >= report * finalTime / 6 * (1 - 1e-12) || sim.Time() >= finalTime * (1 - 1e-12)) {
-      PetscCall(Profiles(sim, &Z, &X, &B));
-      const CapFit f = FitCap(Z, X, B, hs);
+      PetscCall(Profiles(sim, (int)dim, &P));
+      const CapFit f = FitCap(P, (int)dim, hs);
       PetscCall(sim.Fluid()->Summarize(&fs));
+      const double base = dim == 2 ? P.layer[0] : std::sqrt(4 * P.layer[0] / kPi);
       PetscCall(PetscPrintf(PETSC_COMM_WORLD, "  t %6.2f  step %6d  Ca %.3e  fitted angle %7.3f  R %.5f  apex height %.5f  base row width %.5f\n", (double)sim.Time(), (int)sim.StepNumber(),
-                            (double)(fs.maxSpeed * mu / sigma), f.theta, f.R, Z[0], X[0]));
+                            (double)(fs.maxSpeed * mu / sigma), f.theta, f.R, P.Z[0], base));
       ++report;
     }
   }
-  PetscCall(Profiles(sim, &Z, &X, &B));
-  const CapFit f = FitCap(Z, X, B, hs);
+  PetscCall(Profiles(sim, (int)dim, &P));
+  const CapFit f = FitCap(P, (int)dim, hs);
   PetscCall(sim.Fluid()->Summarize(&fs));
   PetscCall(sim.Interface()->Summarize(&s1));
   if (show) PetscCall(ShowDrop(sim));
@@ -246,4 +294,8 @@ int main(int argc, char **argv) {
     suffix: ratio1000
     nsize: 2
     args: -ratio 1000 -ohnesorge 0.2 -final_time 5
+  test:
+    suffix: 3d_90
+    nsize: 2
+    args: -dim 3 -resolution 10 -vof_contact_angle 90 -final_time 4
 TEST*/
