@@ -292,8 +292,8 @@ int main(int argc, char **argv) {
     args: -vof_contact_angle 90 -final_time 2
   test:
     suffix: ratio1000
-    nsize: 2
-    args: -ratio 1000 -ohnesorge 0.2 -final_time 5
+    nsize: 1
+    args: -ratio 1000 -ohnesorge 0.2 -final_time 5 -resolution 16
   test:
     suffix: 3d_90
     nsize: 2
