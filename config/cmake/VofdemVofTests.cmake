@@ -42,12 +42,18 @@ add_test(NAME badinput/ex42_particle_dam_break_mode COMMAND ${VOFDEM_PYTHON} ${_
          -- $<TARGET_FILE:ex42_particle_dam_break> -mode coarse)
 add_test(NAME badinput/ex42_particle_dam_break_layer COMMAND ${VOFDEM_PYTHON} ${_expect} --ranks 2 --match "option -layer_height: 0.5 m is outside the tank"
          -- $<TARGET_FILE:ex42_particle_dam_break> -layer_height 0.5)
-set_tests_properties(badinput/ex42_particle_dam_break_mode badinput/ex42_particle_dam_break_layer PROPERTIES LABELS "quick;badinput" PROCESSORS 2 TIMEOUT 120)
+# ex41 (issue 9, wettability): an angle it cannot check (a sphere can float deep in water below 90 deg).
+add_test(NAME badinput/ex41_floating_sphere_angle COMMAND ${VOFDEM_PYTHON} ${_expect} --ranks 2 --match "ex41: option -angle 45\\.?: checked cases are 0, 90 to 180"
+         -- $<TARGET_FILE:ex41_floating_sphere> -angle 45)
+set_tests_properties(badinput/ex42_particle_dam_break_mode badinput/ex42_particle_dam_break_layer badinput/ex41_floating_sphere_angle PROPERTIES LABELS "quick;badinput" PROCESSORS 2 TIMEOUT 120)
 add_test(NAME vof/particle_dam_break_bed_scene
          COMMAND $<TARGET_FILE:vofdem_app> -options_file_yaml ${CMAKE_CURRENT_SOURCE_DIR}/config/scenes/particle-dam-break-bed.yaml -max_steps 20 -monitor_every 20)
 add_test(NAME vof/particle_dam_break_scene
          COMMAND $<TARGET_FILE:vofdem_app> -options_file_yaml ${CMAKE_CURRENT_SOURCE_DIR}/config/scenes/particle-dam-break.yaml -grid_cells 25,12,37 -coupling_kernel unresolved
                  -dem_fill_mode random -dem_fill_count 100 -dem_fill_upper 0.05,0.1,0.02 -dem_output_every 0 -flow_output_every 0 -max_steps 3)
+add_test(NAME vof/sphere_entry_scene
+         COMMAND $<TARGET_FILE:vofdem_app> -options_file_yaml ${CMAKE_CURRENT_SOURCE_DIR}/config/scenes/sphere-entry.yaml -flow_output_every 0 -dem_output_every 0 -max_steps 20 -monitor_every 20)
+set_tests_properties(vof/sphere_entry_scene PROPERTIES LABELS "quick;vof" PROCESSORS 1 TIMEOUT 120 PASS_REGULAR_EXPRESSION "step +20 .*particles 1 .*finished after 20 steps")
 set_tests_properties(vof/particle_dam_break_bed_scene PROPERTIES LABELS "quick;vof" PROCESSORS 1 TIMEOUT 120 PASS_REGULAR_EXPRESSION "particles 3883 .*finished after 20 steps")
 set_tests_properties(vof/particle_dam_break_scene PROPERTIES LABELS "quick;vof" PROCESSORS 1 TIMEOUT 120 PASS_REGULAR_EXPRESSION "coupling: kernel unresolved.*fluid side implicit.*finished after 3 steps")
 

@@ -70,6 +70,8 @@ PetscErrorCode Simulation::SetFromOptions() {
     // F1b: with moving particles, the interface's transport conserves both phases only with d(eps)/dt.
     if (coupling_ && physics_.vof && !coupling_->EpsRate())
       VofdemInputError(comm_, "option -coupling_eps_rate: particles with a free surface (dem,flow,vof) need it on: without d(eps)/dt the volumes of both phases drift as particles move");
+    if (coupling_ && !physics_.vof && coupling_->ContactAngleSet())
+      VofdemInputError(comm_, "option -coupling_contact_angle: the capillary force acts at a free surface; it needs -physics dem,flow,vof");
   }
   PetscFunctionReturn(0);
 }
@@ -115,6 +117,7 @@ PetscErrorCode Simulation::SetUp() {
     if (physics_.vof) {  // particles with a free surface: eps in the interface's transport (F1b), its forces on them (P1)
       vof_->SetFluidFraction(flow_->FluidFraction(), coupling_->FluidFractionChange());
       coupling_->SetInterfaceForces(vof_->SurfaceTensionCoefficient() > 0);
+      PetscCall(coupling_->SetFreeSurface(vof_->Fraction(), vof_->SurfaceTensionCoefficient()));
       PetscCall(coupling_->Average());  // again, with the interface's force field
       VofSummary vs;
       PetscCall(vof_->Summarize(&vs));  // the particles displace their volume of either phase from the start

@@ -51,6 +51,19 @@ PetscErrorCode Coupling::SetFromOptions(MPI_Comm comm) {
     weightedFraction_ = fa[0] == "weighted" ? PETSC_TRUE : PETSC_FALSE;
     PetscCall(opt.Real("-added_mass", "Added-mass coefficient C_vm of f_vm = C_vm rho_f V (Du/Dt - dv/dt) (P1; 0.5 for a sphere), rho_f the kernel-averaged local density", "-",
                        &addedMass_, RealRange::NonNegative()));
+    const char *const        amNames[] = {"velocity", "pressure", "none"};
+    std::vector<std::string> am        = {amNames[(int)addedMassAccel_]};
+    PetscCall(opt.NameList("-added_mass_acceleration",
+                           "The fluid's acceleration Du/Dt in f_vm: velocity (the change over the step of the fluid velocity the particle reads; it includes the fluid the particle pushes itself), "
+                           "pressure ((-grad p + f_st)/rho_f + g from the kernel averages: exact for inviscid fluid with no particle forces in it, e.g. waves on a pool; wrong in a bed, where grad p balances the drag) "
+                           "or none (Du/Dt = 0: fluid at rest)",
+                           {"velocity", "pressure", "none"}, &am));
+    if (am.size() != 1) VofdemInputError(comm, "option -coupling_added_mass_acceleration: give one of velocity, pressure, none");
+    addedMassAccel_ = am[0] == "pressure" ? FluidAcceleration::Pressure : am[0] == "none" ? FluidAcceleration::None : FluidAcceleration::Velocity;
+    PetscCall(opt.Real("-contact_angle", "Contact angle of the liquid (the VOF's phase 1) on every particle, measured through the liquid: the particles feel Princen's capillary force at the free surface (Capillary.hpp, P1; needs -physics dem,flow,vof and a kernel). Not given (the default): no capillary force",
+                       "deg", &contactAngle_, RealRange::Closed(0, 180), &contactAngleSet_));
+    if (contactAngleSet_ && kernel_.shape == kernel::Shape::Unresolved)
+      VofdemInputError(comm, "option -coupling_contact_angle: the capillary force finds the interface through the kernel's marginal; -coupling_kernel unresolved has no kernel (use smooth or truncated)");
     PetscCall(opt.Bool("-eps_rate", "The fluid the particles displace: the projection makes div(eps u) = -d(eps)/dt (F1) and the VOF transport carries eps (F1b)", &epsRate_));
     PetscCall(opt.Real("-min_fluid_fraction", "Floor of the fluid fraction eps (cells below it are counted in the monitor)", "-", &minEps_, RealRange::LeftOpen(0, 1)));
   }
@@ -135,11 +148,14 @@ PetscErrorCode Coupling::View(PetscViewer viewer, PetscReal dt) const {
   const PetscReal *h = flow_->Staggered().Base().Spacing();
   const PetscReal  Vc = h[0] * h[1] * h[2], hmax = std::max(h[0], std::max(h[1], h[2]));
   const PetscReal  rho = flow_->ReferenceDensity(), mu = flow_->ReferenceViscosity();
-  PetscCall(PetscViewerASCIIPrintf(viewer, "coupling: kernel %s, H = max(%g d, %g cells)%s, drag %s%s (fluid side %s), pressure-gradient force %s, self-disturbance correction (K1b) %s, added mass C_vm %g, d(eps)/dt in continuity %s, ghost width %d cells\n",
+  PetscCall(PetscViewerASCIIPrintf(viewer, "coupling: kernel %s, H = max(%g d, %g cells)%s, drag %s%s (fluid side %s), pressure-gradient force %s, self-disturbance correction (K1b) %s, added mass C_vm %g (Du/Dt: %s), d(eps)/dt in continuity %s, ghost width %d cells\n",
                                    kernelName_.c_str(), (double)kappa_, (double)minWidthCells_,
                                    kernel_.shape == kernel::Shape::Truncated ? (", cut at " + std::to_string((double)kernel_.truncation) + " H").c_str() : "",
                                    drag::Name(law_), law_ == drag::Law::Gidaspow ? (" (switch at eps " + std::to_string((double)dragSwitch_) + ")").c_str() : "", implicitFluid_ ? "implicit" : "explicit",
-                                   pressureForce_ ? "on" : "off", selfCorrection_ ? "on" : "off", (double)addedMass_, epsRate_ ? "on" : "off", (int)avg_.GhostWidth()));
+                                   pressureForce_ ? "on" : "off", selfCorrection_ ? "on" : "off", (double)addedMass_, addedMassAccel_ == FluidAcceleration::Pressure ? "pressure balance" : addedMassAccel_ == FluidAcceleration::None ? "none: fluid at rest" : "velocity read", epsRate_ ? "on" : "off", (int)avg_.GhostWidth()));
+  if (contactAngleSet_)
+    PetscCall(PetscViewerASCIIPrintf(viewer, "coupling: capillary force (Princen, flat interface) with contact angle %g deg for all particles, surface tension %g N/m%s\n", (double)contactAngle_, (double)sigma_,
+                                     !freeSurface_ ? ": no free surface, no force" : sigma_ > 0 ? "" : ": the force is zero (-vof_surface_tension 0)"));
   const PetscReal rhoP = dem_->Material().density;
   std::vector<PetscReal> radii = {dem_->MinRadius()};
   if (dem_->MaxRadius() > dem_->MinRadius()) radii.push_back(dem_->MaxRadius());
@@ -180,7 +196,7 @@ PetscErrorCode Coupling::Destroy() {
   if (flow_) flow_->SetFaceRelaxation(nullptr, nullptr);
   if (flow_) flow_->SetFluidFractionChange(nullptr);
   for (int d = 0; d < 3; ++d)
-    for (Vec *v : {&faceEps_[d], &gradP_[d], &accel_[d], &rate_[d], &target_[d]}) PetscCall(VecDestroy(v));
+    for (Vec *v : {&faceEps_[d], &gradP_[d], &accel_[d], &rate_[d], &target_[d], &gradAlpha_[d], &massWork_[d]}) PetscCall(VecDestroy(v));
   for (Vec *v : {&cellLocal_, &rhoLocal_, &volume_, &epsChange_}) PetscCall(VecDestroy(v));
   PetscCall(avg_.Destroy());
   PetscFunctionReturn(0);

@@ -28,20 +28,36 @@ PetscErrorCode Coupling::Project() {
   H_.resize(a.n);
   scratch_.resize(a.n);
   lastForce_.assign(3 * (size_t)a.n, 0);
-  PetscReal localVolume = 0;
+  explicitForce_.assign(implicitFluid_ ? 3 * (size_t)a.n : 0, 0);
+  // The reactions of the explicit particle forces in the implicit fluid side of the drag (f_vm's m_a Du/Dt) and
+  // of the capillary force (either side) are shared by face mass (DepositByFaceMass): by kernel weight on top of
+  // the implicit relaxation, f_vm's share in a light gas threw particles out of ex44's box (60 spheres into water).
+  const bool explicitForces = !implicitFluid_;
+  const bool byMass         = Capillary() || implicitFluid_;
+  PetscReal  localVolume    = 0;
   for (PetscInt p = 0; p < a.n; ++p) {
     H_[p]       = KernelWidth(2 * a.radius[p]);
     scratch_[p] = 4.0 / 3.0 * PETSC_PI * a.radius[p] * a.radius[p] * a.radius[p];
     localVolume += scratch_[p];
     if (dtLast_ > 0)
-      for (int d = 0; d < 3; ++d) lastForce_[3 * p + d] = a.fluidImpulse[3 * p + d] / dtLast_;
-    for (int d = 0; d < 3; ++d) a.fluidImpulse[3 * p + d] = 0;
+      for (int d = 0; d < 3; ++d) {
+        lastForce_[3 * p + d] = (a.fluidImpulse[3 * p + d] + a.fluidExplicitImpulse[3 * p + d]) / dtLast_;
+        if (implicitFluid_) explicitForce_[3 * p + d] = a.fluidExplicitImpulse[3 * p + d] / dtLast_;
+      }
+    for (int d = 0; d < 3; ++d) a.fluidImpulse[3 * p + d] = a.fluidExplicitImpulse[3 * p + d] = 0;
   }
   PetscCall(VecSet(volume_, 0));
   PetscCall(avg_.Deposit(3, a.n, a.x, H_.data(), scratch_.data(), 1, volume_));
   PetscReal sums[4] = {localVolume, 0, 0, 0}, all[4];
+  massForce_.assign(byMass ? 3 * (size_t)a.n : 0, 0);
   for (PetscInt p = 0; p < a.n; ++p)
-    for (int d = 0; d < 3; ++d) sums[1 + d] += lastForce_[3 * p + d];
+    for (int d = 0; d < 3; ++d) {
+      PetscReal cap = 0;
+      if (Capillary() && dtLast_ > 0) cap = a.fluidCapillaryImpulse[3 * p + d] / dtLast_;
+      if (Capillary()) a.fluidCapillaryImpulse[3 * p + d] = 0;
+      if (byMass) massForce_[3 * p + d] = cap + (implicitFluid_ ? explicitForce_[3 * p + d] : 0);
+      sums[1 + d] += lastForce_[3 * p + d] + cap;
+    }
   PetscCallMPI(MPI_Allreduce(sums, all, 4, MPIU_REAL, MPIU_SUM, comm_));
   last_.particleVolume = all[0];
   for (int d = 0; d < 3; ++d) last_.dragSum[d] = all[1 + d];
@@ -117,7 +133,10 @@ PetscErrorCode Coupling::Project() {
       PetscCall(sg.RestoreGlobal(d, flow_->Velocity(d), &U));
       PetscCall(sg.RestoreGlobal(d, target_[d], &W));
       PetscCall(sg.RestoreGlobal(d, rate_[d], &C));
-      continue;
+      if (!explicitForces) {
+        PetscCall(DepositByFaceMass(d, a, eps, rho, &source[d]));
+        continue;
+      }
     }
     PetscCall(avg_.Deposit(d, a.n, a.x, H_.data(), lastForce_.data() + d, 3, accel_[d]));
     PetscCall(sg.GetGlobal(d, accel_[d], &A));
@@ -136,6 +155,7 @@ PetscErrorCode Coupling::Project() {
           A.at(q) = -PetscRealPart(A.at(q)) / (Vc * eF * eF / bF);
         }
     PetscCall(sg.RestoreGlobal(d, accel_[d], &A));
+    if (byMass) PetscCall(DepositByFaceMass(d, a, eps, rho, &source[d]));  // after the conversion above
   }
   PetscCall(sg.RestoreLocal(3, rhoLocal_, &rho));
   PetscCall(sg.RestoreLocal(3, cellLocal_, &eps));
@@ -195,20 +215,24 @@ PetscErrorCode Coupling::Average(PetscReal dt) {
   const PetscInt n = a.n;
   PetscCheck((PetscInt)H_.size() == n, PETSC_COMM_SELF, PETSC_ERR_ORDER, "coupling: Average() needs the particles of the last Project()");
   std::vector<PetscReal> u(3 * n), gp(3 * n), e(n), rf(n), mf(n), st(interfaceForces_ ? 3 * n : 0);
+  std::vector<PetscReal> al(Capillary() ? n : 0), ga(Capillary() ? 3 * n : 0);  // alpha and grad alpha (CouplingCapillary.cpp)
+  if (Capillary()) PetscCall(AlphaGradient());
   for (int d = 0; d < 3; ++d) {
     // One pass per location (the kernel weights are the costly part): the velocity (eps-weighted, wall
     // faces included), the pressure gradient and the interface's face force (surface tension and
     // Marangoni per unit volume, P1) (unweighted, K2; not computed on wall faces).
-    Vec        fields[3], weights[3] = {faceEps_[d], nullptr, nullptr};
-    bool       walls[3] = {true, false, false};
-    PetscReal *outs[3]  = {u.data() + d, nullptr, nullptr};
+    Vec        fields[4], weights[4] = {faceEps_[d], nullptr, nullptr, nullptr};
+    bool       walls[4] = {true, false, false, false};
+    PetscReal *outs[4]  = {u.data() + d, nullptr, nullptr, nullptr};
     PetscInt   nf       = 1;
     fields[0]           = flow_->Velocity(d);
-    if (pressureForce_) fields[nf] = gradP_[d], outs[nf++] = gp.data() + d;
+    const bool needGradP = pressureForce_ || (addedMass_ > 0 && addedMassAccel_ == FluidAcceleration::Pressure);
+    if (needGradP) fields[nf] = gradP_[d], outs[nf++] = gp.data() + d;
     if (interfaceForces_) {
       PetscCall(flow_->FaceForce(d, &fields[nf]));
       outs[nf++] = st.data() + d;
     }
+    if (Capillary()) fields[nf] = gradAlpha_[d], outs[nf++] = ga.data() + d;
     PetscCall(avg_.Average(d, nf, fields, weights, walls, n, a.x, H_.data(), outs, 3));
   }
   // eps at the particle: by default the plain kernel average, so that eps times the (eps-weighted) velocity
@@ -217,11 +241,13 @@ PetscErrorCode Coupling::Average(PetscReal dt) {
   // The local mixture's density and viscosity are eps-weighted (K1; PHYSICS.md F: with a free surface rho
   // and mu follow alpha). One pass for the three.
   {
-    const Vec  fields[3]  = {flow_->FluidFraction(), flow_->Density(), flow_->Viscosity()};
-    const Vec  weights[3] = {weightedFraction_ ? flow_->FluidFraction() : nullptr, flow_->FluidFraction(), flow_->FluidFraction()};
-    const bool walls[3]   = {true, true, true};
-    PetscReal *outs[3]    = {e.data(), rf.data(), mf.data()};
-    PetscCall(avg_.Average(3, 3, fields, weights, walls, n, a.x, H_.data(), outs, 1));
+    // With the capillary force, also the liquid fraction alpha, unweighted: F of Capillary.hpp is the
+    // plain kernel's marginal.
+    const Vec  fields[4]  = {flow_->FluidFraction(), flow_->Density(), flow_->Viscosity(), alpha_};
+    const Vec  weights[4] = {weightedFraction_ ? flow_->FluidFraction() : nullptr, flow_->FluidFraction(), flow_->FluidFraction(), nullptr};
+    const bool walls[4]   = {true, true, true, true};
+    PetscReal *outs[4]    = {e.data(), rf.data(), mf.data(), al.data()};
+    PetscCall(avg_.Average(3, Capillary() ? 4 : 3, fields, weights, walls, n, a.x, H_.data(), outs, 1));
   }
   for (PetscInt p = 0; p < n; ++p) {
     const PetscReal d = 2 * a.radius[p], V = PETSC_PI * d * d * d / 6, rho = rf[p], mu = mf[p];
@@ -245,15 +271,26 @@ PetscErrorCode Coupling::Average(PetscReal dt) {
       }
     }
     a.fluidDrag[p] = drag::Coefficient(law_, d, e[p], std::sqrt(slip2), rho, mu, dragSwitch_);
-    // Added mass (P1): m_a = C_vm rho V, taken implicitly by the kick (Dem.cpp); m_a Du/Dt explicitly,
-    // Du/Dt from the change of the (undisturbed) fluid velocity read over the step. A particle that has
-    // not been read yet (m_a still 0: new, or the set-up) gets no acceleration.
+    // Added mass (P1): m_a = C_vm rho V, taken implicitly by the kick (Dem.cpp); m_a Du/Dt explicitly, Du/Dt
+    // (-coupling_added_mass_acceleration) by default from the change of the (undisturbed) fluid velocity read
+    // over the step; or from the fluid's momentum balance without viscous and particle forces, (-grad p +
+    // f_st)/rho + g, zero in fluid at rest whatever the particle does (the velocity read contains the fluid
+    // the particle pushes: at a free surface, where that is light gas, a floating sphere's bobbing grew until
+    // it left the surface, ex41); or none. A particle that has not been read yet (m_a still 0: new, or the
+    // set-up) gets no acceleration in the velocity form.
     const PetscReal ma = addedMass_ * rho * V, dUdt = dt > 0 && a.fluidAddedMass[p] > 0 ? 1 / dt : 0;
+    const PetscReal *g = flow_->Gravity();
+    // The capillary force (-coupling_contact_angle) the DEM kicks take at the particle's current height above
+    // the surface plane read here (Dem.cpp HalfKick), and sum for the fluid's reaction.
+    if (Capillary()) SurfacePlane(H_[p], al[p], &ga[3 * p], &a.x[3 * p], &a.fluidSurfacePlane[4 * p]);
     for (int c = 0; c < 3; ++c) {
-      const PetscReal fvm = ma * (uf[c] - a.fluidVelocity[3 * p + c]) * dUdt;
+      const PetscReal fvm = ma == 0 || addedMassAccel_ == FluidAcceleration::None ? 0
+                            : addedMassAccel_ == FluidAcceleration::Pressure ? ma * ((-gp[3 * p + c] + (interfaceForces_ ? st[3 * p + c] : 0)) / rho + g[c])
+                                                                             : ma * (uf[c] - a.fluidVelocity[3 * p + c]) * dUdt;
       a.fluidVelocity[3 * p + c] = uf[c];
       a.fluidForce[3 * p + c]    = (pressureForce_ ? -V * gp[3 * p + c] : 0) + (interfaceForces_ ? V * st[3 * p + c] : 0) + fvm;
-      a.fluidImpulse[3 * p + c] += fvm * dt;  // the explicit part of f_vm's impulse over the coming sub-steps (F5)
+      // f_vm's explicit impulse over the coming sub-steps, which the fluid receives with the opposite sign (F5).
+      a.fluidExplicitImpulse[3 * p + c] += fvm * dt;
     }
     a.fluidAddedMass[p] = ma;
   }

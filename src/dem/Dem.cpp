@@ -1,4 +1,5 @@
 #include "vofdem/dem/Dem.hpp"
+#include "vofdem/coupling/Capillary.hpp"
 
 #include "vofdem/core/Options.hpp"
 #include "vofdem/core/Runtime.hpp"
@@ -225,8 +226,15 @@ PetscErrorCode Dem::SetUp(Grid &grid, const PetscReal gravity[3], std::uint64_t 
 // The added mass m_a = C_vm rho_f V (P1, f_vm = m_a (Du/Dt - dv/dt)) is taken implicitly: its -m_a dv/dt
 // part moves to the left, (m + m_a) dv/dt = F + ..., and the coupling puts m_a Du/Dt into the fluid
 // force; the fluid gets -f_vm as well (F5). Without it (m_a = 0) the kick is the one above.
+// With the particles' wettability (sigma > 0) Princen's capillary force F_n n (Capillary.hpp) joins the explicit
+// fluid force, evaluated at the particle's current height s = n.x + c above the surface plane the coupling
+// read once per fluid step: the force is stiff (dF/ds = 2 pi sigma at a floating equilibrium, a 1 mm sphere
+// oscillates with a period of about 10 ms), and held over a fluid step at any one height it feeds that
+// oscillation (held at the start of the step: growth 1 + (omega dt)^2/2 per step; at the mid-step: no damping
+// at all, so that any other lag wins). Taken per kick it is part of the symplectic DEM integration.
+// Its impulse is summed for the fluid's reaction (F5).
 template <bool fluid>
-static void HalfKick(const ParticleArrays &a, PetscReal dt) {
+static void HalfKick(const ParticleArrays &a, PetscReal dt, PetscReal sigma, PetscReal theta) {
   for (PetscInt p = 0; p < a.n; ++p) {
     if (a.clump[p] >= 0) continue;
     const PetscReal ma = fluid ? a.fluidAddedMass[p] : 0, m = a.mass[p] + ma;
@@ -238,24 +246,32 @@ static void HalfKick(const ParticleArrays &a, PetscReal dt) {
       a.omega[3 * p + d] += hI * a.torque[3 * p + d];
     }
     if (fluid) {
+      PetscReal Fn = 0;
+      const PetscReal *plane = &a.fluidSurfacePlane[4 * p];
+      if (sigma > 0 && (plane[0] != 0 || plane[1] != 0 || plane[2] != 0)) {
+        const PetscReal s = plane[0] * a.x[3 * p] + plane[1] * a.x[3 * p + 1] + plane[2] * a.x[3 * p + 2] + plane[3];
+        Fn                = capillary::PrincenForce(a.radius[p], sigma, theta, s);
+      }
       const PetscReal c = h * a.fluidDrag[p];
       for (int d = 0; d < 3; ++d) {
-        const PetscReal v = a.v[3 * p + d] + h * a.fluidForce[3 * p + d];
-        const PetscReal u = a.fluidVelocity[3 * p + d];
-        const PetscReal w = (v + c * u) / (1 + c);
+        const PetscReal fc = Fn * plane[d];
+        const PetscReal v  = a.v[3 * p + d] + h * (a.fluidForce[3 * p + d] + fc);
+        const PetscReal u  = a.fluidVelocity[3 * p + d];
+        const PetscReal w  = (v + c * u) / (1 + c);
         a.fluidImpulse[3 * p + d] += m * (w - v);
         // The implicit part of the f_vm impulse, -m_a (w - v0); its explicit part m_a Du/Dt dt the
         // coupling adds once per fluid step (Coupling::Average).
         if (ma > 0) a.fluidImpulse[3 * p + d] -= ma * (w - v0[d]);
+        if (Fn != 0) a.fluidCapillaryImpulse[3 * p + d] += 0.5 * dt * fc;
         a.v[3 * p + d] = w;
       }
     }
   }
 }
 
-static void HalfKick(const ParticleArrays &a, PetscReal dt, bool fluid) {
-  if (fluid) HalfKick<true>(a, dt);
-  else HalfKick<false>(a, dt);
+static void HalfKick(const ParticleArrays &a, PetscReal dt, bool fluid, PetscReal sigma, PetscReal theta) {
+  if (fluid) HalfKick<true>(a, dt, sigma, theta);
+  else HalfKick<false>(a, dt, sigma, theta);
 }
 
 // Velocity Verlet for translation and rotation. Forces are evaluated with the half-step
@@ -268,7 +284,7 @@ PetscErrorCode Dem::Step(PetscReal dt) {
   record_.on = out_.NeedsContacts(++steps_);
   PetscCall(PetscLogEventBegin(evIntegrate_, 0, 0, 0, 0));
   PetscCall(swarm_.GetArrays(&a));
-  HalfKick(a, dt, fluidCoupled_);
+  HalfKick(a, dt, fluidCoupled_, capSigma_, capTheta_);
   for (PetscInt p = 0; p < a.n; ++p)
     if (a.clump[p] < 0)
       for (int d = 0; d < 3; ++d) a.x[3 * p + d] += dt * a.v[3 * p + d];
@@ -296,7 +312,7 @@ PetscErrorCode Dem::Step(PetscReal dt) {
   PetscCall(PetscLogEventEnd(evForces_, 0, 0, 0, 0));
   PetscCall(PetscLogEventBegin(evIntegrate_, 0, 0, 0, 0));
   PetscCall(swarm_.GetArrays(&a));
-  HalfKick(a, dt, fluidCoupled_);
+  HalfKick(a, dt, fluidCoupled_, capSigma_, capTheta_);
   clumps_.Kick(a, dt, false);
   PetscCall(swarm_.RestoreArrays(&a));
   PetscCall(PetscLogEventEnd(evIntegrate_, 0, 0, 0, 0));

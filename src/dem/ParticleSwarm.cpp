@@ -30,6 +30,9 @@ PetscErrorCode ParticleSwarm::Create(const Grid &grid) {
   PetscCall(DMSwarmRegisterPetscDatatypeField(swarm_, field::fluidForce, 3, PETSC_REAL));
   PetscCall(DMSwarmRegisterPetscDatatypeField(swarm_, field::fluidImpulse, 3, PETSC_REAL));
   PetscCall(DMSwarmRegisterPetscDatatypeField(swarm_, field::fluidAddedMass, 1, PETSC_REAL));
+  PetscCall(DMSwarmRegisterPetscDatatypeField(swarm_, field::fluidExplicitImpulse, 3, PETSC_REAL));
+  PetscCall(DMSwarmRegisterPetscDatatypeField(swarm_, field::fluidCapillaryImpulse, 3, PETSC_REAL));
+  PetscCall(DMSwarmRegisterPetscDatatypeField(swarm_, field::fluidSurfacePlane, 4, PETSC_REAL));
 
   PetscCall(DMSwarmFinalizeFieldRegister(swarm_));
   PetscCall(DMSwarmSetLocalSizes(swarm_, 0, 64));
@@ -62,6 +65,9 @@ PetscErrorCode ParticleSwarm::GetArrays(ParticleArrays *a) const {
   PetscCall(DMSwarmGetField(swarm_, field::fluidForce, nullptr, nullptr, (void **)&a->fluidForce));
   PetscCall(DMSwarmGetField(swarm_, field::fluidImpulse, nullptr, nullptr, (void **)&a->fluidImpulse));
   PetscCall(DMSwarmGetField(swarm_, field::fluidAddedMass, nullptr, nullptr, (void **)&a->fluidAddedMass));
+  PetscCall(DMSwarmGetField(swarm_, field::fluidExplicitImpulse, nullptr, nullptr, (void **)&a->fluidExplicitImpulse));
+  PetscCall(DMSwarmGetField(swarm_, field::fluidCapillaryImpulse, nullptr, nullptr, (void **)&a->fluidCapillaryImpulse));
+  PetscCall(DMSwarmGetField(swarm_, field::fluidSurfacePlane, nullptr, nullptr, (void **)&a->fluidSurfacePlane));
 
   PetscFunctionReturn(0);
 }
@@ -70,6 +76,9 @@ PetscErrorCode ParticleSwarm::RestoreArrays(ParticleArrays *a) const {
   PetscFunctionBeginUser;
 
   PetscCall(DMSwarmRestoreField(swarm_, field::rigid, nullptr, nullptr, (void **)&a->rigid));
+  PetscCall(DMSwarmRestoreField(swarm_, field::fluidSurfacePlane, nullptr, nullptr, (void **)&a->fluidSurfacePlane));
+  PetscCall(DMSwarmRestoreField(swarm_, field::fluidCapillaryImpulse, nullptr, nullptr, (void **)&a->fluidCapillaryImpulse));
+  PetscCall(DMSwarmRestoreField(swarm_, field::fluidExplicitImpulse, nullptr, nullptr, (void **)&a->fluidExplicitImpulse));
   PetscCall(DMSwarmRestoreField(swarm_, field::fluidAddedMass, nullptr, nullptr, (void **)&a->fluidAddedMass));
   PetscCall(DMSwarmRestoreField(swarm_, field::fluidImpulse, nullptr, nullptr, (void **)&a->fluidImpulse));
   PetscCall(DMSwarmRestoreField(swarm_, field::fluidForce, nullptr, nullptr, (void **)&a->fluidForce));
@@ -107,7 +116,7 @@ PetscErrorCode ParticleSwarm::AddLocal(PetscInt n, PetscInt *first) {
     for (int k = 0; k < kRigidWidth; ++k) rigid[kRigidWidth * p + k] = k == 0 ? 1 : 0;
   PetscCall(DMSwarmRestoreField(swarm_, field::rigid, nullptr, nullptr, (void **)&rigid));
   // New particles feel no fluid until the coupling's next update.
-  for (const char *name : {field::fluidDrag, field::fluidVelocity, field::fluidForce, field::fluidImpulse, field::fluidAddedMass}) {
+  for (const char *name : {field::fluidDrag, field::fluidVelocity, field::fluidForce, field::fluidImpulse, field::fluidAddedMass, field::fluidExplicitImpulse, field::fluidCapillaryImpulse, field::fluidSurfacePlane}) {
     PetscReal *v;
     PetscInt   bs;
     PetscCall(DMSwarmGetField(swarm_, name, &bs, nullptr, (void **)&v));

@@ -41,6 +41,7 @@ PetscErrorCode Vof::SetFromOptions(const Grid &grid) {
     PetscBool cc = passes_ > 1 ? PETSC_TRUE : PETSC_FALSE;
     PetscCall(opt.Bool("-centred_columns", "With -vof_normals height: where no 7-cell column is a clean transition, try centred 3-cell columns before Youngs", &cc));
     passes_ = cc ? 2 : 1;
+    PetscCall(opt.Bool("-redistribute", "With particles (eps < 1): hand a cell's alpha above 1 or below 0 after the sweeps to its 26 neighbours in proportion to their room (their liquid), conserving eps alpha V (0: leave it)", &redistribute_));
     PetscCall(opt.Real("-cfl", "Courant number of each split sweep, max |u_d| dt / h_d; at most 1/2 keeps alpha in [0, 1] (Weymouth & Yue 2010)", "-", &cfl_,
                        RealRange::LeftOpen(0, 0.5)));
     PetscCall(ReadContactAngleOptions(opt));
@@ -99,7 +100,7 @@ PetscErrorCode Vof::Destroy() {
   PetscCall(VecDestroy(&kappaLocal_));
   PetscCall(VecDestroy(&alphaLocal_));
   PetscCall(VecDestroy(&alpha_));
-  for (Vec *v : {&epsLocal_, &changeLocal_, &cellScratch_}) PetscCall(VecDestroy(v));
+  for (Vec *v : {&epsLocal_, &changeLocal_, &cellScratch_, &roomG_, &fillG_, &giveG_, &takeG_, &roomL_, &fillL_, &giveL_, &takeL_}) PetscCall(VecDestroy(v));
   PetscCall(DMDestroy(&da_));
   PetscFunctionReturn(0);
 }

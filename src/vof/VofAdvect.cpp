@@ -210,7 +210,9 @@ PetscErrorCode Vof::Sweep(int d, int stage, Vec const uLocal[3], PetscReal dt, P
           v = (PetscRealPart(a.at(q)) * e0 - (flux_[f0 + sf[d]] - flux_[f0]) + (fullAtStart_[cell] ? divQ : 0.0)) / e1;
         }
         g.at(q) = v;
-        worst                = std::max(worst, std::max(-v, v - 1));
+        // With particles the sweeps' intermediate excursions are put right after the last one (Redistribute):
+        // the bound reported is that of the result.
+        if (!eps_ || !redistribute_) worst = std::max(worst, std::max(-v, v - 1));
       }
   boundViolation_ = worst;
   if (eps_) {
@@ -245,6 +247,10 @@ PetscErrorCode Vof::Advect(Vec const u[3], PetscReal dt) {
     PetscCall(Sweep(d, p + 1, uLocal_, dt, &counts[0], &counts[1]));
     PetscCall(FillGhosts());
     if (momentumFlow_) PetscCall(MomentumSweep(d, dt));  // AdvectWithMomentum (VofMomentum.cpp)
+  }
+  if (eps_ && redistribute_) {
+    PetscCall(Redistribute());
+    PetscCall(FillGhosts());
   }
   PetscCallMPI(MPI_Allreduce(counts, total, 2, MPIU_REAL, MPIU_SUM, grid_->Comm()));
   heightShare_ = total[1] > 0 ? total[0] / total[1] : 0;

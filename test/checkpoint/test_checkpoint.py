@@ -19,7 +19,7 @@
                         zero exit on every rank (test/badinput/expect-error); -restart latest skips a
                         corrupted newest file and says so; a write that fails mid-run is one error line
                         and leaves the previous checkpoint valid.
-SCENE is dem, flow, vof, coupled or coupledvof (the coupled ones: bitwise only). Usage: test_checkpoint.py VOFDEM CASE ARGS..."""
+SCENE is dem, flow, vof, coupled, coupledvof or coupledwet (the coupled ones: bitwise only). Usage: test_checkpoint.py VOFDEM CASE ARGS..."""
 import glob
 import os
 import re
@@ -61,6 +61,14 @@ SCENES = {
                    "-flow_pressure_pc boomeramg -flow_pressure_ksp_rtol 1e-12 -vof_density 1000 -vof_viscosity 1e-3 -vof_boxes 0,0,0,0.008,0.008,0.007 "
                    "-dem_radius 5e-4 -dem_density 2500 -dem_fill_count 20 -dem_fill_lower 0,0,0.0075 -dem_fill_upper 0.008,0.008,0.012 -dem_fill_jitter 0.5 "
                    "-coupling_fluid_drag implicit -dt 1e-3 -dt_force -seed 7".split(), 10, (10, 10)),
+    # The same with surface tension and the particles' wettability (-coupling_contact_angle): the surface plane
+    # each particle read (swarm field) must come back too; the spheres reach the surface from step 12 on:
+    # the restart at step 15 is among them.
+    "coupledwet": ("-physics dem,flow,vof -grid_cells 8,8,12 -grid_upper 0.008,0.008,0.012 -gravity 0,0,-9.81 -flow_density 1.2 -flow_viscosity 1.8e-5 "
+                   "-flow_pressure_pc boomeramg -flow_pressure_ksp_rtol 1e-12 -vof_density 1000 -vof_viscosity 1e-3 -vof_boxes 0,0,0,0.008,0.008,0.007 "
+                   "-vof_surface_tension 0.072 -coupling_contact_angle 120 "
+                   "-dem_radius 5e-4 -dem_density 2500 -dem_fill_count 20 -dem_fill_lower 0,0,0.0075 -dem_fill_upper 0.008,0.008,0.012 -dem_fill_jitter 0.5 "
+                   "-coupling_fluid_drag implicit -dt 1e-3 -dt_force -seed 7".split(), 15, (15, 15)),
 }  # (options, N of the bitwise case, (restart step, steps after it) of the rank-count case)
 QUIET = "-monitor_every 1000000 -monitor_timing 0".split()
 
@@ -90,7 +98,8 @@ def case_bitwise(exe, scene, ranks):
     tmp = tempfile.mkdtemp(prefix="vofdem-ckpt-")
     a, b, c = (os.path.join(tmp, x) for x in "abc")
     index, every = {"dem": ("particles.xmf", "-dem_output_every"), "flow": ("flow.xmf", "-flow_output_every"), "vof": ("flow.xmf", "-flow_output_every"),
-                    "coupled": ("particles.xmf", "-dem_output_every"), "coupledvof": ("particles.xmf", "-dem_output_every")}[scene]
+                    "coupled": ("particles.xmf", "-dem_output_every"), "coupledvof": ("particles.xmf", "-dem_output_every"),
+                    "coupledwet": ("particles.xmf", "-dem_output_every")}[scene]
     out = [every, str(n // 4)]  # the ParaView series, whose index a restart must continue
     run(exe, ranks, scene, ["-max_steps", str(2 * n), "-checkpoint_dir", a, "-output_dir", a + "-out"] + out)
     run(exe, ranks, scene, ["-max_steps", str(n), "-checkpoint_dir", b, "-output_dir", b + "-out"] + out)

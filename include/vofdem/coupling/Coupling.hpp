@@ -11,7 +11,9 @@
 //     beds of a light fluid need for stability (CFDEM's implicit coupling likewise); the exchange is then
 //     exact in steady state and lags by a step in between. The projection's coefficient carries the
 //     drag's 1/(1 + dt c) (FlowDragProjection.cpp), so a dense bed builds its pressure drop in a few
-//     steps (without it, over about dt K/(V eps rho) steps: hundreds in ex34);
+//     steps (without it, over about dt K/(V eps rho) steps: hundreds in ex34). The explicit forces (f_vm's
+//     m_a Du/Dt, the capillary force), summed apart in the swarm's fluid_explicit_impulse, reach the fluid as
+//     a face acceleration in both modes;
 //  2. the flow step;
 //  3. averaging (K1, K2) at every particle: fluid velocity, density and viscosity (eps-weighted:
 //     with a free surface the local mixture of the two phases), eps (plain average, or eps-weighted
@@ -19,7 +21,8 @@
 //     (unweighted); the added mass C_vm rho V (P1, taken implicitly by the DEM kick, the fluid's
 //     acceleration Du/Dt explicitly from the change of the averaged velocity); the drag coefficient K of the chosen law (DragLaws.hpp) from the slip, after the
 //     self-disturbance correction (K1b); the pressure-gradient force -V grad p (with the hydrostatic
-//     pressure in p it is the buoyancy, P1);
+//     pressure in p it is the buoyancy, P1); with -coupling_contact_angle and a free surface, Princen's
+//     capillary force from the averaged liquid fraction and its gradient (Capillary.hpp, P1);
 //  4. DEM sub-steps of at most the DEM's stable step, with the drag K (u - v) taken implicitly in
 //     every half kick (Dem.cpp), so particles whose response time m/K is shorter than the fluid step
 //     neither limit nor destabilise it; the drag impulse is summed for the next step's step 1.
@@ -31,6 +34,7 @@
 // drag the fluid was given this step.
 #pragma once
 
+#include "vofdem/coupling/Capillary.hpp"
 #include "vofdem/coupling/DragLaws.hpp"
 #include "vofdem/coupling/KernelAverager.hpp"
 #include "vofdem/dem/Dem.hpp"
@@ -73,6 +77,11 @@ public:
   // With a free surface (-physics dem,flow,vof): the particles also feel the kernel average of the
   // flow's face force (surface tension and Marangoni, P1), which the VOF module fills every step.
   void SetInterfaceForces(bool on) { interfaceForces_ = on; }
+  // The particles' wettability (-coupling_contact_angle, Capillary.hpp): the liquid fraction alpha (the
+  // VOF's phase 1, a global cell vector laid out as the flow's cells, owned by the VOF) and its surface
+  // tension; with the option set, the capillary force joins the fluid force. Call after SetUp.
+  PetscErrorCode SetFreeSurface(Vec alpha, PetscReal sigma);
+  bool           ContactAngleSet() const { return contactAngleSet_ == PETSC_TRUE; }
   // The change of eps made by the last Project() (global cell vector; zero at set-up), which the flow's
   // projection (F1) and the VOF transport (F1b) read; nullptr with -coupling_eps_rate 0.
   Vec FluidFractionChange() const { return epsChange_; }
@@ -83,6 +92,13 @@ public:
 
 private:
   PetscErrorCode FaceFields();  // eps at faces and the pressure gradient at faces, from the flow
+  PetscErrorCode AlphaGradient();  // the liquid fraction's gradient at the faces (CouplingCapillary.cpp)
+  // The local free surface a particle at x with kernel width H sees, from the kernel averages of alpha and of
+  // its gradient, as the plane of field::fluidSurfacePlane (CouplingCapillary.cpp).
+  void           SurfacePlane(PetscReal H, PetscReal alphaAvg, const PetscReal grad[3], const PetscReal x[3], PetscReal plane[4]) const;
+  // The fluid's share -F of the forces in massForce_ on the faces of component d, by face mass, added to accel_[d]
+  // (eps and rho: the cells' local fields; source: the diagnostic sum). CouplingMassDeposit.cpp.
+  PetscErrorCode DepositByFaceMass(int d, const ParticleArrays &a, LocalField &eps, LocalField &rho, PetscReal *source);
 
   Flow          *flow_ = nullptr;
   Dem           *dem_ = nullptr;
@@ -100,8 +116,19 @@ private:
   PetscBool                implicitFluid_ = PETSC_FALSE;  // -coupling_fluid_drag implicit
   PetscBool                weightedFraction_ = PETSC_FALSE;  // -coupling_fraction_average weighted
   PetscReal                addedMass_ = 0.5;             // C_vm (P1)
+  enum class FluidAcceleration { Velocity, Pressure, None };
+  FluidAcceleration        addedMassAccel_ = FluidAcceleration::Velocity;  // -coupling_added_mass_acceleration: Du/Dt in f_vm
   PetscBool                epsRate_ = PETSC_TRUE;         // d(eps)/dt in the continuity equation (F1)
   bool                     interfaceForces_ = false;
+  PetscReal                contactAngle_ = 90;  // deg, -coupling_contact_angle (one angle for all particles)
+  PetscBool                contactAngleSet_ = PETSC_FALSE;
+  bool                     freeSurface_ = false;  // SetFreeSurface was called
+  Vec                      alpha_ = nullptr;    // the VOF's, not owned; nullptr: no capillary force
+  PetscReal                sigma_ = 0;          // N/m, the VOF's surface tension
+  capillary::Marginal      marginal_;           // the kernel's interface marginal F (Capillary.hpp)
+  Vec                      gradAlpha_[3] = {nullptr, nullptr, nullptr};
+  Vec                      massWork_[3]  = {nullptr, nullptr, nullptr};  // DepositByFaceMass's scratch
+  bool Capillary() const { return alpha_ != nullptr; }
   std::vector<PetscReal>   selfTable_;  // H C of Kernel.hpp at Re_H = 10^(-3 + k/20), k = 0..140
   PetscReal                SelfCoefficient(PetscReal H, PetscReal ReH) const;  // C (1/m) by log interpolation
 
@@ -110,6 +137,9 @@ private:
   Vec rate_[3] = {nullptr, nullptr, nullptr}, target_[3] = {nullptr, nullptr, nullptr};  // implicit fluid drag (Flow::SetFaceRelaxation)
   Vec cellLocal_ = nullptr, rhoLocal_ = nullptr, volume_ = nullptr, epsChange_ = nullptr;
   std::vector<PetscReal> H_, scratch_, lastForce_;  // per local particle, between Project and Average
+  std::vector<PetscReal> explicitForce_;             // the explicit forces' part of lastForce_ (implicit fluid drag)
+  std::vector<PetscReal> massForce_, capMass_, capShare_;  // per local particle: the force of the last step whose reaction
+                                                          // is shared by face mass, the averaged face (eps rho), -F/that (DepositByFaceMass)
 
   // state (saved): the length of the last step, whose drag impulse the next step projects
   PetscReal dtLast_ = 0;

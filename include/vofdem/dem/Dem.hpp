@@ -99,6 +99,9 @@ public:
   const ParticleSwarm &Particles() const { return swarm_; }
   // The fluid coupling (Coupling.hpp) sets the swarm's fluid_* fields; the integrator then applies them.
   void               SetFluidCoupled(bool on) { fluidCoupled_ = on; }
+  // The particles' wettability (-coupling_contact_angle): every kick adds Princen's capillary force at the
+  // particle's current height above its fluid_surface_plane (Capillary.hpp), sigma in N/m, theta in rad.
+  void               SetCapillary(PetscReal sigma, PetscReal theta) { capSigma_ = sigma, capTheta_ = theta; }
   PetscReal          Skin() const { return skin_; }  // Verlet skin: particles stray up to half of it outside their rank's box
   const ParticleSources &Sources() const { return sources_; }  // insertion and deletion books
   PetscReal          FillVolumeFraction() const { return fillReached_; }  // reached by the random fill (0: none)
@@ -212,6 +215,7 @@ private:
   std::string savePath_;       // -dem_save_particles: the same CSV at the end of the run
   PetscInt  inserted_     = 0;
   bool      fluidCoupled_ = false;
+  PetscReal capSigma_ = 0, capTheta_ = 0;  // SetCapillary; sigma 0: no capillary force
   MPI_Comm  comm_         = MPI_COMM_NULL;
 };
 

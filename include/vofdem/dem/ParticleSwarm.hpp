@@ -29,6 +29,14 @@ inline constexpr const char *fluidVelocity = "fluid_velocity";  // m/s, the flui
 inline constexpr const char *fluidForce    = "fluid_force";     // N, the other fluid forces (pressure gradient), explicit
 inline constexpr const char *fluidImpulse  = "fluid_impulse";   // N s, drag impulse received since the coupling last read it
 inline constexpr const char *fluidAddedMass = "fluid_added_mass";  // kg, C_vm rho_f V: the added mass taken implicitly (P1 f_vm)
+// N s, the explicit fluid forces' impulse over the coming sub-steps (f_vm's m_a Du/Dt, the capillary force),
+// kept apart from the drag impulse so the fluid receives it with either -coupling_fluid_drag (F5)
+inline constexpr const char *fluidExplicitImpulse = "fluid_explicit_impulse";
+inline constexpr const char *fluidCapillaryImpulse = "fluid_capillary_impulse";  // N s, the capillary force's, likewise (its own deposit)
+// The local free surface seen by the particle's kernel, as a plane: unit normal n (liquid to gas) and offset c,
+// so that the centre's height above it is s = n.x + c (4 reals; n = 0: no interface). The DEM sub-steps
+// evaluate the capillary force at the current s (Dem::SetCapillary).
+inline constexpr const char *fluidSurfacePlane = "fluid_surface_plane";
 }  // namespace field
 // q (4), centre in the body frame (3), clump mass, principal moments (3): see Clumps.hpp.
 inline constexpr int kRigidWidth = 11;
@@ -42,6 +50,7 @@ struct ParticleArrays {
   PetscInt64 *id = nullptr, *clump = nullptr;
   PetscInt   *type = nullptr;
   PetscReal  *fluidDrag = nullptr, *fluidVelocity = nullptr, *fluidForce = nullptr, *fluidImpulse = nullptr, *fluidAddedMass = nullptr;
+  PetscReal  *fluidExplicitImpulse = nullptr, *fluidCapillaryImpulse = nullptr, *fluidSurfacePlane = nullptr;
 };
 
 class ParticleSwarm {

@@ -43,6 +43,7 @@ public:
 
   PetscErrorCode SetFromOptions(const Grid &grid);
   PetscErrorCode SetUp(const PetscReal gravity[3]);
+  const PetscReal *Gravity() const { return gravity_; }  // m/s^2, as given to SetUp
   PetscErrorCode Step(PetscReal t, PetscReal dt);  // advances from t to t + dt
   // Stable time step at the current velocity: convective -flow_cfl, and with explicit viscosity the
   // viscous limit; collective.

@@ -123,6 +123,7 @@ private:
   PetscErrorCode Sweep(int d, int stage, Vec const uLocal[3], PetscReal dt, PetscReal *heightCells, PetscReal *interfaceCells);
   // The PLIC plane of the cell at q in cell units (n, c); false for a full, empty or flat-field cell.
   PetscErrorCode MomentumSweep(int d, PetscReal dt);  // VofMomentum.cpp
+  PetscErrorCode Redistribute();  // alpha back into [0, 1] with particles, conservatively (VofRedistribute.cpp)
   bool Reconstruct(const LocalField &a, const PetscInt q[3], double n[3], double *c, bool *fromHeights) const;
 
   const Grid          *grid_ = nullptr;
@@ -142,6 +143,8 @@ private:
   Vec                  massLocal_[3] = {nullptr, nullptr, nullptr}, velocity_[3] = {nullptr, nullptr, nullptr}, velocityLocal_[3] = {nullptr, nullptr, nullptr};
   Vec                  momentumAcc_[3] = {nullptr, nullptr, nullptr};
   Vec                  alphaPrev_ = nullptr;
+  Vec                  roomG_ = nullptr, fillG_ = nullptr, giveG_ = nullptr, takeG_ = nullptr;  // Redistribute's work, on da_
+  Vec                  roomL_ = nullptr, fillL_ = nullptr, giveL_ = nullptr, takeL_ = nullptr;
 
   // options
   VofNormals  normals_ = VofNormals::Height;
@@ -152,6 +155,7 @@ private:
   PetscReal   sigma_ = 0;                         // surface tension coefficient at T0, N/m
   PetscReal   dsigmadT_ = 0, gradT_[3] = {0, 0, 0};   // Marangoni: dsigma/dT (N/(m K)), prescribed grad T (K/m)
   PetscBool   advect_ = PETSC_TRUE;               // -vof_advect 0: a frozen interface (V3)
+  PetscBool   redistribute_ = PETSC_TRUE;         // -vof_redistribute (with particles)
   VofMomentum momentum_ = VofMomentum::Consistent;  // -vof_momentum
   PetscReal   missingCurvature_ = 0;
   PetscReal   contactAngle_[6] = {90, 90, 90, 90, 90, 90};  // degrees, per box face
