@@ -56,3 +56,14 @@ add_test(NAME vof/sphere_entry_scene
 set_tests_properties(vof/sphere_entry_scene PROPERTIES LABELS "quick;vof" PROCESSORS 1 TIMEOUT 120 PASS_REGULAR_EXPRESSION "step +20 .*particles 1 .*finished after 20 steps")
 set_tests_properties(vof/particle_dam_break_bed_scene PROPERTIES LABELS "quick;vof" PROCESSORS 1 TIMEOUT 120 PASS_REGULAR_EXPRESSION "particles 3883 .*finished after 20 steps")
 set_tests_properties(vof/particle_dam_break_scene PROPERTIES LABELS "quick;vof" PROCESSORS 1 TIMEOUT 120 PASS_REGULAR_EXPRESSION "coupling: kernel unresolved.*fluid side implicit.*finished after 3 steps")
+
+# Static contact angles (-vof_contact_angle, src/vof/VofContactAngle.cpp; ex37 is the sessile drop).
+set(_vof_ca -physics flow,vof -grid_cells 8,8,8 -max_steps 1)
+vofdem_bad_input(vof_contact_angle_range "option -vof_contact_angle: 180 is out of range" ${_vof_ca} -vof_contact_angle 180)
+vofdem_bad_input(vof_contact_angle_zero  "option -vof_contact_angle: 0 is out of range" ${_vof_ca} -vof_contact_angle 60,0,90,90,90,90)
+vofdem_bad_input(vof_contact_angle_count "option -vof_contact_angle: give one angle or six" ${_vof_ca} -vof_contact_angle 60,60)
+vofdem_bad_input(vof_contact_angle_face  "option -vof_contact_angle_faces: unknown name 'floor'" ${_vof_ca} -vof_contact_angle 60 -vof_contact_angle_faces floor)
+vofdem_bad_input(vof_contact_angle_alone "option -vof_contact_angle_faces: needs -vof_contact_angle" ${_vof_ca} -vof_contact_angle_faces zlo)
+vofdem_bad_input(vof_contact_angle_periodic "option -vof_contact_angle_faces: face xlo is periodic" ${_vof_ca} -grid_periodic x -vof_contact_angle 60 -vof_contact_angle_faces xlo)
+vofdem_bad_input(vof_contact_angle_open  "option -vof_contact_angle: face zhi is outflow \\(-flow_bc_zhi\\)" ${_vof_ca} -flow_bc_zhi outflow -vof_contact_angle 60 -vof_contact_angle_faces zlo,zhi)
+vofdem_bad_input(vof_contact_angle_thin  "option -vof_contact_angle: face ylo needs at least 4 cells across the box in y, got 2" -physics flow,vof -grid_cells 8,2,8 -max_steps 1 -vof_contact_angle 60)

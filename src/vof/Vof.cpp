@@ -3,6 +3,7 @@
 
 #include "vofdem/core/Options.hpp"
 #include "vofdem/core/Runtime.hpp"
+#include "vofdem/flow/FlowBoundary.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -43,6 +44,7 @@ PetscErrorCode Vof::SetFromOptions(const Grid &grid) {
     PetscCall(opt.Bool("-redistribute", "With particles (eps < 1): hand a cell's alpha above 1 or below 0 after the sweeps to its 26 neighbours in proportion to their room (their liquid), conserving eps alpha V (0: leave it)", &redistribute_));
     PetscCall(opt.Real("-cfl", "Courant number of each split sweep, max |u_d| dt / h_d; at most 1/2 keeps alpha in [0, 1] (Weymouth & Yue 2010)", "-", &cfl_,
                        RealRange::LeftOpen(0, 0.5)));
+    PetscCall(ReadContactAngleOptions(opt));
   }
   PetscOptionsEnd();
   PetscFunctionReturn(0);
@@ -92,6 +94,8 @@ PetscErrorCode Vof::Destroy() {
     PetscCall(VecDestroy(&momentumAcc_[d]));
   }
   PetscCall(VecDestroy(&alphaPrev_));
+  for (Vec &v : contactGhost_) PetscCall(VecDestroy(&v));
+  PetscCall(VecDestroy(&contactLocal_));
   PetscCall(VecDestroy(&kappa_));
   PetscCall(VecDestroy(&kappaLocal_));
   PetscCall(VecDestroy(&alphaLocal_));
@@ -134,6 +138,7 @@ PetscErrorCode Vof::FillGhosts() {
   PetscFunctionBeginUser;
   PetscCall(DMGlobalToLocal(da_, alpha_, INSERT_VALUES, alphaLocal_));
   PetscCall(MirrorBoundary(alphaLocal_));
+  PetscCall(ContactAngleGhosts(alphaLocal_));  // nothing unless a face's angle is not 90 degrees
   PetscFunctionReturn(0);
 }
 
@@ -270,6 +275,8 @@ PetscErrorCode Vof::View(PetscViewer viewer) const {
   PetscCall(PetscViewerASCIIPrintf(viewer, "vof: PLIC with %s normals, split geometric advection (Weymouth & Yue), sweep Courant number <= %g; phase 1 density %g kg/m^3, viscosity %g Pa s; surface tension %g N/m; %s momentum transport; %d box(es), %d sphere(s) of phase 1 at the start\n",
                                    normals_ == VofNormals::Height ? "height-function" : "Youngs", (double)cfl_, (double)density_, (double)viscosity_, (double)sigma_,
                                    momentum_ == VofMomentum::Consistent ? "mass-consistent" : "advective (non-conservative)", (int)(boxes_.size() / 6), (int)(spheres_.size() / 4)));
+  for (int f = 0; f < 6; ++f)
+    if (contactAngle_[f] != 90) PetscCall(PetscViewerASCIIPrintf(viewer, "vof: contact angle %g degrees (through phase 1) on face %s\n", (double)contactAngle_[f], FlowBoundary::FaceName(f)));
   PetscFunctionReturn(0);
 }
 

@@ -126,11 +126,12 @@ void AdvancedFaces(const StaggeredGrid &sg, const Grid &grid, int c, PetscInt s[
 
 }  // namespace
 
-PetscErrorCode Vof::CheckFlowOptions(const Flow &flow) const {
+PetscErrorCode Vof::CheckFlowOptions(const Flow &flow) {
   PetscFunctionBeginUser;
   if (ConsistentMomentum() && flow.AdvectionLimiter() == Limiter::Central)
     VofdemInputError(grid_->Comm(), "option -flow_advection central: unbounded and unstable with the forward-Euler momentum transport of -vof_momentum consistent; "
                                     "choose a limiter (e.g. vanleer) or -vof_momentum advective");
+  PetscCall(CheckContactAngleFaces(flow));
   PetscFunctionReturn(0);
 }
 

@@ -131,6 +131,10 @@ PetscErrorCode Vof::SurfaceTension(Flow &flow) {
         k[idx]              = HeightCurvature(c, q, h);
       }
   PetscCall(VecRestoreArray(kappa_, &k));
+  // The ghost cells beyond a wall are never written by the scatter: they must read "none", else step 2
+  // averages a curvature of 0 into every wall cell that needs its neighbours' (a 3-D hemisphere on a
+  // 90-degree floor crept flat with it: ex37 -dim 3 -vof_contact_angle 90).
+  PetscCall(VecSet(kappaLocal_, kNone));
   PetscCall(DMGlobalToLocal(da_, kappa_, INSERT_VALUES, kappaLocal_));
   // 2. Cells without one: the mean of their neighbours' (written to kappa_, read from the local copy).
   PetscReal missing = 0;

@@ -24,6 +24,7 @@
 namespace vofdem {
 
 class Flow;
+class OptionReader;
 
 enum class VofNormals { Youngs, Height };
 // How momentum moves with the interface (PHYSICS.md F2; VofMomentum.cpp): Consistent transports
@@ -74,8 +75,9 @@ public:
   // result goes to the flow through SetAdvectionAcceleration, so that its predictor starts from the
   // transported velocity with the face density rho_f^{n+1}.
   PetscErrorCode AdvectWithMomentum(Flow &flow, PetscReal dt);
-  // Refuses flow options the VOF's choices cannot work with (VofMomentum.cpp); after both SetFromOptions.
-  PetscErrorCode CheckFlowOptions(const Flow &flow) const;
+  // Refuses flow options the VOF's choices cannot work with (VofMomentum.cpp) and leaves open faces
+  // (inflow, outflow) at 90 degrees (VofContactAngle.cpp); after both SetFromOptions.
+  PetscErrorCode CheckFlowOptions(const Flow &flow);
   // True when AdvectWithMomentum is to be used this step (-vof_momentum consistent, interface moving).
   bool ConsistentMomentum() const { return momentum_ == VofMomentum::Consistent && advect_; }
   PetscReal Density() const { return density_; }
@@ -103,10 +105,19 @@ public:
   Vec Fraction() const { return alpha_; }  // global vector of FractionDM()
   DM  FractionDM() const { return da_; }
   VofNormals Normals() const { return normals_; }
+  // Static contact angle of box face f (xlo, xhi, ylo, yhi, zlo, zhi), degrees through phase 1
+  // (-vof_contact_angle; 90: the neutral zero-gradient wall). VofContactAngle.cpp.
+  PetscReal ContactAngle(int face) const { return contactAngle_[face]; }
 
 private:
-  PetscErrorCode FillGhosts();  // alpha_ -> alphaLocal_, boundary layers by zero gradient
+  PetscErrorCode FillGhosts();  // alpha_ -> alphaLocal_, boundary layers by zero gradient, then the contact angles
   PetscErrorCode MirrorBoundary(Vec local) const;  // a local vector of da_: boundary layers by zero gradient
+  // Contact angles (VofContactAngle.cpp): the options (inside SetFromOptions' block), the check
+  // against the flow's face types (CheckFlowOptions), and the ghost layers of alpha beyond every
+  // face whose angle is not 90 degrees (FillGhosts, after MirrorBoundary).
+  PetscErrorCode ReadContactAngleOptions(OptionReader &opt);
+  PetscErrorCode CheckContactAngleFaces(const Flow &flow);
+  PetscErrorCode ContactAngleGhosts(Vec local);
   PetscErrorCode FluidFractionGhosts();  // eps_, epsChange_ -> epsLocal_, changeLocal_ (VofFluidFraction.cpp)
   // Sweep `stage` (1-3) of a step along d.
   PetscErrorCode Sweep(int d, int stage, Vec const uLocal[3], PetscReal dt, PetscReal *heightCells, PetscReal *interfaceCells);
@@ -147,6 +158,10 @@ private:
   PetscBool   redistribute_ = PETSC_TRUE;         // -vof_redistribute (with particles)
   VofMomentum momentum_ = VofMomentum::Consistent;  // -vof_momentum
   PetscReal   missingCurvature_ = 0;
+  PetscReal   contactAngle_[6] = {90, 90, 90, 90, 90, 90};  // degrees, per box face
+  bool        contactNamed_[6] = {false, false, false, false, false, false};  // named in -vof_contact_angle_faces
+  Vec         contactGhost_[6] = {nullptr, nullptr, nullptr, nullptr, nullptr, nullptr};  // per angled face: its ghost layers, reflected into the box
+  Vec         contactLocal_ = nullptr;  // scratch local vector of da_
   std::vector<PetscReal> boxes_, spheres_;        // initial shapes of phase 1
   PetscInt    samples_ = 8;                       // per direction and cell, for the initial fraction
   // state
