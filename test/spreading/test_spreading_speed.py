@@ -1,7 +1,7 @@
 #!/usr/bin/python3
 """Seed 001's speed trend in the quick tier: config/scenes/tungsten-spreading-reduced.yaml (settle in the
 hopper, hopper walls removed and the blade started at 6 ms) at a slow and a fast blade, 2 ranks, the
-powder-bed analysis on the final state. Checks:
+powder-bed analysis on the final state; the two runs are a 2 x 1 grid of scripts/sweep. Checks:
   the layer's packing density in the analysed window falls when the speed rises (V = 0.05 -> 0.2 m/s),
   and the slow layer holds particles at all (else 'falls' would compare two empty windows);
   and what would make that comparison wrong for another reason:
@@ -17,14 +17,14 @@ powder-bed analysis on the final state. Checks:
 Usage: test_spreading_speed.py VOFDEM"""
 import csv
 import os
+import subprocess
 import sys
 import tempfile
 
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 sys.path.insert(0, os.path.join(ROOT, "scripts", "lib"))
-from testcheck import check, failures, run_vofdem  # noqa: E402
+from testcheck import check, failures  # noqa: E402
 
-SCENE = os.path.join(ROOT, "config", "scenes", "tungsten-spreading-reduced.yaml")
 FILLED, DELTA, START, WINDOW = 700, 1.0e-4, 0.006, (6.0e-4, 1.2e-3)
 REST = 0.015  # s after the blade's travel, for the grains the blade throws up to land
 
@@ -34,12 +34,17 @@ def main():
     tmp = tempfile.mkdtemp(prefix="vofdem-spread-")
     packing = {}
     os.chdir(ROOT)  # the scene names its STL file relative to the source root
+    # The runs go through scripts/sweep (its quick-tier use: a 2 x 1 grid of the reduced scene), which
+    # also writes the sweep's table and plot.
+    p = subprocess.run([sys.executable, os.path.join(ROOT, "scripts", "sweep"), "--scene", "reduced", "--speeds", "0.05,0.2", "--layers", "%g" % DELTA,
+                        "--out", tmp, "--build-dir", os.path.dirname(exe), "--vofdem-args", "-monitor_every 400"], capture_output=True, text=True, timeout=1200)
+    print(p.stdout, p.stderr)
+    check(p.returncode == 0, "scripts/sweep --scene reduced exits 0")
+    table = list(csv.DictReader(open(os.path.join(tmp, "sweep.csv")))) if os.path.exists(os.path.join(tmp, "sweep.csv")) else []
+    check(len(table) == 2 and os.path.exists(os.path.join(tmp, "sweep.png")), "the sweep's table has both runs (%d rows) and its plot is there" % len(table))
     for V in (0.05, 0.2):
-        out = os.path.join(tmp, "v%g" % V)
-        os.makedirs(out)
+        out = os.path.join(tmp, "V%g_d%g" % (V, DELTA * 1e6))
         final = START + 1.5e-3 / V + REST
-        run_vofdem(exe, 2, ["-options_file_yaml", SCENE, "-dem_wall_blade_velocity", "%g,0,0" % V, "-final_time", "%.6g" % final,
-                            "-output_dir", out, "-dem_save_particles", os.path.join(out, "end.csv"), "-monitor_every", "400"], timeout=600)
         summary = {r["metric"]: float(r["value"]) for r in csv.DictReader(open(os.path.join(out, "analysis", "summary.csv")))}
         packing[V] = summary["packing_density"]
         rows = list(csv.DictReader(open(os.path.join(out, "monitor.csv"))))
