@@ -18,11 +18,15 @@ static const char help[] = "Rotation and lubrication in the CFD-DEM coupling (-p
                            "    between the ranks on 2 ranks, with -coupling_lubrication (and -dem_lubrication_viscosity 0): the force on\n"
                            "    each, 6 pi mu R_eff^2 v_n/h with mu the flow's 0.01 Pa s and R_eff = R/2, within 1e-6 at the first five gaps\n"
                            "    (0.086 to 0.070 mm); again with -physics dem,flow,vof, the box full of the VOF's liquid of 0.01 Pa s and the\n"
-                           "    flow's phase 0 a gas of 1.8e-5 Pa s: the mixture viscosity the particles read, the liquid's. -parts abc: the\n"
-                           "    parts to run. Exits non-zero on failure.\n\n";
+                           "    flow's phase 0 a gas of 1.8e-5 Pa s: the mixture viscosity the particles read, the liquid's.\n"
+                           "(d) The fluid rotation read: a linear shear u_x = 10 (y - y0) s^-1 (and u_y in z, u_z in x) set on the grid, a\n"
+                           "    sphere at rest at its centre: after one step of 1e-4 s it reads curl(u)/2 = -5 rad/s along z (x, y) to 1e-5 (the kernel average of the grid's\n"
+                           "    central differences of a linear field is exact; the sphere's eps bends the shear by 2e-6 in the step).\n"
+                           "-parts abcd: the parts to run. Exits non-zero on failure.\n\n";
 
 #include "vofdem/core/Runtime.hpp"
 #include "vofdem/core/Simulation.hpp"
+#include "vofdem/flow/StaggeredGrid.hpp"
 
 #include <cmath>
 #include <cstdio>
@@ -265,9 +269,65 @@ PetscErrorCode Lubrication(bool vof, PetscInt *failures) {
   PetscFunctionReturn(0);
 }
 
+// (d) The fluid's rotation the particles read: a linear shear u_c = gamma (x_e - x_e0) set on the grid (c = x, y, z,
+// e the next direction), a sphere at rest at x_e0 (no slip there, no drag) with -coupling_rotational_drag, x periodic, one short step (the walls' no-slip reaches
+// sqrt(nu dt) = 0.03 cells in it): the kernel average of the grid's central differences of a linear field is exact
+// (the points are symmetric about the sphere), so Omega_f = curl(u)/2 = (0, 0, -gamma/2) up to what the step changed:
+// the sphere's eps < 1 makes the projection bend the shear around it (2.3e-6 with d = 1 mm; 4e-8 with d = 0.1 mm).
+// Tolerance 1e-5: a wrong component, sign, spacing or factor is off by order 1.
+PetscErrorCode Shear(int c, PetscInt *failures) {
+  const PetscReal gamma = 10, rhoP = 2500, mu = 0.01, dt = 1e-4;
+  const int       e = (c + 1) % 3, f = (c + 2) % 3;  // u_c = gamma (x_e - centre): curl(u)_f = -gamma
+  PetscInt        cells[3] = {8, 8, 8};
+  PetscReal       centre[3] = {4 * kD, 4 * kD, 4 * kD};
+  char            row[256], periodic[2] = {"xyz"[c], 0};
+  PetscFunctionBeginUser;
+  cells[e] = 16, centre[e] = 8 * kD;  // on 2 ranks split along e at the sphere
+  PetscCall(Scene(cells[0], cells[1], cells[2], rhoP, mu, dt));
+  PetscCall(Set("-grid_periodic", periodic));  // the shear is then divergence-free up to the walls: the projection keeps it
+  std::snprintf(row, sizeof row, "%.17g,%.17g,%.17g,0,0,0,0,0,0\n", (double)centre[0], (double)centre[1], (double)centre[2]);
+  PetscCall(Particles(row, "shear"));
+  PetscCall(Set("-coupling_rotational_drag", "1"));
+  vofdem::Simulation sim;
+  PetscCall(SetUp(sim));
+  {
+    const vofdem::StaggeredGrid &sg = sim.Fluid()->Staggered();
+    vofdem::LocalField           U;
+    PetscInt                     st[3], n[3];
+    const PetscReal             *h = sg.Base().Spacing(), *lo = sg.Base().Lower();
+    PetscCall(sg.GetGlobal(c, sim.Fluid()->Velocity(c), &U));
+    sg.Owned(c, st, n);
+    for (PetscInt k = st[2]; k < st[2] + n[2]; ++k)
+      for (PetscInt j = st[1]; j < st[1] + n[1]; ++j)
+        for (PetscInt i = st[0]; i < st[0] + n[0]; ++i) {
+          const PetscInt q[3] = {i, j, k};
+          U.at(q)             = gamma * (lo[e] + (q[e] + 0.5) * h[e] - centre[e]);  // faces of c sit at cell centres along e
+        }
+    PetscCall(sg.RestoreGlobal(c, sim.Fluid()->Velocity(c), &U));
+  }
+  PetscCall(sim.Step());
+  vofdem::ParticleArrays a;
+  PetscReal              loc[4] = {0, 0, 0, 0}, all[4], expect[3] = {0, 0, 0};
+  PetscCall(sim.Particles()->Particles().GetArrays(&a));
+  for (PetscInt p = 0; p < a.n; ++p) loc[0] += a.fluidRotation[3 * p], loc[1] += a.fluidRotation[3 * p + 1], loc[2] += a.fluidRotation[3 * p + 2], loc[3] += 1;
+  PetscCall(sim.Particles()->Particles().RestoreArrays(&a));
+  PetscCallMPI(MPI_Allreduce(loc, all, 4, MPIU_REAL, MPIU_SUM, PETSC_COMM_WORLD));
+  PetscCheck(all[3] == 1, PETSC_COMM_WORLD, PETSC_ERR_PLIB, "the sphere was lost");
+  expect[f] = -gamma / 2;
+  PetscReal err = 0;
+  for (int d = 0; d < 3; ++d) err += (all[d] - expect[d]) * (all[d] - expect[d]);
+  err = std::sqrt(err) / (gamma / 2);
+  const bool ok = err <= 1e-5;
+  *failures += !ok;
+  PetscCall(PetscPrintf(PETSC_COMM_WORLD, "(d) u_%c = %g (%c - %c0): the fluid rotation read (%.7f, %.7f, %.7f) rad/s, curl(u)/2 = (%g, %g, %g): error %.1e (tolerance 1e-05) %s\n", "xyz"[c],
+                        (double)gamma, "xyz"[e], "xyz"[e], (double)all[0], (double)all[1], (double)all[2], (double)expect[0], (double)expect[1], (double)expect[2], (double)err, Verdict(ok)));
+  PetscCall(sim.Destroy());
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode Run() {
   PetscInt failures = 0;
-  char     part[16] = "abc";
+  char     part[16] = "abcd";
   PetscFunctionBeginUser;
   PetscCall(PetscOptionsGetString(nullptr, nullptr, "-parts", part, sizeof part, nullptr));  // read before the scenes clear the options
   const std::string parts = part;
@@ -277,6 +337,7 @@ PetscErrorCode Run() {
   if (parts.find('b') != std::string::npos) PetscCall(SpinDown(true, &failures));
   if (parts.find('c') != std::string::npos) PetscCall(Lubrication(false, &failures));
   if (parts.find('c') != std::string::npos) PetscCall(Lubrication(true, &failures));
+  for (int c = 0; c < 3 && parts.find('d') != std::string::npos; ++c) PetscCall(Shear(c, &failures));
   PetscCall(PetscPrintf(PETSC_COMM_WORLD, "rotation and lubrication in the coupling: %s\n", failures ? "FAIL" : "ok"));
   PetscFunctionReturn(failures ? PETSC_ERR_NOT_CONVERGED : 0);
 }
