@@ -72,6 +72,8 @@ PetscErrorCode Simulation::SetFromOptions() {
       VofdemInputError(comm_, "option -coupling_eps_rate: particles with a free surface (dem,flow,vof) need it on: without d(eps)/dt the volumes of both phases drift as particles move");
     if (coupling_ && !physics_.vof && coupling_->ContactAngleSet())
       VofdemInputError(comm_, "option -coupling_contact_angle: the capillary force acts at a free surface; it needs -physics dem,flow,vof");
+    // P8 with the fluid's viscosity: the flow's single one, or with a free surface each particle's mixture (Coupling.hpp).
+    if (coupling_ && coupling_->Lubrication()) PetscCall(dem_->SetFluidLubrication(physics_.vof ? 0 : flow_->ReferenceViscosity()));
   }
   PetscFunctionReturn(0);
 }

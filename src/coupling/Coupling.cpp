@@ -64,6 +64,18 @@ PetscErrorCode Coupling::SetFromOptions(MPI_Comm comm) {
                        "deg", &contactAngle_, RealRange::Closed(0, 180), &contactAngleSet_));
     if (contactAngleSet_ && kernel_.shape == kernel::Shape::Unresolved)
       VofdemInputError(comm, "option -coupling_contact_angle: the capillary force finds the interface through the kernel's marginal; -coupling_kernel unresolved has no kernel (use smooth or truncated)");
+    std::vector<std::string> lf = {rotation::LiftName(lift_)};
+    PetscCall(opt.NameList("-lift", "Magnus (rotation-induced) lift on the particles (RotationLaws.hpp, P1): none, rubinowkeller ((pi/8) d^3 rho Omega x (v - u), Re_p << 1) or oesterle (Oesterle & Bui Dinh 1998, Re_p < 140); "
+                                    "Omega = omega_p - curl(u)/2. Its reaction joins the fluid's source (F5)",
+                           rotation::LiftNames(), &lf));
+    if (lf.size() != 1) VofdemInputError(comm, "option -coupling_lift: give one of none, rubinowkeller, oesterle");
+    rotation::ParseLift(lf[0], &lift_);
+    PetscCall(opt.Bool("-rotational_drag", "Rotational drag torque -pi mu d^3 (omega_p - curl(u)/2) on the particles (Rubinow & Keller 1961), implicit; its reaction torque on the fluid is neglected", &rotationalDrag_));
+    PetscCall(opt.Bool("-rotational_drag_correction", "With -coupling_rotational_drag: Dennis et al.'s (1980) finite-Re_r factor 1 + (5/(64 pi)) Re_r^0.6 (Loth 2008), Re_r = rho d^2 |Omega|/mu", &rotationalDragDennis_));
+    if (rotationalDragDennis_ && !rotationalDrag_) VofdemInputError(comm, "option -coupling_rotational_drag_correction: needs -coupling_rotational_drag");
+    PetscCall(opt.Bool("-lubrication", "The DEM's lubrication (P8, f = 6 pi mu R_eff^2 v_n/h, gaps of -dem_lubrication_min_gap to -dem_lubrication_max_gap) with the fluid's viscosity mu: "
+                                       "the flow's, or with a free surface the mixture viscosity the particles read (instead of -dem_lubrication_viscosity)",
+                       &lubrication_));
     PetscCall(opt.Bool("-eps_rate", "The fluid the particles displace: the projection makes div(eps u) = -d(eps)/dt (F1) and the VOF transport carries eps (F1b)", &epsRate_));
     PetscCall(opt.Real("-min_fluid_fraction", "Floor of the fluid fraction eps (cells below it are counted in the monitor)", "-", &minEps_, RealRange::LeftOpen(0, 1)));
   }
@@ -112,6 +124,10 @@ PetscErrorCode Coupling::SetUp(Flow &flow, Dem &dem) {
     PetscCall(VecDuplicate(faceEps_[d], &gradP_[d]));
     PetscCall(VecDuplicate(faceEps_[d], &accel_[d]));
     PetscCall(VecSet(accel_[d], 0));
+    if (Rotation()) {
+      for (Vec &g : gradU_[d]) PetscCall(VecDuplicate(faceEps_[d], &g));
+      PetscCall(DMCreateLocalVector(sg.Face(d), &faceLocal_[d]));
+    }
     if (implicitFluid_) {
       PetscCall(VecDuplicate(faceEps_[d], &rate_[d]));
       PetscCall(VecDuplicate(faceEps_[d], &target_[d]));
@@ -153,6 +169,9 @@ PetscErrorCode Coupling::View(PetscViewer viewer, PetscReal dt) const {
                                    kernel_.shape == kernel::Shape::Truncated ? (", cut at " + std::to_string((double)kernel_.truncation) + " H").c_str() : "",
                                    drag::Name(law_), law_ == drag::Law::Gidaspow ? (" (switch at eps " + std::to_string((double)dragSwitch_) + ")").c_str() : "", implicitFluid_ ? "implicit" : "explicit",
                                    pressureForce_ ? "on" : "off", selfCorrection_ ? "on" : "off", (double)addedMass_, addedMassAccel_ == FluidAcceleration::Pressure ? "pressure balance" : addedMassAccel_ == FluidAcceleration::None ? "none: fluid at rest" : "velocity read", epsRate_ ? "on" : "off", (int)avg_.GhostWidth()));
+  PetscCall(PetscViewerASCIIPrintf(viewer, "coupling: Magnus lift %s, rotational drag torque %s, lubrication (P8) with the fluid's viscosity %s\n", rotation::LiftName(lift_),
+                                   !rotationalDrag_ ? "off" : rotationalDragDennis_ ? "on (pi mu d^3, Dennis et al. Re_r factor; no reaction torque on the fluid)" : "on (pi mu d^3; no reaction torque on the fluid)",
+                                   lubrication_ ? "on" : "off"));
   if (contactAngleSet_)
     PetscCall(PetscViewerASCIIPrintf(viewer, "coupling: capillary force (Princen, flat interface) with contact angle %g deg for all particles, surface tension %g N/m%s\n", (double)contactAngle_, (double)sigma_,
                                      !freeSurface_ ? ": no free surface, no force" : sigma_ > 0 ? "" : ": the force is zero (-vof_surface_tension 0)"));
@@ -197,6 +216,8 @@ PetscErrorCode Coupling::Destroy() {
   if (flow_) flow_->SetFluidFractionChange(nullptr);
   for (int d = 0; d < 3; ++d)
     for (Vec *v : {&faceEps_[d], &gradP_[d], &accel_[d], &rate_[d], &target_[d], &gradAlpha_[d], &massWork_[d]}) PetscCall(VecDestroy(v));
+  for (int d = 0; d < 3; ++d)
+    for (Vec *v : {&gradU_[d][0], &gradU_[d][1], &faceLocal_[d]}) PetscCall(VecDestroy(v));
   for (Vec *v : {&cellLocal_, &rhoLocal_, &volume_, &epsChange_}) PetscCall(VecDestroy(v));
   PetscCall(avg_.Destroy());
   PetscFunctionReturn(0);

@@ -217,13 +217,16 @@ PetscErrorCode Coupling::Average(PetscReal dt) {
   std::vector<PetscReal> u(3 * n), gp(3 * n), e(n), rf(n), mf(n), st(interfaceForces_ ? 3 * n : 0);
   std::vector<PetscReal> al(Capillary() ? n : 0), ga(Capillary() ? 3 * n : 0);  // alpha and grad alpha (CouplingCapillary.cpp)
   if (Capillary()) PetscCall(AlphaGradient());
+  // du_d/dx_e at the particles, e = d + 1 + k (mod 3): [3 k n + 3 p + d] (CouplingRotation.cpp)
+  std::vector<PetscReal> gr(Rotation() ? 6 * n : 0);
+  if (Rotation()) PetscCall(VelocityGradients());
   for (int d = 0; d < 3; ++d) {
     // One pass per location (the kernel weights are the costly part): the velocity (eps-weighted, wall
     // faces included), the pressure gradient and the interface's face force (surface tension and
     // Marangoni per unit volume, P1) (unweighted, K2; not computed on wall faces).
-    Vec        fields[4], weights[4] = {faceEps_[d], nullptr, nullptr, nullptr};
-    bool       walls[4] = {true, false, false, false};
-    PetscReal *outs[4]  = {u.data() + d, nullptr, nullptr, nullptr};
+    Vec        fields[6], weights[6] = {faceEps_[d], nullptr, nullptr, nullptr, nullptr, nullptr};
+    bool       walls[6] = {true, false, false, false, false, false};
+    PetscReal *outs[6]  = {u.data() + d, nullptr, nullptr, nullptr, nullptr, nullptr};
     PetscInt   nf       = 1;
     fields[0]           = flow_->Velocity(d);
     const bool needGradP = pressureForce_ || (addedMass_ > 0 && addedMassAccel_ == FluidAcceleration::Pressure);
@@ -233,6 +236,7 @@ PetscErrorCode Coupling::Average(PetscReal dt) {
       outs[nf++] = st.data() + d;
     }
     if (Capillary()) fields[nf] = gradAlpha_[d], outs[nf++] = ga.data() + d;
+    for (int k = 0; Rotation() && k < 2; ++k) fields[nf] = gradU_[d][k], walls[nf] = true, outs[nf++] = gr.data() + 3 * k * n + d;
     PetscCall(avg_.Average(d, nf, fields, weights, walls, n, a.x, H_.data(), outs, 3));
   }
   // eps at the particle: by default the plain kernel average, so that eps times the (eps-weighted) velocity
@@ -283,14 +287,23 @@ PetscErrorCode Coupling::Average(PetscReal dt) {
     // The capillary force (-coupling_contact_angle) the DEM kicks take at the particle's current height above
     // the surface plane read here (Dem.cpp HalfKick), and sum for the fluid's reaction.
     if (Capillary()) SurfacePlane(H_[p], al[p], &ga[3 * p], &a.x[3 * p], &a.fluidSurfacePlane[4 * p]);
+    // Magnus lift (explicit, with the slip the drag sees) and the rotational drag's K_r and Omega_f (RotationLaws.hpp).
+    PetscReal lift[3] = {0, 0, 0};
+    if (Rotation()) {
+      PetscReal gp9[9] = {0, 0, 0, 0, 0, 0, 0, 0, 0};
+      for (int c = 0; c < 3; ++c)
+        for (int k = 0; k < 2; ++k) gp9[3 * c + (c + 1 + k) % 3] = gr[3 * k * n + 3 * p + c];
+      RotationForces(a, p, gp9, uf, rho, mu, lift);
+    }
+    a.fluidViscosity[p] = lubrication_ && !freeSurface_ ? flow_->ReferenceViscosity() : mu;  // P8 (uniform: exactly the flow's)
     for (int c = 0; c < 3; ++c) {
       const PetscReal fvm = ma == 0 || addedMassAccel_ == FluidAcceleration::None ? 0
                             : addedMassAccel_ == FluidAcceleration::Pressure ? ma * ((-gp[3 * p + c] + (interfaceForces_ ? st[3 * p + c] : 0)) / rho + g[c])
                                                                              : ma * (uf[c] - a.fluidVelocity[3 * p + c]) * dUdt;
       a.fluidVelocity[3 * p + c] = uf[c];
-      a.fluidForce[3 * p + c]    = (pressureForce_ ? -V * gp[3 * p + c] : 0) + (interfaceForces_ ? V * st[3 * p + c] : 0) + fvm;
-      // f_vm's explicit impulse over the coming sub-steps, which the fluid receives with the opposite sign (F5).
-      a.fluidExplicitImpulse[3 * p + c] += fvm * dt;
+      a.fluidForce[3 * p + c]    = (pressureForce_ ? -V * gp[3 * p + c] : 0) + (interfaceForces_ ? V * st[3 * p + c] : 0) + fvm + lift[c];
+      // f_vm's and the lift's explicit impulse over the coming sub-steps, which the fluid receives with the opposite sign (F5).
+      a.fluidExplicitImpulse[3 * p + c] += (fvm + lift[c]) * dt;
     }
     a.fluidAddedMass[p] = ma;
   }

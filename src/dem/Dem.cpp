@@ -218,6 +218,19 @@ PetscErrorCode Dem::SetUp(Grid &grid, const PetscReal gravity[3], std::uint64_t 
   PetscFunctionReturn(0);
 }
 
+PetscErrorCode Dem::SetFluidLubrication(PetscReal uniform) {
+  PetscFunctionBeginUser;
+  if (lubrication_.viscosity > 0)
+    VofdemInputError(comm_, "options -coupling_lubrication and -dem_lubrication_viscosity: the lubrication takes either the fluid's viscosity or a fixed one; give one of them");
+  if (!(lubrication_.maxGap > lubrication_.minGap))
+    VofdemInputError(comm_, "option -dem_lubrication_max_gap: %g m must exceed -dem_lubrication_min_gap %g m", (double)lubrication_.maxGap, (double)lubrication_.minGap);
+  fluidLubrication_   = true;
+  lubricationUniform_ = uniform;
+  lubrication_.viscosity = 1;  // the coefficient per unit viscosity: each pair multiplies it by its mu (DemContacts.cpp)
+  halo_.SetCarryViscosity(uniform <= 0);
+  PetscFunctionReturn(0);
+}
+
 // Half a velocity-Verlet kick: v += dt/2 F/m, w += dt/2 T/I with I = 2/5 m R^2 (spheres; clump
 // members move with their clump, Clumps::Kick). Coupled to
 // a fluid (Coupling.hpp), the other fluid forces join F and the drag K (u - v) is taken implicitly,
@@ -246,6 +259,11 @@ static void HalfKick(const ParticleArrays &a, PetscReal dt, PetscReal sigma, Pet
       a.omega[3 * p + d] += hI * a.torque[3 * p + d];
     }
     if (fluid) {
+      // The rotational drag torque -K_r (omega - Omega_f) (-coupling_rotational_drag, RotationLaws.hpp), implicit like
+      // the drag: its time I/K_r = rho_p d^2/60 mu is a third of the translational response time.
+      const PetscReal cr = hI * a.fluidRotationalDrag[p];
+      if (cr > 0)
+        for (int d = 0; d < 3; ++d) a.omega[3 * p + d] = (a.omega[3 * p + d] + cr * a.fluidRotation[3 * p + d]) / (1 + cr);
       PetscReal Fn = 0;
       const PetscReal *plane = &a.fluidSurfacePlane[4 * p];
       if (sigma > 0 && (plane[0] != 0 || plane[1] != 0 || plane[2] != 0)) {
@@ -423,7 +441,11 @@ PetscErrorCode Dem::View(PetscViewer viewer) const {
       PetscCall(PetscViewerASCIIPrintf(viewer, "dem: surface energy of type '%s': %g J/m^2 measured at E = %g Pa, scaled to %g J/m^2 for E' = %g Pa (P9: (E'/E)^(2/5), keeps the energy of separation, not the pull-off force)\n",
                                        typeNames_[t].c_str(), (double)measuredSurfaceEnergy_[t], (double)surfaceEnergyModulus_, (double)types_[t].surfaceEnergy,
                                        (double)types_[t].youngs));
-  if (lubrication_.viscosity > 0)
+  if (fluidLubrication_)
+    PetscCall(PetscViewerASCIIPrintf(viewer, "dem: lubrication (P8): the fluid's viscosity (%s) across gaps from %g m (held below) to %g m\n",
+                                     lubricationUniform_ > 0 ? ("uniform, " + std::to_string((double)lubricationUniform_) + " Pa s").c_str() : "each pair's mean of the viscosities its particles read",
+                                     (double)lubrication_.minGap, (double)lubrication_.maxGap));
+  else if (lubrication_.viscosity > 0)
     PetscCall(PetscViewerASCIIPrintf(viewer, "dem: lubrication (P8): viscosity %g Pa s across gaps from %g m (held below) to %g m\n", (double)lubrication_.viscosity,
                                      (double)lubrication_.minGap, (double)lubrication_.maxGap));
   if (vdw_.hamaker > 0)

@@ -219,7 +219,8 @@ PetscErrorCode Dem::ComputeForcesWith(PetscReal dt) {
     const bool inContact = delta > 0 || (JKR && xi[kJkrBonded] != 0 && delta > hertz::JkrBreakOverlap(wm, r));
     if constexpr (NEAR) {  // across the gap -delta: van der Waals attraction (P7) and lubrication (P8), R* = R
       const PetscReal sgn = face % 2 ? -1 : 1;  // the inward normal is sgn e_d
-      const PetscReal fv = hertz::VdwAttraction(vdw_, -delta, r) + hertz::LubricationCoefficient(lubrication_, -delta, r) * sgn * v[d];
+      const PetscReal mu = fluidLubrication_ ? (lubricationUniform_ > 0 ? lubricationUniform_ : a.fluidViscosity[p]) : 1;  // -coupling_lubrication
+      const PetscReal fv = hertz::VdwAttraction(vdw_, -delta, r) + mu * hertz::LubricationCoefficient(lubrication_, -delta, r) * sgn * v[d];
       a.f[3 * p + d] -= sgn * fv;
       stats_.wallForce[face][d] += sgn * fv;
     }
@@ -247,7 +248,7 @@ PetscErrorCode Dem::ComputeForcesWith(PetscReal dt) {
     else if (!JKR) stats_.elastic += hertz::ElasticEnergy(Sn, delta);
     stats_.maxOverlap = std::max(stats_.maxOverlap, delta / (2 * r));
   }
-  wallSet_.Evaluate<RM, COH, NEAR, LIN, MULTI>(a, {&wall_, linearKn_, &rollingParams_, &vdw_, &table_, sjkrDensity_, &lubrication_, adhesionRange_}, dt,
+  wallSet_.Evaluate<RM, COH, NEAR, LIN, MULTI>(a, {&wall_, linearKn_, &rollingParams_, &vdw_, &table_, sjkrDensity_, &lubrication_, adhesionRange_, fluidLubrication_, lubricationUniform_}, dt,
                                                &stats_.wallContacts, &stats_.elastic, &stats_.maxOverlap);
   const PetscInt n = a.n, ng = halo_.Count();
   hot_.resize(n + ng);
@@ -255,12 +256,14 @@ PetscErrorCode Dem::ComputeForcesWith(PetscReal dt) {
     HotParticle &h = hot_[p];
     for (int e = 0; e < 3; ++e) h.x[e] = a.x[3 * p + e], h.v[e] = a.v[3 * p + e], h.w[e] = a.omega[3 * p + e];
     h.r = a.radius[p], h.m = a.mass[p];
+    h.mu = !fluidLubrication_ ? 1 : lubricationUniform_ > 0 ? lubricationUniform_ : a.fluidViscosity[p];
   }
   for (PetscInt g = 0; g < ng; ++g) {
     HotParticle &h = hot_[n + g];
     // The owner's position: periodic pairs add their image shift to the difference (PeriodicImages.hpp).
     for (int e = 0; e < 3; ++e) h.x[e] = halo_.xOwner[3 * g + e], h.v[e] = halo_.v[3 * g + e], h.w[e] = halo_.omega[3 * g + e];
     h.r = halo_.radius[g], h.m = halo_.mass[g];
+    h.mu = !fluidLubrication_ ? 1 : lubricationUniform_ > 0 ? lubricationUniform_ : halo_.viscosity[g];
   }
   PetscReal *__restrict__ force = a.f, *__restrict__ torque = a.torque;
   const PeriodicImages &images = halo_.Images();
@@ -281,7 +284,9 @@ PetscErrorCode Dem::ComputeForcesWith(PetscReal dt) {
         const PetscReal dist = std::sqrt(dist2), gap = dist - rsum, *va = hot_[ia].v, *vb = hot_[ib].v;
         // f = -(c v_n) n on a, with v_n = (v_a - v_b) . dx / dist > 0 separating: divided by dist once more below.
         const PetscReal vnDist = (va[0] - vb[0]) * dx[0] + (va[1] - vb[1]) * dx[1] + (va[2] - vb[2]) * dx[2];
-        const PetscReal fv = (hertz::VdwAttraction(vdw_, gap, list_.rstar[k]) + hertz::LubricationCoefficient(lubrication_, gap, list_.rstar[k]) * vnDist / dist) / dist;
+        // The lubrication's viscosity: the pair's mean of the fluid's with -coupling_lubrication, else 1 (lubrication_ holds it).
+        const PetscReal mu = 0.5 * (hot_[ia].mu + hot_[ib].mu);
+        const PetscReal fv = (hertz::VdwAttraction(vdw_, gap, list_.rstar[k]) + mu * hertz::LubricationCoefficient(lubrication_, gap, list_.rstar[k]) * vnDist / dist) / dist;
         if (ia < n)
           for (int e = 0; e < 3; ++e) force[3 * ia + e] -= fv * dx[e];
         if (ib < n)

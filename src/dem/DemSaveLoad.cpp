@@ -26,6 +26,7 @@ namespace {
 const char *const kSwarmFields[] = {field::position, field::velocity, field::force,  field::radius,   field::mass,
                                     field::id,       field::reference, field::omega, field::torque, field::type, field::clump, field::rigid,
                                     field::fluidDrag, field::fluidVelocity, field::fluidForce, field::fluidImpulse, field::fluidAddedMass, field::fluidExplicitImpulse, field::fluidCapillaryImpulse, field::fluidSurfacePlane,
+                                    field::fluidRotationalDrag, field::fluidRotation, field::fluidViscosity,
                                     DMSwarmField_pid, DMSwarmField_rank, DMSwarmPICField_cellid};
 constexpr int kNumSwarmFields = sizeof(kSwarmFields) / sizeof(kSwarmFields[0]);
 constexpr int kStatsWidth     = 4 + 18;  // pair and wall contacts, max overlap, elastic energy, wall forces

@@ -110,7 +110,8 @@ PetscErrorCode Halo::Restore(const ParticleArrays &a, const PetscReal *om, const
 }
 
 PetscErrorCode Halo::Exchange(const ParticleArrays &a, const PetscReal *om, bool full) {
-  const int                nq = (int)ranks_.size(), width = full ? kFull : kMoving;
+  const int                base = full ? kFull : kMoving, width = base + (carryViscosity_ ? 1 : 0);
+  const int                nq = (int)ranks_.size();
   std::vector<MPI_Request> req(2 * nq);
 
   PetscFunctionBeginUser;
@@ -127,6 +128,7 @@ PetscErrorCode Halo::Exchange(const ParticleArrays &a, const PetscReal *om, bool
     for (int q = 0; q < nq; ++q) total += recvCount_[q];
     x.resize(3 * total), xOwner.resize(3 * total), image.resize(total), v.resize(3 * total), omega.resize(3 * total), radius.resize(total), mass.resize(total), id.resize(total);
     type.resize(total), clump.resize(total);
+    if (carryViscosity_) viscosity.resize(total);
   }
   size_t sendTotal = 0, recvTotal = 0;
   for (int q = 0; q < nq; ++q) sendTotal += send_[q].size(), recvTotal += recvCount_[q];
@@ -143,6 +145,7 @@ PetscErrorCode Halo::Exchange(const ParticleArrays &a, const PetscReal *om, bool
         s[12] = (PetscReal)a.type[p];  // exact: a small integer
         std::memcpy(&s[13], &a.clump[p], sizeof(PetscInt64));
       }
+      if (carryViscosity_) s[base] = a.fluidViscosity[p];
       s += width;
     }
   for (int q = 0, so = 0, ro = 0; q < nq; ++q) {
@@ -159,6 +162,7 @@ PetscErrorCode Halo::Exchange(const ParticleArrays &a, const PetscReal *om, bool
     const PetscReal *sh = periodic_.Shift(k);
     for (PetscInt i = 0; i < recvCount_[q]; ++i, ++g, r += width) {
       for (int d = 0; d < 3; ++d) xOwner[3 * g + d] = r[d], x[3 * g + d] = r[d] + sh[d], v[3 * g + d] = r[3 + d], omega[3 * g + d] = r[6 + d];
+      if (carryViscosity_) viscosity[g] = r[base];
       if (!full) continue;
       image[g]  = (unsigned char)k;
       radius[g] = r[9];

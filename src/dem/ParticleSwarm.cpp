@@ -33,6 +33,9 @@ PetscErrorCode ParticleSwarm::Create(const Grid &grid) {
   PetscCall(DMSwarmRegisterPetscDatatypeField(swarm_, field::fluidExplicitImpulse, 3, PETSC_REAL));
   PetscCall(DMSwarmRegisterPetscDatatypeField(swarm_, field::fluidCapillaryImpulse, 3, PETSC_REAL));
   PetscCall(DMSwarmRegisterPetscDatatypeField(swarm_, field::fluidSurfacePlane, 4, PETSC_REAL));
+  PetscCall(DMSwarmRegisterPetscDatatypeField(swarm_, field::fluidRotationalDrag, 1, PETSC_REAL));
+  PetscCall(DMSwarmRegisterPetscDatatypeField(swarm_, field::fluidRotation, 3, PETSC_REAL));
+  PetscCall(DMSwarmRegisterPetscDatatypeField(swarm_, field::fluidViscosity, 1, PETSC_REAL));
 
   PetscCall(DMSwarmFinalizeFieldRegister(swarm_));
   PetscCall(DMSwarmSetLocalSizes(swarm_, 0, 64));
@@ -68,6 +71,9 @@ PetscErrorCode ParticleSwarm::GetArrays(ParticleArrays *a) const {
   PetscCall(DMSwarmGetField(swarm_, field::fluidExplicitImpulse, nullptr, nullptr, (void **)&a->fluidExplicitImpulse));
   PetscCall(DMSwarmGetField(swarm_, field::fluidCapillaryImpulse, nullptr, nullptr, (void **)&a->fluidCapillaryImpulse));
   PetscCall(DMSwarmGetField(swarm_, field::fluidSurfacePlane, nullptr, nullptr, (void **)&a->fluidSurfacePlane));
+  PetscCall(DMSwarmGetField(swarm_, field::fluidRotationalDrag, nullptr, nullptr, (void **)&a->fluidRotationalDrag));
+  PetscCall(DMSwarmGetField(swarm_, field::fluidRotation, nullptr, nullptr, (void **)&a->fluidRotation));
+  PetscCall(DMSwarmGetField(swarm_, field::fluidViscosity, nullptr, nullptr, (void **)&a->fluidViscosity));
 
   PetscFunctionReturn(0);
 }
@@ -76,6 +82,9 @@ PetscErrorCode ParticleSwarm::RestoreArrays(ParticleArrays *a) const {
   PetscFunctionBeginUser;
 
   PetscCall(DMSwarmRestoreField(swarm_, field::rigid, nullptr, nullptr, (void **)&a->rigid));
+  PetscCall(DMSwarmRestoreField(swarm_, field::fluidViscosity, nullptr, nullptr, (void **)&a->fluidViscosity));
+  PetscCall(DMSwarmRestoreField(swarm_, field::fluidRotation, nullptr, nullptr, (void **)&a->fluidRotation));
+  PetscCall(DMSwarmRestoreField(swarm_, field::fluidRotationalDrag, nullptr, nullptr, (void **)&a->fluidRotationalDrag));
   PetscCall(DMSwarmRestoreField(swarm_, field::fluidSurfacePlane, nullptr, nullptr, (void **)&a->fluidSurfacePlane));
   PetscCall(DMSwarmRestoreField(swarm_, field::fluidCapillaryImpulse, nullptr, nullptr, (void **)&a->fluidCapillaryImpulse));
   PetscCall(DMSwarmRestoreField(swarm_, field::fluidExplicitImpulse, nullptr, nullptr, (void **)&a->fluidExplicitImpulse));

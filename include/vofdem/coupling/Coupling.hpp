@@ -22,7 +22,12 @@
 //     acceleration Du/Dt explicitly from the change of the averaged velocity); the drag coefficient K of the chosen law (DragLaws.hpp) from the slip, after the
 //     self-disturbance correction (K1b); the pressure-gradient force -V grad p (with the hydrostatic
 //     pressure in p it is the buoyancy, P1); with -coupling_contact_angle and a free surface, Princen's
-//     capillary force from the averaged liquid fraction and its gradient (Capillary.hpp, P1);
+//     capillary force from the averaged liquid fraction and its gradient (Capillary.hpp, P1); with -coupling_lift or
+//     -coupling_rotational_drag, half the fluid's vorticity Omega_f = curl(u)/2 from the kernel averages of the grid's
+//     velocity derivatives (K2, unweighted; CouplingRotation.cpp), the Magnus lift (explicit, its reaction joins F_p
+//     like f_vm's, F5) and the rotational drag torque -K_r (omega - Omega_f) (implicit in the kicks; its reaction
+//     torque on the fluid is neglected, as in CFDEM and Kratos: the fluid gets no couple) (RotationLaws.hpp, P1);
+//     with -coupling_lubrication, the viscosity each particle reads for the DEM's lubrication (P8);
 //  4. DEM sub-steps of at most the DEM's stable step, with the drag K (u - v) taken implicitly in
 //     every half kick (Dem.cpp), so particles whose response time m/K is shorter than the fluid step
 //     neither limit nor destabilise it; the drag impulse is summed for the next step's step 1.
@@ -37,6 +42,7 @@
 #include "vofdem/coupling/Capillary.hpp"
 #include "vofdem/coupling/DragLaws.hpp"
 #include "vofdem/coupling/KernelAverager.hpp"
+#include "vofdem/coupling/RotationLaws.hpp"
 #include "vofdem/dem/Dem.hpp"
 #include "vofdem/flow/Flow.hpp"
 
@@ -86,6 +92,8 @@ public:
   // projection (F1) and the VOF transport (F1b) read; nullptr with -coupling_eps_rate 0.
   Vec FluidFractionChange() const { return epsChange_; }
   bool EpsRate() const { return epsRate_ == PETSC_TRUE; }
+  // -coupling_lubrication: the DEM's lubrication (P8) takes the fluid's viscosity (Dem::SetFluidLubrication).
+  bool Lubrication() const { return lubrication_ == PETSC_TRUE; }
 
   // The kernel width of a particle of diameter d: max(kappa d, -coupling_kernel_min_width cells).
   PetscReal KernelWidth(PetscReal d) const;
@@ -93,6 +101,14 @@ public:
 private:
   PetscErrorCode FaceFields();  // eps at faces and the pressure gradient at faces, from the flow
   PetscErrorCode AlphaGradient();  // the liquid fraction's gradient at the faces (CouplingCapillary.cpp)
+  // The derivatives of each velocity component u_d along the two other directions at its own faces (central
+  // differences, one-sided at walls), into gradU_[d][0..1] for e = d+1, d+2 (mod 3) (CouplingRotation.cpp).
+  PetscErrorCode VelocityGradients();
+  bool           Rotation() const { return lift_ != rotation::Lift::None || rotationalDrag_; }
+  // Per particle p: the rotation forces from the averaged derivatives g (9 per particle, g[3c+e] = du_c/dx_e), the
+  // fluid velocity uf the drag used, rho and mu (CouplingRotation.cpp). Sets fluid_rotation, fluid_rotational_drag;
+  // returns the lift in F.
+  void RotationForces(ParticleArrays &a, PetscInt p, const PetscReal *g, const PetscReal uf[3], PetscReal rho, PetscReal mu, PetscReal F[3]) const;
   // The local free surface a particle at x with kernel width H sees, from the kernel averages of alpha and of
   // its gradient, as the plane of field::fluidSurfacePlane (CouplingCapillary.cpp).
   void           SurfacePlane(PetscReal H, PetscReal alphaAvg, const PetscReal grad[3], const PetscReal x[3], PetscReal plane[4]) const;
@@ -119,6 +135,10 @@ private:
   enum class FluidAcceleration { Velocity, Pressure, None };
   FluidAcceleration        addedMassAccel_ = FluidAcceleration::Velocity;  // -coupling_added_mass_acceleration: Du/Dt in f_vm
   PetscBool                epsRate_ = PETSC_TRUE;         // d(eps)/dt in the continuity equation (F1)
+  rotation::Lift           lift_ = rotation::Lift::None;  // -coupling_lift
+  PetscBool                rotationalDrag_ = PETSC_FALSE;  // -coupling_rotational_drag
+  PetscBool                rotationalDragDennis_ = PETSC_FALSE;  // -coupling_rotational_drag_correction
+  PetscBool                lubrication_ = PETSC_FALSE;     // -coupling_lubrication
   bool                     interfaceForces_ = false;
   PetscReal                contactAngle_ = 90;  // deg, -coupling_contact_angle (one angle for all particles)
   PetscBool                contactAngleSet_ = PETSC_FALSE;
@@ -128,6 +148,8 @@ private:
   capillary::Marginal      marginal_;           // the kernel's interface marginal F (Capillary.hpp)
   Vec                      gradAlpha_[3] = {nullptr, nullptr, nullptr};
   Vec                      massWork_[3]  = {nullptr, nullptr, nullptr};  // DepositByFaceMass's scratch
+  Vec                      gradU_[3][2]  = {{nullptr, nullptr}, {nullptr, nullptr}, {nullptr, nullptr}};  // VelocityGradients
+  Vec                      faceLocal_[3] = {nullptr, nullptr, nullptr};  // ghosted velocity, VelocityGradients' input
   bool Capillary() const { return alpha_ != nullptr; }
   std::vector<PetscReal>   selfTable_;  // H C of Kernel.hpp at Re_H = 10^(-3 + k/20), k = 0..140
   PetscReal                SelfCoefficient(PetscReal H, PetscReal ReH) const;  // C (1/m) by log interpolation

@@ -102,6 +102,10 @@ public:
   // The particles' wettability (-coupling_contact_angle): every kick adds Princen's capillary force at the
   // particle's current height above its fluid_surface_plane (Capillary.hpp), sigma in N/m, theta in rad.
   void               SetCapillary(PetscReal sigma, PetscReal theta) { capSigma_ = sigma, capTheta_ = theta; }
+  // -coupling_lubrication: the lubrication (P8) takes the fluid's viscosity instead of -dem_lubrication_viscosity (an
+  // input error with both). uniform > 0: the flow's single viscosity; 0: each particle's fluid_viscosity (the mixture it
+  // reads with a free surface), the mean of the two for a pair, carried to the ghosts by the halo. Before SetUp.
+  PetscErrorCode     SetFluidLubrication(PetscReal uniform);
   PetscReal          Skin() const { return skin_; }  // Verlet skin: particles stray up to half of it outside their rank's box
   const ParticleSources &Sources() const { return sources_; }  // insertion and deletion books
   PetscReal          FillVolumeFraction() const { return fillReached_; }  // reached by the random fill (0: none)
@@ -144,7 +148,7 @@ private:
   // The state the pair loop reads, local particles then ghosts, packed so that one particle is one
   // or two cache lines and no branch picks between local and ghost arrays; filled per evaluation.
   struct HotParticle {
-    PetscReal x[3], v[3], w[3], r, m;
+    PetscReal x[3], v[3], w[3], r, m, mu;  // mu: the fluid viscosity of -coupling_lubrication (1 otherwise)
   };
   // Rolling parameters of the single-type fast path; the pair table otherwise.
   std::vector<HotParticle> hot_;
@@ -179,6 +183,8 @@ private:
   PetscReal            surfaceEnergyModulus_ = 0;             // Pa; > 0: scale surface energies (P9)
   std::vector<PetscReal> measuredSurfaceEnergy_;              // before that scaling, per type
   hertz::Lubrication   lubrication_{};                        // -dem_lubrication_viscosity > 0 switches it on (P8)
+  bool                 fluidLubrication_ = false;             // SetFluidLubrication: viscosity 1, times each pair's mu
+  PetscReal            lubricationUniform_ = 0;               // Pa s, SetFluidLubrication's uniform value (0: per particle)
   PetscBool            linear_ = PETSC_FALSE;                 // -dem_contact linear (P4) instead of Hertz-Mindlin
   PetscReal            linearKn_ = 1e5, linearKtRatio_ = 1;   // N/m; k_t / k_n
   hertz::RollingParams rollingParams_{};

@@ -26,6 +26,9 @@ public:
   PetscErrorCode Restore(const ParticleArrays &a, const PetscReal *omega, const std::vector<PetscMPIInt> &ranks, const std::vector<int> &images,
                          const std::vector<std::vector<PetscInt>> &send);
   const std::vector<int> &ImageCodes() const { return images_; }
+  // With -coupling_lubrication and a free surface: every exchange also carries the particles' fluid_viscosity (one
+  // more value per ghost), into `viscosity`. Off by default.
+  void SetCarryViscosity(bool on) { carryViscosity_ = on; }
 
   PetscInt Count() const { return (PetscInt)id.size(); }
   // Ranks this rank exchanges ghosts with (one entry per rank and image), and the local indices sent
@@ -39,7 +42,7 @@ public:
   // Ghost state, structure of arrays; vectors hold x,y,z per ghost. x is where the ghost is seen
   // from this rank (its owner's position plus the shift of its image), xOwner the position exactly
   // as its owner holds it, image the code of that shift (PeriodicImages::kNone if none).
-  std::vector<PetscReal>  x, xOwner, v, omega, radius, mass;
+  std::vector<PetscReal>  x, xOwner, v, omega, radius, mass, viscosity;
   std::vector<PetscInt64> id, clump;
   std::vector<PetscInt>   type;
   std::vector<unsigned char> image;
@@ -56,6 +59,7 @@ private:
   std::vector<std::vector<PetscInt>>  send_;
   std::vector<PetscInt>               recvCount_;
   std::vector<PetscReal>              sendBuf_, recvBuf_;
+  bool                                carryViscosity_ = false;
 };
 
 }  // namespace vofdem

@@ -37,6 +37,13 @@ inline constexpr const char *fluidCapillaryImpulse = "fluid_capillary_impulse"; 
 // so that the centre's height above it is s = n.x + c (4 reals; n = 0: no interface). The DEM sub-steps
 // evaluate the capillary force at the current s (Dem::SetCapillary).
 inline constexpr const char *fluidSurfacePlane = "fluid_surface_plane";
+// Rotation (-coupling_rotational_drag): the torque -K_r (omega - Omega_f), taken implicitly by every kick like the
+// drag, with K_r (N m s) and half the fluid's vorticity Omega_f = curl(u)/2 at the particle (rad/s, 3 reals).
+inline constexpr const char *fluidRotationalDrag = "fluid_rotational_drag";
+inline constexpr const char *fluidRotation       = "fluid_rotation";
+// Pa s, the fluid viscosity the particle reads (K1): the lubrication of -coupling_lubrication (P8) between two particles
+// takes the mean of theirs.
+inline constexpr const char *fluidViscosity = "fluid_viscosity";
 }  // namespace field
 // q (4), centre in the body frame (3), clump mass, principal moments (3): see Clumps.hpp.
 inline constexpr int kRigidWidth = 11;
@@ -51,6 +58,7 @@ struct ParticleArrays {
   PetscInt   *type = nullptr;
   PetscReal  *fluidDrag = nullptr, *fluidVelocity = nullptr, *fluidForce = nullptr, *fluidImpulse = nullptr, *fluidAddedMass = nullptr;
   PetscReal  *fluidExplicitImpulse = nullptr, *fluidCapillaryImpulse = nullptr, *fluidSurfacePlane = nullptr;
+  PetscReal  *fluidRotationalDrag = nullptr, *fluidRotation = nullptr, *fluidViscosity = nullptr;
 };
 
 class ParticleSwarm {

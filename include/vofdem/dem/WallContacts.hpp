@@ -125,7 +125,8 @@ void WallSet::Evaluate(const ParticleArrays &a, const WallContactLaw &law, Petsc
         PetscReal uw[3];
         wall::SurfaceVelocity(w.motion, w.pose, pc, uw);
         const PetscReal vn = (v[0] - uw[0]) * n[0] + (v[1] - uw[1]) * n[1] + (v[2] - uw[2]) * n[2];  // > 0 leaving the wall
-        const PetscReal fv = hertz::VdwAttraction(*law.vdw, -delta, r) + hertz::LubricationCoefficient(*law.lubrication, -delta, r) * vn;
+        const PetscReal mu = !law.fluidLubrication ? 1 : law.lubricationUniform > 0 ? law.lubricationUniform : a.fluidViscosity[p];
+        const PetscReal fv = hertz::VdwAttraction(*law.vdw, -delta, r) + mu * hertz::LubricationCoefficient(*law.lubrication, -delta, r) * vn;
         for (int e = 0; e < 3; ++e) a.f[3 * p + e] -= fv * n[e], F[e] = fv * n[e];
         wall::CrossProduct(arm, F, Tw);
         for (int e = 0; e < 3; ++e) load[e] += F[e], load[3 + e] += Tw[e];

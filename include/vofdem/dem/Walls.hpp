@@ -59,6 +59,8 @@ struct WallContactLaw {
   PetscReal                   sjkrDensity = 0;    // J/m^3 (P6)
   const hertz::Lubrication   *lubrication = nullptr;  // P8
   PetscReal                   range = 0;           // m: largest gap at which a force still acts
+  bool                        fluidLubrication = false;  // -coupling_lubrication: times the particle's fluid viscosity
+  PetscReal                   lubricationUniform = 0;    // Pa s: that viscosity when uniform (0: fluid_viscosity)
 };
 
 class WallSet {
