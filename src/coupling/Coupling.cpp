@@ -79,6 +79,7 @@ PetscErrorCode Coupling::SetFromOptions(MPI_Comm comm) {
     PetscCall(opt.Real("-min_fluid_fraction", "Floor of the fluid fraction eps (cells below it are counted in the monitor)", "-", &minEps_, RealRange::LeftOpen(0, 1)));
   }
   PetscOptionsEnd();
+  PetscCall(Smoothing::ReadSolverOptions(comm));
   PetscFunctionReturn(0);
 }
 

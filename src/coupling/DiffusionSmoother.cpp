@@ -18,6 +18,21 @@ PetscErrorCode DiffusionSmoother::SetUp(const StaggeredGrid &sg, const PetscReal
   PetscFunctionReturn(0);
 }
 
+PetscErrorCode DiffusionSmoother::CreateSolver(MPI_Comm comm, const char *prefix, KSP *ksp) {
+  PC pc;
+
+  PetscFunctionBeginUser;
+  PetscCall(KSPCreate(comm, ksp));
+  PetscCall(KSPSetType(*ksp, KSPCG));  // the matrix is symmetric positive definite
+  PetscCall(KSPGetPC(*ksp, &pc));
+  PetscCall(PCSetType(pc, PCJACOBI));
+  PetscCall(KSPSetTolerances(*ksp, 1e-10, 1e-50, PETSC_DEFAULT, 200));
+  PetscCall(KSPSetInitialGuessNonzero(*ksp, PETSC_TRUE));  // the field before the step
+  PetscCall(KSPSetOptionsPrefix(*ksp, prefix));
+  PetscCall(KSPSetFromOptions(*ksp));
+  PetscFunctionReturn(0);
+}
+
 // The matrix I - tau sum_e D_e d^2/dx_e^2 of location loc (tau D_e = b_e^2/(2 steps)): the usual 7-point
 // Laplacian with the flux through a wall left out (zero flux: the row's diagonal loses that neighbour's
 // share, so rows and columns still sum to one). The wall faces of a velocity component are not part of
@@ -84,16 +99,8 @@ PetscErrorCode DiffusionSmoother::Assemble(int loc) {
   PetscCall(MatAssemblyBegin(A_[loc], MAT_FINAL_ASSEMBLY));
   PetscCall(MatAssemblyEnd(A_[loc], MAT_FINAL_ASSEMBLY));
   PetscCallMPI(MPI_Allreduce(&count, &count_[loc], 1, MPIU_REAL, MPIU_SUM, grid.Comm()));
-  PetscCall(KSPCreate(grid.Comm(), &ksp_[loc]));
+  PetscCall(CreateSolver(grid.Comm(), prefix_.c_str(), &ksp_[loc]));
   PetscCall(KSPSetOperators(ksp_[loc], A_[loc], A_[loc]));
-  PetscCall(KSPSetType(ksp_[loc], KSPCG));
-  PC pc;
-  PetscCall(KSPGetPC(ksp_[loc], &pc));
-  PetscCall(PCSetType(pc, PCJACOBI));
-  PetscCall(KSPSetTolerances(ksp_[loc], 1e-10, 1e-50, PETSC_DEFAULT, 200));
-  PetscCall(KSPSetInitialGuessNonzero(ksp_[loc], PETSC_TRUE));  // the field before the step
-  PetscCall(KSPSetOptionsPrefix(ksp_[loc], prefix_.c_str()));
-  PetscCall(KSPSetFromOptions(ksp_[loc]));
   PetscCall(KSPSetUp(ksp_[loc]));
   PetscFunctionReturn(0);
 }
@@ -168,27 +175,51 @@ PetscErrorCode DiffusionSmoother::Deposit(int loc, PetscInt n, const PetscReal *
 }
 
 // Weighted: the tent average of g = S(c f)/S(c) with the weight S(c), i.e. P S(c f)/P S(c) (P the tent
-// interpolation), the diffusion counterpart of sum_J c_J f_J w_J/sum_J c_J w_J. A weight shared by several
-// fields is smoothed once.
+// interpolation), the diffusion counterpart of sum_J c_J f_J w_J/sum_J c_J w_J. The solves are the cost, so
+// none is done twice or in vain: S(v) of a vector v is computed once per call (a weight shared by several
+// fields, or eps both as a field and as the weight), and a constant field or weight needs none (S keeps a
+// constant, and S(c f)/S(c) = f for constant f, = S(f) for constant c).
 PetscErrorCode DiffusionSmoother::Average(int loc, PetscInt nf, const Vec field[], const Vec weight[], const bool walls[], PetscInt n, const PetscReal *x, const PetscReal *H,
                                           PetscReal *const out[], PetscInt stride) {
   PetscFunctionBeginUser;
   PetscCall(Work(loc, 2 * nf));
-  std::vector<Vec> g(nf), c(nf, nullptr);
+  std::vector<Vec>  g(nf), c(nf, nullptr), source, smoothed;
+  size_t            next = 0;
+  auto constant = [](Vec v, bool *is) -> PetscErrorCode {
+    PetscReal lo, hi;
+    PetscFunctionBeginUser;
+    PetscCall(VecMin(v, nullptr, &lo));
+    PetscCall(VecMax(v, nullptr, &hi));
+    *is = lo == hi;
+    PetscFunctionReturn(0);
+  };
+  auto smooth = [&](Vec v, Vec *s) -> PetscErrorCode {  // S(v), once per vector
+    PetscFunctionBeginUser;
+    for (size_t k = 0; k < source.size(); ++k)
+      if (source[k] == v) {
+        *s = smoothed[k];
+        PetscFunctionReturn(0);
+      }
+    *s = work_[loc][next++];
+    PetscCall(VecCopy(v, *s));
+    PetscCall(Smooth(loc, *s));
+    source.push_back(v), smoothed.push_back(*s);
+    PetscFunctionReturn(0);
+  };
   for (PetscInt f = 0; f < nf; ++f) {
-    g[f] = work_[loc][f];
-    if (!weight[f]) {
-      PetscCall(VecCopy(field[f], g[f]));
-      PetscCall(Smooth(loc, g[f]));
+    bool fieldConstant = false, weightConstant = true;
+    PetscCall(constant(field[f], &fieldConstant));
+    if (weight[f] && !fieldConstant) PetscCall(constant(weight[f], &weightConstant));
+    if (fieldConstant) {
+      g[f] = field[f];
       continue;
     }
-    for (PetscInt e = 0; e < f && !c[f]; ++e)
-      if (weight[e] == weight[f]) c[f] = c[e];
-    if (!c[f]) {
-      c[f] = work_[loc][nf + f];
-      PetscCall(VecCopy(weight[f], c[f]));
-      PetscCall(Smooth(loc, c[f]));
+    if (weightConstant) {
+      PetscCall(smooth(field[f], &g[f]));
+      continue;
     }
+    PetscCall(smooth(weight[f], &c[f]));
+    g[f] = work_[loc][next++];
     PetscCall(VecPointwiseMult(g[f], field[f], weight[f]));
     PetscCall(Smooth(loc, g[f]));
     PetscScalar       *ga;

@@ -57,6 +57,15 @@ PetscErrorCode Smoothing::SetUp(const StaggeredGrid &sg, const KernelAverager::S
   PetscFunctionReturn(0);
 }
 
+PetscErrorCode Smoothing::ReadSolverOptions(MPI_Comm comm) {
+  KSP ksp;
+
+  PetscFunctionBeginUser;
+  PetscCall(DiffusionSmoother::CreateSolver(comm, "coupling_smoothing_", &ksp));
+  PetscCall(KSPDestroy(&ksp));
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode Smoothing::Destroy() {
   PetscFunctionBeginUser;
   PetscCall(smoother_.Destroy());

@@ -49,6 +49,9 @@ public:
   PetscErrorCode Average(int loc, PetscInt nf, const Vec field[], const Vec weight[], const bool walls[], PetscInt n, const PetscReal *x, const PetscReal *H, PetscReal *const out[],
                          PetscInt stride);
 
+  // The smoothing's solver (CG + Jacobi, rtol 1e-10, the prefix's options applied).
+  static PetscErrorCode CreateSolver(MPI_Comm comm, const char *prefix, KSP *ksp);
+
   // v <- S v on location loc (global vector of the location), total kept. Collective.
   PetscErrorCode Smooth(int loc, Vec v);
 

@@ -24,6 +24,9 @@ public:
   static PetscReal KernelVariance(kernel::Shape s, PetscReal H, PetscReal truncation);
   static const char *Name(Method m) { return m == Method::Kernel ? "kernel" : m == Method::Diffusion ? "diffusion" : "auto"; }
 
+  // Reads the diffusion's KSP options (-coupling_smoothing_ksp_*, -coupling_smoothing_pc_*) with a
+  // throw-away solver, so that they count as used at the options check before the particles are made.
+  static PetscErrorCode ReadSolverOptions(MPI_Comm comm);
   // H: the width of the widest particle's kernel (the diffusion uses one width for all); particles:
   // the number of particles (auto's estimate). Collective.
   PetscErrorCode SetUp(const StaggeredGrid &sg, const KernelAverager::Settings &k, const Settings &s, PetscReal H, PetscReal margin, PetscInt particles);
