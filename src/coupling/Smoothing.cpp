@@ -51,6 +51,8 @@ PetscErrorCode Smoothing::SetUp(const StaggeredGrid &sg, const KernelAverager::S
     const PetscReal support = 4.0 / 3.0 * PETSC_PI * rc * rc * rc / (h[0] * h[1] * h[2]);
     const PetscReal points  = (PetscReal)grid.Cells()[0] * grid.Cells()[1] * grid.Cells()[2];
     diffusion_ = particles * support > s.crossover * points;
+    PetscCall(PetscInfo(nullptr, "coupling: kernel points over all particles / cells = %g (crossover %g): %s\n", (double)(particles * support / points), (double)s.crossover,
+                        diffusion_ ? "diffusion" : "kernel"));
   }
   if (diffusion_) PetscCall(smoother_.SetUp(sg, spread_, s.steps, margin, "coupling_smoothing_"));
   else PetscCall(kernel_.SetUp(sg, k, kernel::Cutoff(k.shape, H, k.truncation), margin));

@@ -18,7 +18,7 @@ public:
     PetscInt steps  = 2;    // backward-Euler pseudo-steps of the diffusion
     // auto: diffusion when the kernel's points summed over the particles exceed this many times the
     // grid's points (scripts/smoothing-cost measured the cross-over)
-    PetscReal crossover = 10;
+    PetscReal crossover = 150;
   };
   // The kernel's variance per direction (m^2) for width H (quadrature of kernel::Weight; 8 H^2/13 smooth).
   static PetscReal KernelVariance(kernel::Shape s, PetscReal H, PetscReal truncation);
