@@ -16,7 +16,7 @@
 // Conservation (K3): the operator's columns sum to one (its Laplacian's columns sum to zero with zero
 // flux), so the total changes only by the sum of the KSP residual; after each solve that defect is
 // added back spread evenly over the location's points (not the wall faces), so totals hold to
-// round-off whatever the solver tolerance (-<prefix>ksp_rtol, default 1e-10).
+// round-off whatever the solver tolerance (-<prefix>ksp_rtol, default 1e-6).
 // The matrix lives on a DMDA of stencil width 1 with the location's ownership ranges (so its vectors
 // are the location's), assembled once; the KSP (by default Chebyshev with the known spectrum bounds and a
 // fixed iteration count from the tolerance: no reductions, and S a fixed symmetric polynomial of the matrix,
@@ -51,7 +51,7 @@ public:
   PetscErrorCode Average(int loc, PetscInt nf, const Vec field[], const Vec weight[], const bool walls[], PetscInt n, const PetscReal *x, const PetscReal *H, PetscReal *const out[],
                          PetscInt stride);
 
-  // The smoothing's solver (Chebyshev, no preconditioner, no norms, rtol 1e-10; the prefix's options applied).
+  // The smoothing's solver (Chebyshev, no preconditioner, no norms, rtol 1e-6; the prefix's options applied).
   static PetscErrorCode CreateSolver(MPI_Comm comm, const char *prefix, KSP *ksp);
 
   // v <- S v on location loc (global vector of the location), total kept. Collective.
