@@ -29,6 +29,14 @@ PetscErrorCode Coupling::SetFromOptions(MPI_Comm comm) {
     if (minWidthCells_ < 0.5)
       VofdemInputError(comm, "option -coupling_kernel_min_width: %g cells is below the cell size; a kernel narrower than half a cell cannot be sampled by the grid (use 0.5 or more, or -coupling_kernel unresolved)",
                        (double)minWidthCells_);
+    std::vector<std::string> sm = {Smoothing::Name(smoothing_.method)};
+    PetscCall(opt.NameList("-smoothing", "How the kernel is applied (PHYSICS.md K1, K3): kernel (sums over each particle's support), diffusion (tent deposit, then backward-Euler diffusion in pseudo-time to the kernel's variance, Sun & Xiao 2015; KSP options -coupling_smoothing_ksp_*) or auto (the one measured faster for the grid and particle count, Smoothing.cpp)",
+                           {"kernel", "diffusion", "auto"}, &sm));
+    if (sm.size() != 1) VofdemInputError(comm, "option -coupling_smoothing: give one of kernel, diffusion, auto");
+    smoothing_.method = sm[0] == "kernel" ? Smoothing::Method::Kernel : sm[0] == "diffusion" ? Smoothing::Method::Diffusion : Smoothing::Method::Auto;
+    PetscCall(opt.Int("-smoothing_steps", "Backward-Euler pseudo-steps of the diffusion smoothing (the variance added is the same for any number; more steps: closer to a Gaussian)", &smoothing_.steps, 1));
+    PetscCall(opt.Real("-smoothing_crossover", "auto: diffusion when the kernel's points summed over all particles exceed this many times the grid's cells (scripts/smoothing-cost)", "-", &smoothing_.crossover,
+                       RealRange::Positive()));
     PetscCall(opt.Real("-kernel_truncation", "Cut-off of the truncated Gaussian kernel, in widths H (seed 000: 1.2-1.5)", "-", &kernel_.truncation, RealRange::LeftOpen(0, 10)));
     std::vector<std::string> d = {drag::Name(law_)};
     PetscCall(opt.NameList("-drag", "Drag law (DragLaws.hpp): gidaspow, difelice, wenyu, ergun, schillernaumann, kochhill, beetstra", drag::Names(), &d));
@@ -62,6 +70,9 @@ PetscErrorCode Coupling::SetFromOptions(MPI_Comm comm) {
     addedMassAccel_ = am[0] == "pressure" ? FluidAcceleration::Pressure : am[0] == "none" ? FluidAcceleration::None : FluidAcceleration::Velocity;
     PetscCall(opt.Real("-contact_angle", "Contact angle of the liquid (the VOF's phase 1) on every particle, measured through the liquid: the particles feel Princen's capillary force at the free surface (Capillary.hpp, P1; needs -physics dem,flow,vof and a kernel). Not given (the default): no capillary force",
                        "deg", &contactAngle_, RealRange::Closed(0, 180), &contactAngleSet_));
+    if (contactAngleSet_ && smoothing_.method == Smoothing::Method::Diffusion)
+      VofdemInputError(comm, "option -coupling_contact_angle: the capillary force finds the interface through the kernel's marginal; use -coupling_smoothing kernel or auto");
+    if (contactAngleSet_) smoothing_.method = Smoothing::Method::Kernel;  // auto: the capillary force needs the kernel
     if (contactAngleSet_ && kernel_.shape == kernel::Shape::Unresolved)
       VofdemInputError(comm, "option -coupling_contact_angle: the capillary force finds the interface through the kernel's marginal; -coupling_kernel unresolved has no kernel (use smooth or truncated)");
     std::vector<std::string> lf = {rotation::LiftName(lift_)};
@@ -80,6 +91,7 @@ PetscErrorCode Coupling::SetFromOptions(MPI_Comm comm) {
     PetscCall(opt.Real("-min_fluid_fraction", "Floor of the fluid fraction eps (cells below it are counted in the monitor)", "-", &minEps_, RealRange::LeftOpen(0, 1)));
   }
   PetscOptionsEnd();
+  PetscCall(Smoothing::ReadSolverOptions(comm));
   PetscFunctionReturn(0);
 }
 
@@ -112,11 +124,17 @@ PetscErrorCode Coupling::SetUp(Flow &flow, Dem &dem) {
   PetscCall(CheckParticleSize(g, 2 * dem.MaxRadius()));  // the sizes the fill and the sources made
   const PetscReal Hmax = KernelWidth(2 * dem.MaxRadius());
   // A particle strays up to half the Verlet skin outside its rank's box between migrations.
-  PetscCall(avg_.SetUp(sg, kernel_, kernel::Cutoff(kernel_.shape, Hmax, kernel_.truncation), 0.5 * dem.Skin() + 1e-12));
+  PetscInt particles;
+  PetscCall(dem.Particles().GlobalCount(&particles));
+  PetscCall(avg_.SetUp(sg, kernel_, smoothing_, Hmax, 0.5 * dem.Skin() + 1e-12, particles));
   {
     std::vector<double> re(141);
-    for (int k = 0; k <= 140; ++k) re[k] = std::pow(10.0, -3 + k / 20.0);
-    const std::vector<double> t = kernel::SelfDisturbanceTable(kernel_.shape, kernel_.truncation, re);
+    // Diffusion: about a Gaussian of the kernel's standard deviation sigma = r H (K1b's coefficient of a
+    // Gaussian of width sigma, as a function of Re_H: sigma C(r Re_H)/r, with the table at width 1).
+    const double r = avg_.Diffusion() ? std::sqrt(Smoothing::KernelVariance(kernel_.shape, 1.0, kernel_.truncation)) : 1.0;
+    for (int k = 0; k <= 140; ++k) re[k] = r * std::pow(10.0, -3 + k / 20.0);
+    std::vector<double> t = avg_.Diffusion() ? kernel::SelfDisturbanceTable(kernel::Shape::Truncated, 6.0, re) : kernel::SelfDisturbanceTable(kernel_.shape, kernel_.truncation, re);
+    for (double &v : t) v /= r;
     selfTable_.assign(t.begin(), t.end());
   }
   for (int d = 0; d < 3; ++d) {
@@ -172,6 +190,9 @@ PetscErrorCode Coupling::View(PetscViewer viewer, PetscReal dt) const {
   PetscCall(PetscViewerASCIIPrintf(viewer, "coupling: Magnus lift %s, rotational drag torque %s, lubrication (P8) with the fluid's viscosity %s\n", rotation::LiftName(lift_),
                                    !rotationalDrag_ ? "off" : rotationalDragDennis_ ? "on (pi mu d^3, Dennis et al. Re_r factor; no reaction torque on the fluid)" : "on (pi mu d^3; no reaction torque on the fluid)",
                                    lubrication_ ? "on" : "off"));
+  if (avg_.Diffusion())
+    PetscCall(PetscViewerASCIIPrintf(viewer, "coupling: diffusion smoothing (-coupling_smoothing %s): tent deposit, %d backward-Euler pseudo-steps to the kernel's variance (spread b = %.3g cells in x)\n",
+                                     Smoothing::Name(smoothing_.method), (int)smoothing_.steps, (double)(std::sqrt(avg_.Spread(0)) / h[0])));
   if (contactAngleSet_)
     PetscCall(PetscViewerASCIIPrintf(viewer, "coupling: capillary force (Princen, flat interface) with contact angle %g deg for all particles, surface tension %g N/m%s\n", (double)contactAngle_, (double)sigma_,
                                      !freeSurface_ ? ": no free surface, no force" : sigma_ > 0 ? "" : ": the force is zero (-vof_surface_tension 0)"));

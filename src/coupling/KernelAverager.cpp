@@ -40,8 +40,9 @@ PetscErrorCode KernelAverager::SetUp(const StaggeredGrid &sg, const Settings &s,
   settings_ = s;
   const PetscReal *h    = sg.Base().Spacing();
   const PetscReal  hmin = std::min(h[0], std::min(h[1], h[2]));
-  // Unresolved: the containing cell and its faces (one point beyond the cell's index either way).
-  const PetscReal reach = s.shape == kernel::Shape::Unresolved ? hmin : maxCutoff;
+  // Unresolved: the containing cell and its faces (one point beyond the cell's index either way);
+  // linear: the two points either side.
+  const PetscReal reach = s.shape == kernel::Shape::Unresolved || s.shape == kernel::Shape::Linear ? hmin : maxCutoff;
   width_ = (PetscInt)std::ceil((reach + margin) / hmin) + 1;
   for (int loc = 0; loc < 4; ++loc) {
     PetscCall(Layout(loc, &dm_[loc]));
@@ -73,7 +74,8 @@ bool KernelAverager::Gather(int loc, const PetscReal x[3], PetscReal H, Points &
   PetscReal        s[3];
   pts.n      = 0;
   pts.sumAll = pts.sumInner = 0;
-  const bool      unresolved = settings_.shape == kernel::Shape::Unresolved;
+  const bool      linear     = settings_.shape == kernel::Shape::Linear;
+  const bool      unresolved = settings_.shape == kernel::Shape::Unresolved || linear;  // no kernel of radius rc
   const PetscReal rc         = unresolved ? 0 : Cutoff(H);
   PetscInt        wallAt[2] = {-1, -1};  // the wall-face indices along loc (faces only, not periodic)
   for (int e = 0; e < 3; ++e) {
@@ -90,7 +92,9 @@ bool KernelAverager::Gather(int loc, const PetscReal x[3], PetscReal H, Points &
       else if (s[e] - mid < -0.5 * N[e]) s[e] += N[e], c += N[e];
       lo = PETSC_MIN_INT, hi = PETSC_MAX_INT;
     } else if (loc == e) wallAt[0] = 0, wallAt[1] = N[e] - 1;
-    if (unresolved) {
+    if (linear) {
+      q0[e] = (PetscInt)std::floor(s[e]), q1[e] = q0[e] + 1;  // the two points either side
+    } else if (unresolved) {
       const PetscInt cell = (PetscInt)std::floor(c);  // the containing cell
       const PetscInt cc = grid.Periodic(e) ? cell : std::min(std::max(cell, (PetscInt)0), grid.Cells()[e] - 1);
       q0[e] = cc, q1[e] = loc == e ? cc + 1 : cc;
@@ -138,7 +142,8 @@ bool KernelAverager::Gather(int loc, const PetscReal x[3], PetscReal H, Points &
       for (PetscInt i = i0; i <= i1; ++i) {
         const PetscReal dx = (i - s[0]) * h[0];
         PetscReal       w  = 1;
-        if (!unresolved) {
+        if (linear) w = std::max(1 - std::fabs(i - s[0]), 0.0) * std::max(1 - std::fabs(j - s[1]), 0.0) * std::max(1 - std::fabs(k - s[2]), 0.0);
+        else if (!unresolved) {
           // kernel::Weight written out with its divisions hoisted: this loop is the coupling's cost.
           const PetscReal r2 = dx * dx + yz;
           if (r2 >= rc2) continue;

@@ -43,6 +43,7 @@
 #include "vofdem/coupling/DragLaws.hpp"
 #include "vofdem/coupling/KernelAverager.hpp"
 #include "vofdem/coupling/RotationLaws.hpp"
+#include "vofdem/coupling/Smoothing.hpp"
 #include "vofdem/dem/Dem.hpp"
 #include "vofdem/flow/Flow.hpp"
 
@@ -118,12 +119,13 @@ private:
 
   Flow          *flow_ = nullptr;
   Dem           *dem_ = nullptr;
-  KernelAverager avg_;
+  Smoothing      avg_;  // kernel sums or diffusion (-coupling_smoothing)
   MPI_Comm       comm_ = MPI_COMM_NULL;
 
   // options
   KernelAverager::Settings kernel_;
   std::string              kernelName_ = "smooth";
+  Smoothing::Settings      smoothing_;
   PetscReal                kappa_ = 1.5, minWidthCells_ = 1.0;
   drag::Law                law_ = drag::Law::SchillerNaumann;
   PetscReal                dragSwitch_ = 0.8;

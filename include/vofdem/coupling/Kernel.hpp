@@ -8,6 +8,9 @@
 //  - Truncated (seed 000): the Gaussian exp(-r^2/(2 H^2)) cut off at rc = c H (c = 1.2-1.5 in the
 //    seed): weights jump as cells cross rc.
 //  - Unresolved: no kernel; the cell that contains the particle (Kernel.hpp users handle it).
+//  - Linear: no kernel; the tent (cloud-in-cell) weight prod_e (1 - |x_e - x_J,e|/h_e) to the 2x2x2
+//    nearest points (KernelAverager handles it): the compact weight of the diffusion smoothing
+//    (DiffusionSmoother.hpp, PHYSICS.md K1).
 #pragma once
 
 #include <cmath>
@@ -16,14 +19,15 @@
 namespace vofdem {
 namespace kernel {
 
-enum class Shape { Smooth, Truncated, Unresolved };
+enum class Shape { Smooth, Truncated, Unresolved, Linear };
 
 // Support radius of a kernel of width H; `truncation` is the truncated Gaussian's c.
 inline double Cutoff(Shape s, double H, double truncation) {
   switch (s) {
   case Shape::Smooth: return std::sqrt(8.0) * H;
   case Shape::Truncated: return truncation * H;
-  case Shape::Unresolved: return 0;
+  case Shape::Unresolved:
+  case Shape::Linear: return 0;
   }
   return 0;
 }
@@ -37,7 +41,8 @@ inline double Weight(Shape s, double r2, double H, double rc) {
     return q * q * q * q;
   }
   case Shape::Truncated: return std::exp(-r2 / (2 * H * H));
-  case Shape::Unresolved: return 0;
+  case Shape::Unresolved:
+  case Shape::Linear: return 0;
   }
   return 0;
 }

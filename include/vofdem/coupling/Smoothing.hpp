@@ -1,0 +1,60 @@
+// The particle-grid maps of the coupling (PHYSICS.md K1-K3) by one of two methods
+// (-coupling_smoothing): kernel sums over the cells of each particle's support (KernelAverager.hpp), or
+// a compact deposit followed by diffusion in pseudo-time (DiffusionSmoother.hpp) with the kernel's
+// variance. The kernel's cost per particle grows as (cut-off/cell)^3, the diffusion's is per cell and
+// the same for any width: `auto` picks by the estimate in Smoothing.cpp (scripts/smoothing-cost).
+#pragma once
+
+#include "vofdem/coupling/DiffusionSmoother.hpp"
+#include "vofdem/coupling/KernelAverager.hpp"
+
+namespace vofdem {
+
+class Smoothing {
+public:
+  enum class Method { Kernel, Diffusion, Auto };
+  struct Settings {
+    Method   method = Method::Auto;
+    PetscInt steps  = 2;    // backward-Euler pseudo-steps of the diffusion
+    // auto: diffusion when the kernel's points summed over the particles exceed this many times the
+    // grid's points (scripts/smoothing-cost measured the cross-over)
+    PetscReal crossover = 150;
+  };
+  // The kernel's variance per direction (m^2) for width H (quadrature of kernel::Weight; 8 H^2/13 smooth).
+  static PetscReal KernelVariance(kernel::Shape s, PetscReal H, PetscReal truncation);
+  static const char *Name(Method m) { return m == Method::Kernel ? "kernel" : m == Method::Diffusion ? "diffusion" : "auto"; }
+
+  // Reads the diffusion's KSP options (-coupling_smoothing_ksp_*, -coupling_smoothing_pc_*) with a
+  // throw-away solver, so that they count as used at the options check before the particles are made.
+  static PetscErrorCode ReadSolverOptions(MPI_Comm comm);
+  // H: the width of the widest particle's kernel (the diffusion uses one width for all); particles:
+  // the number of particles (auto's estimate). Collective.
+  PetscErrorCode SetUp(const StaggeredGrid &sg, const KernelAverager::Settings &k, const Settings &s, PetscReal H, PetscReal margin, PetscInt particles);
+  PetscErrorCode Destroy();
+  bool           Diffusion() const { return diffusion_; }
+  PetscInt       GhostWidth() const { return diffusion_ ? smoother_.GhostWidth() : kernel_.GhostWidth(); }
+  const DiffusionSmoother &Smoother() const { return smoother_; }
+  PetscReal      Spread(int e) const { return spread_[e]; }  // b_e^2 of the diffusion (m^2)
+
+  PetscErrorCode Deposit(int loc, PetscInt n, const PetscReal *x, const PetscReal *H, const PetscReal *value, PetscInt stride, Vec out) {
+    return diffusion_ ? smoother_.Deposit(loc, n, x, H, value, stride, out) : kernel_.Deposit(loc, n, x, H, value, stride, out);
+  }
+  PetscErrorCode Average(int loc, Vec field, Vec weight, PetscInt n, const PetscReal *x, const PetscReal *H, PetscReal *out, PetscInt stride, bool walls = true) {
+    return diffusion_ ? smoother_.Average(loc, field, weight, n, x, H, out, stride, walls) : kernel_.Average(loc, field, weight, n, x, H, out, stride, walls);
+  }
+  PetscErrorCode Deposit(int loc, PetscInt n, const PetscReal *x, const PetscReal *H, PetscInt nf, const PetscReal *const value[], PetscInt stride, Vec out[]) {
+    return diffusion_ ? smoother_.Deposit(loc, n, x, H, nf, value, stride, out) : kernel_.Deposit(loc, n, x, H, nf, value, stride, out);
+  }
+  PetscErrorCode Average(int loc, PetscInt nf, const Vec field[], const Vec weight[], const bool walls[], PetscInt n, const PetscReal *x, const PetscReal *H, PetscReal *const out[],
+                         PetscInt stride) {
+    return diffusion_ ? smoother_.Average(loc, nf, field, weight, walls, n, x, H, out, stride) : kernel_.Average(loc, nf, field, weight, walls, n, x, H, out, stride);
+  }
+
+private:
+  KernelAverager    kernel_;
+  DiffusionSmoother smoother_;
+  bool              diffusion_ = false;
+  PetscReal         spread_[3] = {0, 0, 0};
+};
+
+}  // namespace vofdem

@@ -1,0 +1,259 @@
+#include "vofdem/coupling/DiffusionSmoother.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace vofdem {
+
+PetscErrorCode DiffusionSmoother::SetUp(const StaggeredGrid &sg, const PetscReal spread[3], PetscInt steps, PetscReal margin, const char *prefix) {
+  PetscFunctionBeginUser;
+  sg_ = &sg;
+  for (int e = 0; e < 3; ++e) spread_[e] = spread[e];
+  steps_  = steps;
+  prefix_ = prefix ? prefix : "";
+  KernelAverager::Settings tent;
+  tent.shape = kernel::Shape::Linear;
+  PetscCall(compact_.SetUp(sg, tent, 0, margin));
+  for (int loc = 0; loc < 4; ++loc) PetscCall(Assemble(loc));
+  PetscFunctionReturn(0);
+}
+
+// Chebyshev iteration without a preconditioner and without norms: the spectrum of I - tau sum_e D_e L_e lies in
+// [1, 1 + 4 sum_e a_e] (Gershgorin; a_e = tau D_e/h_e^2), so the bounds are known and a fixed number of
+// iterations reaches the tolerance: no reductions (CG's two per iteration dominated on shared cores), and the
+// smoothing is a fixed polynomial of the matrix, linear and symmetric to round-off on any rank count.
+PetscErrorCode DiffusionSmoother::CreateSolver(MPI_Comm comm, const char *prefix, KSP *ksp) {
+  PC pc;
+
+  PetscFunctionBeginUser;
+  PetscCall(KSPCreate(comm, ksp));
+  PetscCall(KSPSetType(*ksp, KSPCHEBYSHEV));
+  PetscCall(KSPGetPC(*ksp, &pc));
+  PetscCall(PCSetType(pc, PCNONE));
+  PetscCall(KSPSetNormType(*ksp, KSP_NORM_NONE));
+  // 1e-6: S is a fixed polynomial, so conservation and adjointness hold to round-off at any tolerance; it only
+  // sets how closely S follows backward Euler (the smoothing's shape), and halves the iterations of 1e-10.
+  PetscCall(KSPSetTolerances(*ksp, 1e-6, PETSC_DEFAULT, PETSC_DEFAULT, PETSC_DEFAULT));
+  PetscCall(KSPSetInitialGuessNonzero(*ksp, PETSC_TRUE));  // the field before the step
+  PetscCall(KSPSetOptionsPrefix(*ksp, prefix));
+  PetscCall(KSPSetFromOptions(*ksp));
+  PetscFunctionReturn(0);
+}
+
+// The matrix I - tau sum_e D_e d^2/dx_e^2 of location loc (tau D_e = b_e^2/(2 steps)): the usual 7-point
+// Laplacian with the flux through a wall left out (zero flux: the row's diagonal loses that neighbour's
+// share, so rows and columns still sum to one). The wall faces of a velocity component are not part of
+// the smoothing (their velocity is the boundary condition's; nothing is deposited there): identity rows.
+PetscErrorCode DiffusionSmoother::Assemble(int loc) {
+  const Grid     &grid = sg_->Base();
+  const PetscInt *l[3];
+  PetscInt        m[3], N[3], s[3], n[3];
+  DMBoundaryType  bt[3];
+
+  PetscFunctionBeginUser;
+  DM base = sg_->Location(loc);
+  PetscCall(DMDAGetInfo(base, nullptr, &N[0], &N[1], &N[2], &m[0], &m[1], &m[2], nullptr, nullptr, nullptr, nullptr, nullptr, nullptr));
+  PetscCall(DMDAGetOwnershipRanges(base, &l[0], &l[1], &l[2]));
+  for (int e = 0; e < 3; ++e) bt[e] = grid.Periodic(e) ? DM_BOUNDARY_PERIODIC : DM_BOUNDARY_NONE;
+  PetscCall(DMDACreate3d(grid.Comm(), bt[0], bt[1], bt[2], DMDA_STENCIL_STAR, N[0], N[1], N[2], m[0], m[1], m[2], 1, 1, l[0], l[1], l[2], &dm_[loc]));
+  PetscCall(DMSetUp(dm_[loc]));
+  PetscCall(DMSetMatType(dm_[loc], MATAIJ));
+  PetscCall(DMCreateMatrix(dm_[loc], &A_[loc]));
+  PetscCall(DMCreateGlobalVector(dm_[loc], &mask_[loc]));
+  PetscCall(VecDuplicate(mask_[loc], &rhs_[loc]));
+  PetscCall(DMDAGetCorners(dm_[loc], &s[0], &s[1], &s[2], &n[0], &n[1], &n[2]));
+  const PetscReal *h = grid.Spacing();
+  PetscReal        a[3];
+  for (int e = 0; e < 3; ++e) a[e] = spread_[e] / (2.0 * steps_ * h[e] * h[e]);
+  PetscScalar ***mk;
+  PetscReal      count = 0;
+  PetscCall(DMDAVecGetArray(dm_[loc], mask_[loc], &mk));
+  for (PetscInt k = s[2]; k < s[2] + n[2]; ++k)
+    for (PetscInt j = s[1]; j < s[1] + n[1]; ++j)
+      for (PetscInt i = s[0]; i < s[0] + n[0]; ++i) {
+        const PetscInt q[3] = {i, j, k};
+        MatStencil     row  = {k, j, i, 0}, col[7];
+        PetscScalar    v[7];
+        // The points the smoothing acts on along each direction: faces 1..N-2 along their own (walled)
+        // direction, all points otherwise.
+        PetscInt lo[3], hi[3];
+        bool     wallFace = false;
+        for (int e = 0; e < 3; ++e) {
+          lo[e] = 0, hi[e] = N[e] - 1;
+          if (loc == e && !grid.Periodic(e)) lo[e] = 1, hi[e] = N[e] - 2;
+          if (q[e] < lo[e] || q[e] > hi[e]) wallFace = true;
+        }
+        mk[k][j][i] = wallFace ? 0 : 1;
+        col[0]      = row;
+        v[0]        = 1;
+        PetscInt nc = 1;
+        if (!wallFace) {
+          count += 1;
+          for (int e = 0; e < 3; ++e)
+            for (int side = -1; side <= 1; side += 2) {
+              const PetscInt nb = q[e] + side;
+              if (!grid.Periodic(e) && (nb < lo[e] || nb > hi[e])) continue;  // zero flux through the wall
+              MatStencil c = row;
+              (e == 0 ? c.i : e == 1 ? c.j : c.k) = nb;  // periodic: the DMDA wraps -1 and N
+              col[nc] = c;
+              v[nc++] = -a[e];
+              v[0] += a[e];
+            }
+        }
+        PetscCall(MatSetValuesStencil(A_[loc], 1, &row, nc, col, v, ADD_VALUES));
+      }
+  PetscCall(DMDAVecRestoreArray(dm_[loc], mask_[loc], &mk));
+  PetscCall(MatAssemblyBegin(A_[loc], MAT_FINAL_ASSEMBLY));
+  PetscCall(MatAssemblyEnd(A_[loc], MAT_FINAL_ASSEMBLY));
+  PetscCallMPI(MPI_Allreduce(&count, &count_[loc], 1, MPIU_REAL, MPIU_SUM, grid.Comm()));
+  PetscCall(CreateSolver(grid.Comm(), prefix_.c_str(), &ksp_[loc]));
+  PetscCall(KSPSetOperators(ksp_[loc], A_[loc], A_[loc]));
+  PetscBool chebyshev;
+  PetscCall(PetscObjectTypeCompare((PetscObject)ksp_[loc], KSPCHEBYSHEV, &chebyshev));
+  if (chebyshev) {
+    // Error after n iterations <= 2 r^n of the initial one, r = (sqrt(k) - 1)/(sqrt(k) + 1), k = emax/emin:
+    // n from the tolerance -<prefix>ksp_rtol.
+    const PetscReal emax = 1 + 4 * (a[0] + a[1] + a[2]), sk = std::sqrt(emax), r = (sk - 1) / (sk + 1);
+    PetscReal       rtol, atol, dtol;
+    PetscInt        maxit;
+    PetscCall(KSPGetTolerances(ksp_[loc], &rtol, &atol, &dtol, &maxit));
+    const PetscInt n = std::max((PetscInt)1, (PetscInt)std::ceil(std::log(rtol / 2) / std::log(r)));
+    PetscCall(KSPSetTolerances(ksp_[loc], rtol, atol, dtol, n));
+    PetscCall(KSPChebyshevSetEigenvalues(ksp_[loc], emax, 1.0));
+  }
+  PetscCall(KSPSetUp(ksp_[loc]));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode DiffusionSmoother::Destroy() {
+  PetscFunctionBeginUser;
+  for (int loc = 0; loc < 4; ++loc) {
+    for (Vec &v : work_[loc]) PetscCall(VecDestroy(&v));
+    work_[loc].clear();
+    PetscCall(KSPDestroy(&ksp_[loc]));
+    PetscCall(MatDestroy(&A_[loc]));
+    PetscCall(VecDestroy(&mask_[loc]));
+    PetscCall(VecDestroy(&rhs_[loc]));
+    PetscCall(DMDestroy(&dm_[loc]));
+  }
+  PetscCall(compact_.Destroy());
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode DiffusionSmoother::Work(int loc, size_t count) {
+  PetscFunctionBeginUser;
+  while (work_[loc].size() < count) {
+    Vec v;
+    PetscCall(VecDuplicate(mask_[loc], &v));
+    work_[loc].push_back(v);
+  }
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode DiffusionSmoother::Smooth(int loc, Vec v) {
+  PetscFunctionBeginUser;
+  for (PetscInt step = 0; step < steps_; ++step) {
+    PetscScalar before, after;
+    PetscInt    its;
+    PetscCall(VecDot(v, mask_[loc], &before));
+    PetscCall(VecCopy(v, rhs_[loc]));
+    PetscCall(KSPSolve(ksp_[loc], rhs_[loc], v));
+    PetscCall(KSPGetIterationNumber(ksp_[loc], &its));
+    iterations_ += its;
+    KSPConvergedReason reason;
+    PetscCall(KSPGetConvergedReason(ksp_[loc], &reason));
+    PetscCheck(reason > 0, PetscObjectComm((PetscObject)ksp_[loc]), PETSC_ERR_NOT_CONVERGED, "coupling: the diffusion smoothing's KSP did not converge (reason %d)", (int)reason);
+    // The total the solve lost to its residual, put back evenly (K3: exact conservation).
+    PetscCall(VecDot(v, mask_[loc], &after));
+    PetscCall(VecAXPY(v, (before - after) / count_[loc], mask_[loc]));
+  }
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode DiffusionSmoother::Deposit(int loc, PetscInt n, const PetscReal *x, const PetscReal *H, const PetscReal *value, PetscInt stride, Vec out) {
+  PetscFunctionBeginUser;
+  PetscCall(Deposit(loc, n, x, H, 1, &value, stride, &out));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode DiffusionSmoother::Average(int loc, Vec field, Vec weight, PetscInt n, const PetscReal *x, const PetscReal *H, PetscReal *out, PetscInt stride, bool walls) {
+  PetscFunctionBeginUser;
+  PetscCall(Average(loc, 1, &field, &weight, &walls, n, x, H, &out, stride));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode DiffusionSmoother::Deposit(int loc, PetscInt n, const PetscReal *x, const PetscReal *H, PetscInt nf, const PetscReal *const value[], PetscInt stride, Vec out[]) {
+  PetscFunctionBeginUser;
+  PetscCall(Work(loc, nf));
+  for (PetscInt f = 0; f < nf; ++f) PetscCall(VecSet(work_[loc][f], 0));
+  PetscCall(compact_.Deposit(loc, n, x, H, nf, value, stride, work_[loc].data()));
+  for (PetscInt f = 0; f < nf; ++f) {
+    PetscCall(Smooth(loc, work_[loc][f]));
+    PetscCall(VecAXPY(out[f], 1, work_[loc][f]));
+  }
+  PetscFunctionReturn(0);
+}
+
+// Weighted: the tent average of g = S(c f)/S(c) with the weight S(c), i.e. P S(c f)/P S(c) (P the tent
+// interpolation), the diffusion counterpart of sum_J c_J f_J w_J/sum_J c_J w_J. The solves are the cost, so
+// none is done twice or in vain: S(v) of a vector v is computed once per call (a weight shared by several
+// fields, or eps both as a field and as the weight), and a constant field or weight needs none (S keeps a
+// constant, and S(c f)/S(c) = f for constant f, = S(f) for constant c).
+PetscErrorCode DiffusionSmoother::Average(int loc, PetscInt nf, const Vec field[], const Vec weight[], const bool walls[], PetscInt n, const PetscReal *x, const PetscReal *H,
+                                          PetscReal *const out[], PetscInt stride) {
+  PetscFunctionBeginUser;
+  PetscCall(Work(loc, 2 * nf));
+  std::vector<Vec>  g(nf), c(nf, nullptr), source, smoothed;
+  size_t            next = 0;
+  auto constant = [](Vec v, bool *is) -> PetscErrorCode {
+    PetscReal lo, hi;
+    PetscFunctionBeginUser;
+    PetscCall(VecMin(v, nullptr, &lo));
+    PetscCall(VecMax(v, nullptr, &hi));
+    *is = lo == hi;
+    PetscFunctionReturn(0);
+  };
+  auto smooth = [&](Vec v, Vec *s) -> PetscErrorCode {  // S(v), once per vector
+    PetscFunctionBeginUser;
+    for (size_t k = 0; k < source.size(); ++k)
+      if (source[k] == v) {
+        *s = smoothed[k];
+        PetscFunctionReturn(0);
+      }
+    *s = work_[loc][next++];
+    PetscCall(VecCopy(v, *s));
+    PetscCall(Smooth(loc, *s));
+    source.push_back(v), smoothed.push_back(*s);
+    PetscFunctionReturn(0);
+  };
+  for (PetscInt f = 0; f < nf; ++f) {
+    bool fieldConstant = false, weightConstant = true;
+    PetscCall(constant(field[f], &fieldConstant));
+    if (weight[f] && !fieldConstant) PetscCall(constant(weight[f], &weightConstant));
+    if (fieldConstant) {
+      g[f] = field[f];
+      continue;
+    }
+    if (weightConstant) {
+      PetscCall(smooth(field[f], &g[f]));
+      continue;
+    }
+    PetscCall(smooth(weight[f], &c[f]));
+    g[f] = work_[loc][next++];
+    PetscCall(VecPointwiseMult(g[f], field[f], weight[f]));
+    PetscCall(Smooth(loc, g[f]));
+    PetscScalar       *ga;
+    const PetscScalar *ca;
+    PetscInt           m;
+    PetscCall(VecGetLocalSize(g[f], &m));
+    PetscCall(VecGetArray(g[f], &ga));
+    PetscCall(VecGetArrayRead(c[f], &ca));
+    for (PetscInt k = 0; k < m; ++k) ga[k] = PetscRealPart(ca[k]) != 0 ? ga[k] / ca[k] : 0;
+    PetscCall(VecRestoreArrayRead(c[f], &ca));
+    PetscCall(VecRestoreArray(g[f], &ga));
+  }
+  PetscCall(compact_.Average(loc, nf, g.data(), c.data(), walls, n, x, H, out, stride));
+  PetscFunctionReturn(0);
+}
+
+}  // namespace vofdem
