@@ -78,7 +78,7 @@ bool ParticleSources::TryClump(InsertionSource &s, std::uint64_t key, PetscReal 
   PetscReal       X[3], v[3];
   bool            placed = false;
   for (PetscInt k = 0; k < s.attempts && !placed; ++k, ++s.tries) {
-    for (int d = 0; d < 3; ++d) X[d] = s.lower[d] + (s.upper[d] - s.lower[d]) * random::Uniform(s.seed, key, 16 + 3 * (std::uint64_t)s.tries + d);
+    for (int d = 0; d < 3; ++d) X[d] = s.now[d] + (s.now[3 + d] - s.now[d]) * random::Uniform(s.seed, key, 16 + 3 * (std::uint64_t)s.tries + d);
     library_.Place(t, rEq, q, X, s.density, &placed_);
     placed = true;
     for (size_t m = 0; m < placed_.r.size() && placed; ++m) placed = !hash.Overlaps(&placed_.x[3 * m], placed_.r[m]);

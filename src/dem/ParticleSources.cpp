@@ -38,6 +38,8 @@ PetscErrorCode ParticleSources::SetFromOptions(OptionReader &opt, MPI_Comm comm,
     if ((s.rate > 0) == (s.massRate > 0))
       VofdemInputError(comm, "options -dem_insert_%s_rate and -dem_insert_%s_mass_rate: give exactly one positive rate", n.c_str(), n.c_str());
     PetscCall(opt.RealVector(o("velocity").c_str(), "Initial velocity of the inserted particles", "m/s", s.velocity, 3));
+    PetscCall(opt.RealVector(o("region_velocity").c_str(), "Velocity of the region from the start time on (a feed slot moving with a spreader); insertion ends before the region leaves the box",
+                             "m/s", s.regionVelocity, 3));
     PetscCall(opt.Real(o("velocity_spread").c_str(), "Random part of the initial velocity: each component uniform in [-spread, spread]", "m/s", &s.spread,
                        RealRange::NonNegative()));
     PetscCall(opt.Real(o("start").c_str(), "Time insertion starts", "s", &s.start, RealRange::NonNegative()));
@@ -83,6 +85,12 @@ PetscErrorCode ParticleSources::SetUp(const Grid &grid, const ParticleSwarm &swa
       if (!(s.upper[d] >= s.lower[d]) || s.lower[d] - r < grid.Lower()[d] || s.upper[d] + r > grid.Upper()[d])
         VofdemInputError(comm_, "options -dem_insert_%s_lower/-dem_insert_%s_upper: the region [%g, %g] in %c must be ordered and at least the largest radius %g m inside the box [%g, %g]",
                          s.name.c_str(), s.name.c_str(), (double)s.lower[d], (double)s.upper[d], "xyz"[d], (double)r, (double)grid.Lower()[d], (double)grid.Upper()[d]);
+    // A moving region stops inserting before it would leave the box.
+    for (int d = 0; d < 3; ++d) {
+      const PetscReal v = s.regionVelocity[d];
+      if (v > 0) s.end = std::min(s.end, s.start + (grid.Upper()[d] - r - s.upper[d]) / v);
+      if (v < 0) s.end = std::min(s.end, s.start + (grid.Lower()[d] + r - s.lower[d]) / v);
+    }
   }
   PetscInt64 tops[2] = {-1, -1}, globalTops[2];  // largest particle id, largest clump id
   PetscCall(swarm.GetArrays(&a));
@@ -189,7 +197,7 @@ bool ParticleSources::TrySphere(InsertionSource &s, std::uint64_t key, PetscReal
   PetscReal x[3], v[3];
   bool      placed = false;
   for (PetscInt k = 0; k < s.attempts && !placed; ++k, ++s.tries) {
-    for (int d = 0; d < 3; ++d) x[d] = s.lower[d] + (s.upper[d] - s.lower[d]) * random::Uniform(s.seed, key, 16 + 3 * (std::uint64_t)s.tries + d);
+    for (int d = 0; d < 3; ++d) x[d] = s.now[d] + (s.now[3 + d] - s.now[d]) * random::Uniform(s.seed, key, 16 + 3 * (std::uint64_t)s.tries + d);
     placed = !hash.Overlaps(x, r);
   }
   if (!placed) return false;
@@ -211,7 +219,11 @@ PetscErrorCode ParticleSources::Insert(PetscReal t, InsertionSource &s, Particle
   MemberRadii(s, &rLo, &rHi);
 
   PetscFunctionBeginUser;
-  for (int d = 0; d < 3; ++d) lo[d] = s.lower[d] - reach, hi[d] = s.upper[d] + reach;
+  for (int d = 0; d < 3; ++d) {  // the region now (it may move: -dem_insert_<name>_region_velocity)
+    const PetscReal shift = s.regionVelocity[d] * std::max((PetscReal)0, std::min(t, s.end) - s.start);
+    s.now[d] = s.lower[d] + shift, s.now[3 + d] = s.upper[d] + shift;
+    lo[d] = s.now[d] - reach, hi[d] = s.now[3 + d] + reach;
+  }
   near_.clear();
   PetscCall(swarm.GetArrays(&a));
   for (PetscInt p = 0; p < a.n; ++p) {

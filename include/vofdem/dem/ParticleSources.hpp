@@ -33,6 +33,8 @@ struct InsertionSource {
   PetscReal        lower[3] = {0, 0, 0}, upper[3] = {0, 0, 0};  // region of the centres, m
   PetscReal        rate = 0, massRate = 0;                      // particles/s or kg/s (one of them)
   PetscReal        velocity[3] = {0, 0, 0}, spread = 0;         // m/s
+  PetscReal        regionVelocity[3] = {0, 0, 0};               // m/s: the region moves (a feed slot on a spreader) from `start`
+  PetscReal        now[6] = {0, 0, 0, 0, 0, 0};                 // the region at the current insertion (lower, upper)
   PetscReal        start = 0, end = PETSC_MAX_REAL;             // s
   PetscInt         attempts = 100;                              // candidate centres per particle and round
   PetscInt         type = 0;                                    // particle type (index into -dem_types)
