@@ -3,7 +3,7 @@
 which only the validate tier runs whole (test/validate/d8-lunar-spreading): the scene file is read as it is
 from the source root, with the feed 25,000x faster so that ~1000 clumps enter within 200 steps on 2 ranks;
 then the moon setting without van der Waals, and the super-ellipse blade instead of the rollers (the
-command line the scene file gives), 20 steps each. Checks: exit 0, every wall set up, the time step of the
+options the scene file gives), 20 steps each. Checks: exit 0, every wall set up (and the unchosen ones removed from t = 0), the time step of the
 linear law (0.3 x a tenth of the contact time pi sqrt(m/(2 k_n)) of the smallest member sphere, P4), all
 steps run, clumps inserted and none lost (particles = inserted - deleted), van der Waals on or off.
 Usage: test_lunar_smoke.py VOFDEM"""
@@ -17,15 +17,16 @@ sys.path.insert(0, os.path.join(ROOT, "scripts", "lib"))
 from testcheck import check, failures, run_vofdem  # noqa: E402
 
 SCENE = os.path.join("config", "scenes", "lunar-spreading.yaml")
-BLADE = ("-dem_walls slot,blade -dem_wall_blade_type stl -dem_wall_blade_file config/scenes/geometry/lunar-superellipse-blade.stl "
-         "-dem_wall_blade_offset -1.35e-2,-2e-4,3.7e-3 -dem_wall_blade_velocity 0.19,0,0").split()
+BLADE = "-dem_wall_blade_remove_time 1e9 -dem_wall_rollera_remove_time 0 -dem_wall_rollerb_remove_time 0".split()
 
 
-def smoke(exe, name, extra, steps, walls, vdw):
+def smoke(exe, name, extra, steps, walls, vdw, gone):
     p = run_vofdem(exe, 2, ["-options_file_yaml", SCENE, "-dem_insert_feed_mass_rate", "5", "-max_steps", str(steps), "-monitor_every", str(steps),
                             "-analysis_metrics", ""] + extra)
     out = p.stdout
     missing = [w for w in walls if not re.search(r"^dem: wall %s: " % w, out, re.M)]
+    removed = sorted(w for w in walls if re.search(r"^dem: wall %s: .*removed at t = 0 s" % w, out, re.M))
+    check(removed == gone, "%s: walls removed from t = 0: %s (expected %s)" % (name, ",".join(removed) or "none", ",".join(gone)))
     check(not missing, "%s: every wall set up (%s)%s" % (name, ",".join(walls), "; missing " + ",".join(missing) if missing else ""))
     check(bool(re.search(r"^dem: van der Waals", out, re.M)) == vdw, "%s: van der Waals %s" % (name, "on" if vdw else "off"))
     rmin = re.search(r"^dem: \d+ spheres of radius (\S+) to", out, re.M)
@@ -49,9 +50,9 @@ def smoke(exe, name, extra, steps, walls, vdw):
 def main():
     exe = os.path.abspath(sys.argv[1])
     os.chdir(ROOT)
-    smoke(exe, "earth, van der Waals, rollers", [], 200, ["slot", "rollera", "rollerb"], True)
-    smoke(exe, "moon, no van der Waals", ["-gravity", "0,0,-1.63", "-dem_hamaker", "0"], 20, ["slot", "rollera", "rollerb"], False)
-    smoke(exe, "super-ellipse blade", BLADE, 20, ["slot", "blade"], True)
+    smoke(exe, "earth, van der Waals, rollers", [], 200, ["slot", "rollera", "rollerb", "blade"], True, ["blade"])
+    smoke(exe, "moon, no van der Waals", ["-gravity", "0,0,-1.63", "-dem_hamaker", "0"], 20, ["slot", "rollera", "rollerb", "blade"], False, ["blade"])
+    smoke(exe, "super-ellipse blade", BLADE, 20, ["slot", "rollera", "rollerb", "blade"], True, ["rollera", "rollerb"])
     if failures:
         print("FAIL: %d check(s) failed" % len(failures))
         sys.exit(1)
