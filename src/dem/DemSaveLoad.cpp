@@ -297,6 +297,7 @@ PetscErrorCode Dem::Load(PetscViewer viewer) {
   stats_.maxOverlap   = st.stats[2];
   stats_.elastic      = st.stats[3];
   for (int f = 0; f < 6; ++f) std::copy_n(&st.stats[4 + 3 * f], 3, stats_.wallForce[f]);
+  clumps_.Invalidate();  // the loaded particles' local order
   PetscFunctionReturn(0);
 }
 
