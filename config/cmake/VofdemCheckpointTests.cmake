@@ -31,3 +31,4 @@ vofdem_checkpoint_test(bad_input 2 badinput)
 # Inserted regolith clumps (P10) across a restart: bitwise on 2 ranks, and 2 -> 1 ranks.
 vofdem_checkpoint_test(bitwise_demclumps_2 2 bitwise demclumps 2)
 vofdem_checkpoint_test(ranks_demclumps_2to1 2 ranks demclumps 2 1)
+set_tests_properties(checkpoint/bitwise_demclumps_2 checkpoint/ranks_demclumps_2to1 PROPERTIES TIMEOUT 900)  # > 300 s on a loaded 2-core machine
