@@ -143,11 +143,13 @@ PetscErrorCode PowderAnalysis::Run(const Spheres &s, const Window &box, const st
   if (Wants("coordination")) {
     std::map<int, long> hist;
     double              mean = 0;
-    for (std::size_t i : in) ++hist[z[i]], mean += z[i];
-    mean /= in.size();
+    long                particles = 0;  // clump members other than the first are not particles (-1)
+    for (std::size_t i : in)
+      if (z[i] >= 0) ++hist[z[i]], mean += z[i], ++particles;
+    mean /= std::max(1L, particles);
     std::string t = "coordination,count,fraction\n";
-    const int   top = hist.rbegin()->first;
-    for (int c = 0; c <= top; ++c) t += std::to_string(c) + "," + std::to_string(hist[c]) + "," + Num((double)hist[c] / in.size()) + "\n";
+    const int   top = hist.empty() ? 0 : hist.rbegin()->first;
+    for (int c = 0; c <= top; ++c) t += std::to_string(c) + "," + std::to_string(hist[c]) + "," + Num((double)hist[c] / std::max(1L, particles)) + "\n";
     PetscCall(Write("coordination.csv", t));
     add("mean_coordination", mean, "1");
     PetscCall(PetscPrintf(comm_, "  mean coordination %.4f (contacts with gap < %g m; largest %d)\n", mean, (double)gap_, top));

@@ -11,6 +11,7 @@
 #include <petscviewerhdf5.h>
 
 #include <fstream>
+#include <map>
 
 namespace vofdem {
 
@@ -57,6 +58,29 @@ PetscErrorCode PowderAnalysis::Gather(const Dem &dem, const Grid &grid, analysis
   *s   = analysis::Spheres();
   s->x = ax, s->r = ar;
   for (double t : at) s->type.push_back((std::int64_t)t);
+  {  // Rigid clumps (P10): ids, and each member's volume weight V_union / sum V_members (the union's
+     // volume is M / rho; M from the rigid state). All members are on one rank.
+    ParticleArrays a;
+    PetscCall(dem.Particles().GetArrays(&a));
+    int any = 0, anyGlobal;
+    for (PetscInt p = 0; p < a.n && !any; ++p) any = a.clump[p] >= 0;
+    PetscCallMPI(MPI_Allreduce(&any, &anyGlobal, 1, MPI_INT, MPI_LOR, comm));
+    if (anyGlobal) {
+      std::map<PetscInt64, double> members;  // clump -> sum of member volumes
+      for (PetscInt p = 0; p < a.n; ++p)
+        if (a.clump[p] >= 0) members[a.clump[p]] += 4.0 / 3.0 * PETSC_PI * a.radius[p] * a.radius[p] * a.radius[p];
+      std::vector<double> mc(a.n), mw(a.n), ac, aw;
+      for (PetscInt p = 0; p < a.n; ++p) {
+        mc[p] = (double)a.clump[p];
+        mw[p] = a.clump[p] < 0 ? 1.0 : a.rigid[kRigidWidth * p + rigid::kMass] / dem.TypeMaterial(a.type[p]).density / members[a.clump[p]];
+      }
+      PetscCall(AllGather(comm, mc, &ac));
+      PetscCall(AllGather(comm, mw, &aw));
+      for (double c : ac) s->clump.push_back((std::int64_t)c);
+      s->weight = aw;
+    }
+    PetscCall(dem.Particles().RestoreArrays(&a));
+  }
   for (int d = 0; d < 3; ++d) s->periodic[d] = grid.Periodic(d), s->lower[d] = grid.Lower()[d], s->upper[d] = grid.Upper()[d];
   PetscFunctionReturn(0);
 }

@@ -4,6 +4,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
+#include <utility>
 
 namespace vofdem::analysis {
 
@@ -50,7 +52,7 @@ void ForImages(const Spheres &s, const double c[3], double reach, const double l
 double PackingDensity(const Spheres &s, const Window &w) {
   double solid = 0;
   for (std::size_t i = 0; i < s.Size(); ++i)
-    ForImages(s, &s.x[3 * i], s.r[i], w.lo, w.hi, [&](const double p[3]) { solid += SphereBoxVolume(p, s.r[i], w.lo, w.hi); });
+    ForImages(s, &s.x[3 * i], s.r[i], w.lo, w.hi, [&](const double p[3]) { solid += s.Weight(i) * SphereBoxVolume(p, s.r[i], w.lo, w.hi); });
   return solid / w.Volume();
 }
 
@@ -58,6 +60,9 @@ std::vector<int> CoordinationNumbers(const Spheres &s, double gap) {
   const std::size_t n = s.Size();
   std::vector<int>  z(n, 0);
   if (n < 2) return z;
+  // A particle's key: its clump id (>= 0), or -1 - its index for a loose sphere.
+  auto Body = [&](std::size_t i) { return s.Clump(i) >= 0 ? s.Clump(i) : -1 - (std::int64_t)i; };
+  std::vector<std::pair<std::int64_t, std::int64_t>> touching;  // clumps: (particle, particle it touches)
   const double h = 2 * s.MaxRadius() + gap;
   double       lo[3], len[3];
   int          cells[3];
@@ -109,7 +114,7 @@ std::vector<int> CoordinationNumbers(const Spheres &s, double gap) {
     for (std::size_t cell : visit)
       for (std::size_t k = start[cell]; k < start[cell + 1]; ++k) {
         const std::size_t j = order[k];
-        if (j == i) continue;
+        if (j == i || (s.Clump(i) >= 0 && s.Clump(i) == s.Clump(j))) continue;  // members of one clump are one particle
         double d2 = 0;
         for (int d = 0; d < 3; ++d) {
           double e = s.x[3 * j + d] - p[d];
@@ -120,9 +125,27 @@ std::vector<int> CoordinationNumbers(const Spheres &s, double gap) {
           d2 += e * e;
         }
         const double reach = s.r[i] + s.r[j] + gap;
-        if (d2 < reach * reach) ++z[i];
+        if (d2 < reach * reach) {
+          ++z[i];
+          if (!s.clump.empty()) touching.emplace_back(Body(i), Body(j));
+        }
       }
   }
+  if (s.clump.empty()) return z;
+  // Clumps: a particle's contacts are the other particles any of its members touch, each once;
+  // the value sits on its largest sphere (the base sphere of an inserted clump, near its centroid;
+  // the rank count does not change which), the other members get -1 (not particles).
+  std::sort(touching.begin(), touching.end());
+  touching.erase(std::unique(touching.begin(), touching.end()), touching.end());
+  std::map<std::int64_t, int> count;
+  for (const auto &t : touching) ++count[t.first];
+  std::map<std::int64_t, std::size_t> first;
+  for (std::size_t i = 0; i < n; ++i) {
+    const auto it = first.find(Body(i));
+    if (it == first.end()) first.emplace(Body(i), i);
+    else if (s.r[i] > s.r[it->second]) it->second = i;
+  }
+  for (std::size_t i = 0; i < n; ++i) z[i] = first[Body(i)] == i ? count[Body(i)] : -1;
   return z;
 }
 
@@ -146,8 +169,9 @@ std::vector<RingResult> SampleRings(const Spheres &s, const std::vector<Ring> &r
     double       solid = 0, zsum = 0;
     res.ring           = g;
     for (std::size_t i = 0; i < s.Size(); ++i) {
-      if (g.Contains(&s.x[3 * i])) ++res.centres, zsum += contacts[i];
-      ForImages(s, &s.x[3 * i], s.r[i], lo, hi, [&](const double p[3]) { solid += SphereRingVolume(p, s.r[i], g); });
+      // A clump is counted once, by its largest sphere (CoordinationNumbers: the others hold -1).
+      if (g.Contains(&s.x[3 * i]) && contacts[i] >= 0) ++res.centres, zsum += contacts[i];
+      ForImages(s, &s.x[3 * i], s.r[i], lo, hi, [&](const double p[3]) { solid += s.Weight(i) * SphereRingVolume(p, s.r[i], g); });
     }
     res.packing      = solid / g.Volume();
     res.coordination = res.centres ? zsum / res.centres : 0;

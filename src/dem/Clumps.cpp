@@ -101,6 +101,8 @@ void BodyOmega(const PetscReal q[4], const PetscReal I[3], const PetscReal L[3],
 }  // namespace
 
 void Clumps::Group(const ParticleArrays &a) const {
+  if (!stale_ && groupedN_ == a.n) return;
+  stale_ = false, groupedN_ = a.n;
   for (auto &kv : members_) kv.second.clear();
   for (PetscInt p = 0; p < a.n; ++p)
     if (a.clump[p] >= 0) members_[a.clump[p]].push_back(p);
@@ -118,6 +120,7 @@ PetscErrorCode Clumps::SetUp(const ParticleArrays &a, const std::vector<PetscRea
 
   PetscFunctionBeginUser;
   for (int d = 0; d < 3; ++d) gravity_[d] = gravity[d];
+  stale_ = true;
   Group(a);
   *count = (PetscInt)members_.size();
   for (auto &kv : members_) {

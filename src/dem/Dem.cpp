@@ -178,7 +178,7 @@ PetscErrorCode Dem::SetUp(Grid &grid, const PetscReal gravity[3], std::uint64_t 
     PetscCall(clumps_.SetUp(a, density, gravity_, &local));
     PetscCall(swarm_.RestoreArrays(&a));
     PetscCallMPI(MPI_Allreduce(&local, &clumpCount_, 1, MPIU_INT, MPI_SUM, comm_));
-    clumps_.SetAny(clumpCount_ > 0);
+    clumps_.SetAny(clumpCount_ > 0 || sources_.InsertsClumps());  // inserted clumps move as rigid bodies too
   }
   PetscCall(swarm_.GlobalCount(&inserted_));
   {  // The sizes present: R_min sets the Rayleigh time (P9), R_max the neighbour cut-off.

@@ -101,6 +101,7 @@ PetscErrorCode Dem::Rebuild() {
   PetscCall(swarm_.RestoreArrays(&a));
   springs_.clear();
   ++rebuilds_;
+  clumps_.Invalidate();  // local indices changed (migration, sorting, insertion, deletion)
   PetscFunctionReturn(0);
 }
 

@@ -17,6 +17,7 @@
 
 #include <algorithm>
 #include <string>
+#include <unordered_map>
 
 namespace vofdem {
 
@@ -218,8 +219,20 @@ PetscErrorCode Dem::Load(PetscViewer viewer) {
   if (ar.SameRanks()) {
     for (size_t k = 0; k < saved; ++k) keep.push_back(k);
   } else {
-    for (size_t k = 0; k < saved; ++k)
-      if (grid_->OwnsPoint(&st.fields[iPos][3 * k])) keep.push_back(k);
+    // A clump's members stay together (P10): all go to the owner of its lowest-id member.
+    const int                                iClump = 10;
+    std::unordered_map<PetscInt64, size_t>   lead;
+    for (size_t k = 0; k < saved; ++k) {
+      const PetscInt64 c = (PetscInt64)st.fields[iClump][k];
+      if (c < 0) continue;
+      auto it = lead.find(c);
+      if (it == lead.end()) lead.emplace(c, k);
+      else if (st.fields[iId][k] < st.fields[iId][it->second]) it->second = k;
+    }
+    for (size_t k = 0; k < saved; ++k) {
+      const PetscInt64 c = (PetscInt64)st.fields[iClump][k];
+      if (grid_->OwnsPoint(&st.fields[iPos][3 * (c < 0 ? k : lead[c])])) keep.push_back(k);
+    }
   }
   PetscCall(DMSwarmSetLocalSizes(dm, (PetscInt)keep.size(), 64));
   for (int f = 0; f < kNumSwarmFields; ++f) {
@@ -285,6 +298,7 @@ PetscErrorCode Dem::Load(PetscViewer viewer) {
   stats_.maxOverlap   = st.stats[2];
   stats_.elastic      = st.stats[3];
   for (int f = 0; f < 6; ++f) std::copy_n(&st.stats[4 + 3 * f], 3, stats_.wallForce[f]);
+  clumps_.Invalidate();  // the loaded particles' local order
   PetscFunctionReturn(0);
 }
 

@@ -19,6 +19,7 @@ PetscErrorCode ParticleSources::SetFromOptions(OptionReader &opt, MPI_Comm comm,
   comm_    = comm;
   PetscCall(opt.String("-inserts", "Names of insertion sources, comma-separated; each is set by -dem_insert_<name>_* options", &names));
   sources_.clear();
+  PetscCall(library_.SetFromOptions(opt, comm));  // before the sources that name its templates
   for (const auto &n : SplitList(names)) {
     if (n.empty() || !std::all_of(n.begin(), n.end(), [](char c) { return std::isalnum((unsigned char)c); }))
       VofdemInputError(comm, "option -dem_inserts: '%s' is not a name (letters and digits only)", n.c_str());
@@ -37,6 +38,8 @@ PetscErrorCode ParticleSources::SetFromOptions(OptionReader &opt, MPI_Comm comm,
     if ((s.rate > 0) == (s.massRate > 0))
       VofdemInputError(comm, "options -dem_insert_%s_rate and -dem_insert_%s_mass_rate: give exactly one positive rate", n.c_str(), n.c_str());
     PetscCall(opt.RealVector(o("velocity").c_str(), "Initial velocity of the inserted particles", "m/s", s.velocity, 3));
+    PetscCall(opt.RealVector(o("region_velocity").c_str(), "Velocity of the region from the start time on (a feed slot moving with a spreader); insertion ends before the region leaves the box",
+                             "m/s", s.regionVelocity, 3));
     PetscCall(opt.Real(o("velocity_spread").c_str(), "Random part of the initial velocity: each component uniform in [-spread, spread]", "m/s", &s.spread,
                        RealRange::NonNegative()));
     PetscCall(opt.Real(o("start").c_str(), "Time insertion starts", "s", &s.start, RealRange::NonNegative()));
@@ -45,6 +48,7 @@ PetscErrorCode ParticleSources::SetFromOptions(OptionReader &opt, MPI_Comm comm,
     PetscCall(opt.Int(o("attempts").c_str(), "Candidate centres per particle before a round gives up (the slot is full; retried one particle period later)",
                       &s.attempts, 1));
     PetscCall(s.sizes.SetFromOptions(opt, comm, "insert_" + n + "_", radius));
+    PetscCall(ClumpsFromOptions(opt, s));  // ClumpInsertion.cpp
     std::string type = types[0];
     PetscCall(opt.String(o("type").c_str(), "Particle type of the inserted particles (default: the first of -dem_types)", &type));
     const auto it = std::find(types.begin(), types.end(), type);
@@ -69,7 +73,6 @@ PetscErrorCode ParticleSources::SetFromOptions(OptionReader &opt, MPI_Comm comm,
 
 PetscErrorCode ParticleSources::SetUp(const Grid &grid, const ParticleSwarm &swarm, std::uint64_t seed) {
   ParticleArrays a;
-  PetscInt64     top = -1, globalTop;
 
   PetscFunctionBeginUser;
   grid_ = &grid;
@@ -77,22 +80,36 @@ PetscErrorCode ParticleSources::SetUp(const Grid &grid, const ParticleSwarm &swa
     InsertionSource &s = sources_[k];
     // A stream of keys of its own per source: the sources draw independent numbers.
     s.seed             = random::Mix(seed ^ random::Mix(0x5eed0000ULL + k));
-    const PetscReal r  = s.sizes.MaxRadius();
+    const PetscReal r  = Reach(s);
     for (int d = 0; d < 3; ++d)
       if (!(s.upper[d] >= s.lower[d]) || s.lower[d] - r < grid.Lower()[d] || s.upper[d] + r > grid.Upper()[d])
         VofdemInputError(comm_, "options -dem_insert_%s_lower/-dem_insert_%s_upper: the region [%g, %g] in %c must be ordered and at least the largest radius %g m inside the box [%g, %g]",
                          s.name.c_str(), s.name.c_str(), (double)s.lower[d], (double)s.upper[d], "xyz"[d], (double)r, (double)grid.Lower()[d], (double)grid.Upper()[d]);
+    // A moving region stops inserting before it would leave the box.
+    for (int d = 0; d < 3; ++d) {
+      const PetscReal v = s.regionVelocity[d];
+      if (v > 0) s.end = std::min(s.end, s.start + (grid.Upper()[d] - r - s.upper[d]) / v);
+      if (v < 0) s.end = std::min(s.end, s.start + (grid.Lower()[d] + r - s.lower[d]) / v);
+    }
   }
+  PetscInt64 tops[2] = {-1, -1}, globalTops[2];  // largest particle id, largest clump id
   PetscCall(swarm.GetArrays(&a));
-  for (PetscInt p = 0; p < a.n; ++p) top = std::max(top, (PetscInt64)a.id[p]);
+  for (PetscInt p = 0; p < a.n; ++p) tops[0] = std::max(tops[0], (PetscInt64)a.id[p]), tops[1] = std::max(tops[1], (PetscInt64)a.clump[p]);
   PetscCall(swarm.RestoreArrays(&a));
-  PetscCallMPI(MPI_Allreduce(&top, &globalTop, 1, MPIU_INT64, MPI_MAX, comm_));
-  nextId_ = globalTop + 1;
+  PetscCallMPI(MPI_Allreduce(tops, globalTops, 2, MPIU_INT64, MPI_MAX, comm_));
+  nextId_ = globalTops[0] + 1;
+  // Inserted clumps take ids above those of the initial particles' clumps; with the id of their first
+  // member added they are unique, and the same after a restart (the initial particles are the same).
+  clumpBase_ = globalTops[1] + 1;
   PetscFunctionReturn(0);
 }
 
 void ParticleSources::RadiusRange(PetscReal *rmin, PetscReal *rmax) const {
-  for (const auto &s : sources_) *rmin = std::min(*rmin, s.sizes.MinRadius()), *rmax = std::max(*rmax, s.sizes.MaxRadius());
+  for (const auto &s : sources_) {
+    PetscReal lo, hi;
+    MemberRadii(s, &lo, &hi);
+    *rmin = std::min(*rmin, lo), *rmax = std::max(*rmax, hi);
+  }
 }
 
 // Particle `count` of a source is due once the clock has passed its turn: by number, when
@@ -144,9 +161,15 @@ PetscErrorCode ParticleSources::Delete(ParticleSwarm &swarm, ContactHistory *spr
 
   PetscFunctionBeginUser;
   PetscCall(swarm.GetArrays(&a));
+  // A rigid clump (P10) goes whole once any member's centre is in a box (its members are all on this
+  // rank); its members' mass shares add up to its mass.
+  std::unordered_set<PetscInt64> clumps;
+  for (PetscInt p = 0; p < a.n; ++p)
+    if (a.clump[p] >= 0 && InDeletionBox(&a.x[3 * p])) clumps.insert(a.clump[p]);
   std::vector<PetscInt> remove;
   for (PetscInt p = a.n - 1; p >= 0; --p)
-    if (InDeletionBox(&a.x[3 * p])) remove.push_back(p), gone.insert(a.id[p]), local[0] += 1, local[1] += a.mass[p];
+    if (InDeletionBox(&a.x[3 * p]) || (a.clump[p] >= 0 && clumps.count(a.clump[p])))
+      remove.push_back(p), gone.insert(a.id[p]), local[0] += 1, local[1] += a.mass[p];
   PetscCall(swarm.RestoreArrays(&a));
   for (PetscInt p : remove) PetscCall(DMSwarmRemovePointAtIndex(swarm.Dm(), p));
   // Their contact histories go too (pairs with a ghost partner would be dropped at the next list
@@ -162,16 +185,45 @@ PetscErrorCode ParticleSources::Delete(ParticleSwarm &swarm, ContactHistory *spr
   PetscFunctionReturn(0);
 }
 
+void ParticleSources::AppendRow(const PetscReal x[3], const PetscReal v[3], PetscReal r, PetscReal mass, PetscInt64 clump, const PetscReal lead[3],
+                                const PetscReal *rigidState) {
+  newParticles_.insert(newParticles_.end(), {x[0], x[1], x[2], v[0], v[1], v[2], r, (PetscReal)nextId_, mass, (PetscReal)clump, lead[0], lead[1], lead[2]});  // ids exact below 2^53
+  if (rigidState) newParticles_.insert(newParticles_.end(), rigidState, rigidState + kRigidWidth);
+  else newParticles_.insert(newParticles_.end(), kRigidWidth, 0.0);
+  ++nextId_, ++inserted_;
+}
+
+bool ParticleSources::TrySphere(InsertionSource &s, std::uint64_t key, PetscReal r, SphereHash &hash) {
+  PetscReal x[3], v[3];
+  bool      placed = false;
+  for (PetscInt k = 0; k < s.attempts && !placed; ++k, ++s.tries) {
+    for (int d = 0; d < 3; ++d) x[d] = s.now[d] + (s.now[3 + d] - s.now[d]) * random::Uniform(s.seed, key, 16 + 3 * (std::uint64_t)s.tries + d);
+    placed = !hash.Overlaps(x, r);
+  }
+  if (!placed) return false;
+  hash.Add(x, r);
+  for (int d = 0; d < 3; ++d) v[d] = s.velocity[d] + s.spread * (2 * random::Uniform(s.seed, key, 3 + d) - 1);
+  AppendRow(x, v, r, MassOf(s, r), -1, x, nullptr);
+  return true;
+}
+
 // Every rank gathers the particles whose centres lie within r_source + rMax of the source region
 // and runs the same sequential placement; each keeps the new particles whose centres it owns.
 PetscErrorCode ParticleSources::Insert(PetscReal t, InsertionSource &s, ParticleSwarm &swarm, PetscReal rMax) {
   ParticleArrays a;
   PetscMPIInt    size;
-  const PetscReal reach = s.sizes.MaxRadius() + rMax;
-  PetscReal       lo[3], hi[3];
+  // Every sphere that a new particle's members could touch: centres within its reach (bounding
+  // radius) plus rMax of the region; hash cells at least a largest member's plus rMax wide.
+  const PetscReal reach = Reach(s) + rMax;
+  PetscReal       lo[3], hi[3], rLo, rHi;
+  MemberRadii(s, &rLo, &rHi);
 
   PetscFunctionBeginUser;
-  for (int d = 0; d < 3; ++d) lo[d] = s.lower[d] - reach, hi[d] = s.upper[d] + reach;
+  for (int d = 0; d < 3; ++d) {  // the region now (it may move: -dem_insert_<name>_region_velocity)
+    const PetscReal shift = s.regionVelocity[d] * std::max((PetscReal)0, std::min(t, s.end) - s.start);
+    s.now[d] = s.lower[d] + shift, s.now[3 + d] = s.upper[d] + shift;
+    lo[d] = s.now[d] - reach, hi[d] = s.now[3 + d] + reach;
+  }
   near_.clear();
   PetscCall(swarm.GetArrays(&a));
   for (PetscInt p = 0; p < a.n; ++p) {
@@ -189,47 +241,38 @@ PetscErrorCode ParticleSources::Insert(PetscReal t, InsertionSource &s, Particle
   PetscCallMPI(MPI_Allgatherv(near_.data(), n, MPIU_REAL, all.data(), counts.data(), displs.data(), MPIU_REAL, comm_));
   // Whether a candidate overlaps is a yes/no over the same set on every rank: the order does not matter.
   SphereHash hash;
-  hash.Reset(lo, hi, reach, total / 4 + 64);
+  hash.Reset(lo, hi, rHi + rMax, total / 4 + 64);
   for (PetscMPIInt k = 0; k < total; k += 4) hash.Add(&all[k], all[k + 3]);
-  newParticles_.clear();  // x, y, z, vx, vy, vz, r, id per new particle
+  newParticles_.clear();  // kRow reals per new sphere or clump member
   while (Due(s, t)) {
     const std::uint64_t key = (std::uint64_t)s.count;
-    const PetscReal     r   = s.sizes.Radius(random::Uniform(s.seed, key, 6));
-    PetscReal           x[3];
-    bool                placed = false;
-    for (PetscInt k = 0; k < s.attempts && !placed; ++k, ++s.tries) {
-      for (int d = 0; d < 3; ++d) x[d] = s.lower[d] + (s.upper[d] - s.lower[d]) * random::Uniform(s.seed, key, 16 + 3 * (std::uint64_t)s.tries + d);
-      placed = !hash.Overlaps(x, r);
-    }
+    const PetscReal     r   = s.sizes.Radius(random::Uniform(s.seed, key, 6));  // clumps: volume-equivalent
+    const bool          placed = s.clumps.empty() ? TrySphere(s, key, r, hash) : TryClump(s, key, r, hash);
     if (!placed) {  // the slot is full: try again one particle period later, from fresh candidates
       ++s.blocked;
       s.retryAt = t + (s.rate > 0 ? 1 / s.rate : MassOf(s, s.sizes.Mean()) / s.massRate);
       break;
     }
-    hash.Add(x, r);
-    newParticles_.insert(newParticles_.end(), {x[0], x[1], x[2]});
-    for (int d = 0; d < 3; ++d) newParticles_.push_back(s.velocity[d] + s.spread * (2 * random::Uniform(s.seed, key, 3 + d) - 1));
-    newParticles_.push_back(r);
-    newParticles_.push_back((PetscReal)nextId_);  // exact below 2^53
-    ++nextId_, ++s.count, ++inserted_;
+    ++s.count;
     s.tries = 0;
-    s.mass += MassOf(s, r);
+    s.mass += MassOf(s, r);  // a clump's volume is that of its volume-equivalent sphere
     massInserted_ += MassOf(s, r);
   }
-  constexpr int W     = 8;
-  PetscInt      local = 0, first;
-  for (size_t k = 0; k < newParticles_.size(); k += W) local += grid_->OwnsPoint(&newParticles_[k]);
+  // Each rank keeps the new particles it owns; a clump's members all go to the owner of its first.
+  PetscInt local = 0, first;
+  for (size_t k = 0; k < newParticles_.size(); k += kRow) local += grid_->OwnsPoint(&newParticles_[k + 10]);
   PetscCall(swarm.AddLocal(local, &first));
   PetscCall(swarm.GetArrays(&a));
-  for (size_t k = 0, p = first; k < newParticles_.size(); k += W) {
+  for (size_t k = 0, p = first; k < newParticles_.size(); k += kRow) {
     const PetscReal *q = &newParticles_[k];
-    if (!grid_->OwnsPoint(q)) continue;
+    if (!grid_->OwnsPoint(q + 10)) continue;
     for (int d = 0; d < 3; ++d) a.x[3 * p + d] = a.reference[3 * p + d] = q[d], a.v[3 * p + d] = q[3 + d], a.f[3 * p + d] = a.omega[3 * p + d] = a.torque[3 * p + d] = 0;
     a.radius[p] = q[6];
-    a.mass[p]   = MassOf(s, q[6]);
     a.id[p]     = (PetscInt64)q[7];
+    a.mass[p]   = q[8];
+    a.clump[p]  = (PetscInt64)q[9];
     a.type[p]   = s.type;
-    a.clump[p]  = -1;
+    if (a.clump[p] >= 0) std::copy(q + 13, q + 13 + kRigidWidth, &a.rigid[kRigidWidth * p]);
     ++p;
   }
   PetscCall(swarm.RestoreArrays(&a));
@@ -242,8 +285,12 @@ PetscErrorCode ParticleSources::View(PetscViewer viewer) const {
     char rate[64];
     if (s.rate > 0) std::snprintf(rate, sizeof rate, "%g particles/s", (double)s.rate);
     else std::snprintf(rate, sizeof rate, "%g kg/s", (double)s.massRate);
-    PetscCall(PetscViewerASCIIPrintf(viewer, "dem: insertion '%s': %s into [%g, %g] x [%g, %g] x [%g, %g] m from t = %g s%s, velocity (%g, %g, %g) +- %g m/s; sizes: %s\n",
-                                     s.name.c_str(), rate, (double)s.lower[0], (double)s.upper[0], (double)s.lower[1], (double)s.upper[1], (double)s.lower[2],
+    std::string what = "";
+    for (size_t k = 0; k < s.clumps.size(); ++k)
+      what += (k ? ", " : "; clumps ") + library_.Name(s.clumps[k]) + " " + std::to_string((double)(s.clumpCdf[k] - (k ? s.clumpCdf[k - 1] : 0)));
+    if (!s.clumps.empty()) what += " by number, sizes of the volume-equivalent radius";
+    PetscCall(PetscViewerASCIIPrintf(viewer, "dem: insertion '%s'%s: %s into [%g, %g] x [%g, %g] x [%g, %g] m from t = %g s%s, velocity (%g, %g, %g) +- %g m/s; sizes: %s\n",
+                                     s.name.c_str(), what.c_str(), rate, (double)s.lower[0], (double)s.upper[0], (double)s.lower[1], (double)s.upper[1], (double)s.lower[2],
                                      (double)s.upper[2], (double)s.start, s.end < PETSC_MAX_REAL ? (" to " + std::to_string((double)s.end) + " s").c_str() : "",
                                      (double)s.velocity[0], (double)s.velocity[1], (double)s.velocity[2], (double)s.spread, s.sizes.Describe().c_str()));
   }

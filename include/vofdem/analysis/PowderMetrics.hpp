@@ -26,6 +26,13 @@ struct Spheres {
   std::vector<double>       x;  // 3 per sphere
   std::vector<double>       r;
   std::vector<std::int64_t> type;
+  // Rigid clumps (P10), optional (empty: every sphere is a particle): each sphere's clump id (-1:
+  // none) and the weight of its volume, V_union / sum V_members of its clump (1 for a loose sphere),
+  // so that overlapping members are not counted twice in a packing density.
+  std::vector<std::int64_t> clump;
+  std::vector<double>       weight;
+  double Weight(std::size_t i) const { return weight.empty() ? 1.0 : weight[i]; }
+  std::int64_t Clump(std::size_t i) const { return clump.empty() ? -1 : clump[i]; }
   // Periodic directions wrap at the box [lower, upper] (minimum image; the box must be wider than
   // three largest diameters in a periodic direction).
   bool   periodic[3] = {false, false, false};

@@ -52,6 +52,9 @@ public:
   bool     Any() const { return any_; }
   PetscInt ShapesComputed() const { return shapes_; }  // union quadratures SetUp ran (the rest were rotations)
   void SetAny(bool any) { any_ = any; }
+  // The local particles were reordered, added or removed (Dem::Rebuild, Dem::Load): the members of
+  // each clump are regrouped at the next use (not at every kick: grouping is most of a clump step).
+  void Invalidate() { stale_ = true; }
   // Half kick of every local clump with its members' forces and torques (then, with drift, the move).
   void Kick(const ParticleArrays &a, PetscReal dt, bool drift) const;
   // Kinetic energy of the local clumps: translational and rotational.
@@ -63,6 +66,8 @@ private:
   PetscInt shapes_ = 0;
   PetscReal gravity_[3] = {0, 0, 0};
   mutable std::unordered_map<PetscInt64, std::vector<PetscInt>> members_;
+  mutable bool     stale_    = true;
+  mutable PetscInt groupedN_ = -1;  // a.n when grouped: a changed count regroups even without Invalidate()
 };
 
 }  // namespace vofdem
