@@ -35,7 +35,7 @@ PetscErrorCode Coupling::SetFromOptions(MPI_Comm comm) {
     if (sm.size() != 1) VofdemInputError(comm, "option -coupling_smoothing: give one of kernel, diffusion, auto");
     smoothing_.method = sm[0] == "kernel" ? Smoothing::Method::Kernel : sm[0] == "diffusion" ? Smoothing::Method::Diffusion : Smoothing::Method::Auto;
     PetscCall(opt.Int("-smoothing_steps", "Backward-Euler pseudo-steps of the diffusion smoothing (the variance added is the same for any number; more steps: closer to a Gaussian)", &smoothing_.steps, 1));
-    PetscCall(opt.Real("-smoothing_crossover", "auto: diffusion when the kernel's points summed over all particles exceed this many times the grid's cells (scripts/smoothing-cost)", "-", &smoothing_.crossover,
+    PetscCall(opt.Real("-smoothing_crossover", "auto: diffusion when the kernel's points summed over all particles exceed this many times the grid's cells times the diffusion's sweeps (pseudo-steps x Chebyshev iterations; scripts/smoothing-cost)", "-", &smoothing_.crossover,
                        RealRange::Positive()));
     PetscCall(opt.Real("-kernel_truncation", "Cut-off of the truncated Gaussian kernel, in widths H (seed 000: 1.2-1.5)", "-", &kernel_.truncation, RealRange::LeftOpen(0, 10)));
     std::vector<std::string> d = {drag::Name(law_)};

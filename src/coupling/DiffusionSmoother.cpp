@@ -33,11 +33,20 @@ PetscErrorCode DiffusionSmoother::CreateSolver(MPI_Comm comm, const char *prefix
   PetscCall(KSPSetNormType(*ksp, KSP_NORM_NONE));
   // 1e-6: S is a fixed polynomial, so conservation and adjointness hold to round-off at any tolerance; it only
   // sets how closely S follows backward Euler (the smoothing's shape), and halves the iterations of 1e-10.
-  PetscCall(KSPSetTolerances(*ksp, 1e-6, PETSC_DEFAULT, PETSC_DEFAULT, PETSC_DEFAULT));
+  PetscCall(KSPSetTolerances(*ksp, kDefaultTolerance, PETSC_DEFAULT, PETSC_DEFAULT, PETSC_DEFAULT));
   PetscCall(KSPSetInitialGuessNonzero(*ksp, PETSC_TRUE));  // the field before the step
   PetscCall(KSPSetOptionsPrefix(*ksp, prefix));
   PetscCall(KSPSetFromOptions(*ksp));
   PetscFunctionReturn(0);
+}
+
+// Error after n iterations <= 2 r^n of the initial one, r = (sqrt(k) - 1)/(sqrt(k) + 1), k = emax/emin the
+// spectrum bounds' ratio.
+PetscInt DiffusionSmoother::ChebyshevIterations(const PetscReal spread[3], PetscInt steps, const PetscReal h[3], PetscReal rtol) {
+  PetscReal sum = 0;
+  for (int e = 0; e < 3; ++e) sum += spread[e] / (2.0 * steps * h[e] * h[e]);
+  const PetscReal sk = std::sqrt(1 + 4 * sum), r = (sk - 1) / (sk + 1);
+  return std::max((PetscInt)1, (PetscInt)std::ceil(std::log(rtol / 2) / std::log(r)));
 }
 
 // The matrix I - tau sum_e D_e d^2/dx_e^2 of location loc (tau D_e = b_e^2/(2 steps)): the usual 7-point
@@ -111,15 +120,11 @@ PetscErrorCode DiffusionSmoother::Assemble(int loc) {
   PetscBool chebyshev;
   PetscCall(PetscObjectTypeCompare((PetscObject)ksp_[loc], KSPCHEBYSHEV, &chebyshev));
   if (chebyshev) {
-    // Error after n iterations <= 2 r^n of the initial one, r = (sqrt(k) - 1)/(sqrt(k) + 1), k = emax/emin:
-    // n from the tolerance -<prefix>ksp_rtol.
-    const PetscReal emax = 1 + 4 * (a[0] + a[1] + a[2]), sk = std::sqrt(emax), r = (sk - 1) / (sk + 1);
-    PetscReal       rtol, atol, dtol;
-    PetscInt        maxit;
+    PetscReal rtol, atol, dtol;
+    PetscInt  maxit;
     PetscCall(KSPGetTolerances(ksp_[loc], &rtol, &atol, &dtol, &maxit));
-    const PetscInt n = std::max((PetscInt)1, (PetscInt)std::ceil(std::log(rtol / 2) / std::log(r)));
-    PetscCall(KSPSetTolerances(ksp_[loc], rtol, atol, dtol, n));
-    PetscCall(KSPChebyshevSetEigenvalues(ksp_[loc], emax, 1.0));
+    PetscCall(KSPSetTolerances(ksp_[loc], rtol, atol, dtol, ChebyshevIterations(spread_, steps_, h, rtol)));
+    PetscCall(KSPChebyshevSetEigenvalues(ksp_[loc], 1 + 4 * (a[0] + a[1] + a[2]), 1.0));
   }
   PetscCall(KSPSetUp(ksp_[loc]));
   PetscFunctionReturn(0);

@@ -46,13 +46,15 @@ PetscErrorCode Smoothing::SetUp(const StaggeredGrid &sg, const KernelAverager::S
   diffusion_ = s.method == Method::Diffusion;
   if (s.method == Method::Auto && fits) {
     // The kernel visits about (4/3) pi (rc/h)^3 points per particle and location; the diffusion does
-    // a few CG sweeps over every point. Diffusion when the first exceeds crossover times the grid.
-    const PetscReal rc = kernel::Cutoff(k.shape, H, k.truncation);
+    // steps x n Chebyshev sweeps over every point (n from the spectrum, DiffusionSmoother). Diffusion when
+    // the first exceeds crossover times the second (scripts/smoothing-cost, results/smoothing-cost.md).
+    const PetscReal rc      = kernel::Cutoff(k.shape, H, k.truncation);
     const PetscReal support = 4.0 / 3.0 * PETSC_PI * rc * rc * rc / (h[0] * h[1] * h[2]);
     const PetscReal points  = (PetscReal)grid.Cells()[0] * grid.Cells()[1] * grid.Cells()[2];
-    diffusion_ = particles * support > s.crossover * points;
-    PetscCall(PetscInfo(nullptr, "coupling: kernel points over all particles / cells = %g (crossover %g): %s\n", (double)(particles * support / points), (double)s.crossover,
-                        diffusion_ ? "diffusion" : "kernel"));
+    const PetscReal sweeps  = (PetscReal)s.steps * DiffusionSmoother::ChebyshevIterations(spread_, s.steps, h, DiffusionSmoother::kDefaultTolerance);
+    diffusion_ = particles * support > s.crossover * points * sweeps;
+    PetscCall(PetscInfo(nullptr, "coupling: kernel points over all particles / (cells x diffusion sweeps) = %g (crossover %g): %s\n", (double)(particles * support / (points * sweeps)),
+                        (double)s.crossover, diffusion_ ? "diffusion" : "kernel"));
   }
   if (diffusion_) PetscCall(smoother_.SetUp(sg, spread_, s.steps, margin, "coupling_smoothing_"));
   else PetscCall(kernel_.SetUp(sg, k, kernel::Cutoff(k.shape, H, k.truncation), margin));

@@ -54,6 +54,10 @@ public:
   // The smoothing's solver (Chebyshev, no preconditioner, no norms, rtol 1e-6; the prefix's options applied).
   static PetscErrorCode CreateSolver(MPI_Comm comm, const char *prefix, KSP *ksp);
 
+  // The Chebyshev iterations per pseudo-step for tolerance rtol (spectrum bounds [1, 1 + 4 sum_e a_e]).
+  static PetscInt ChebyshevIterations(const PetscReal spread[3], PetscInt steps, const PetscReal h[3], PetscReal rtol);
+  static constexpr PetscReal kDefaultTolerance = 1e-6;
+
   // v <- S v on location loc (global vector of the location), total kept. Collective.
   PetscErrorCode Smooth(int loc, Vec v);
 

@@ -17,8 +17,9 @@ public:
     Method   method = Method::Auto;
     PetscInt steps  = 2;    // backward-Euler pseudo-steps of the diffusion
     // auto: diffusion when the kernel's points summed over the particles exceed this many times the
-    // grid's points (scripts/smoothing-cost measured the cross-over)
-    PetscReal crossover = 150;
+    // grid's points times the diffusion's sweeps (steps x Chebyshev iterations); scripts/smoothing-cost
+    // measured 1.8 (kernel faster on 2 ranks, slower on 1), 3.6 and 40 (diffusion faster) in the bubbling bed
+    PetscReal crossover = 2.5;
   };
   // The kernel's variance per direction (m^2) for width H (quadrature of kernel::Weight; 8 H^2/13 smooth).
   static PetscReal KernelVariance(kernel::Shape s, PetscReal H, PetscReal truncation);
