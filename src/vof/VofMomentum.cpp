@@ -132,6 +132,7 @@ PetscErrorCode Vof::CheckFlowOptions(const Flow &flow) {
     VofdemInputError(grid_->Comm(), "option -flow_advection central: unbounded and unstable with the forward-Euler momentum transport of -vof_momentum consistent; "
                                     "choose a limiter (e.g. vanleer) or -vof_momentum advective");
   PetscCall(CheckContactAngleFaces(flow));
+  PetscCall(CheckOpenFaces(flow));
   PetscFunctionReturn(0);
 }
 
