@@ -23,9 +23,10 @@
 // phase that is coming in; beyond an outflow face they stay zero-gradient (MirrorBoundary).
 // Momentum (VofMomentum.cpp) takes the sweeps' phase-1 fluxes, these included: the mass entering is
 // rho(A) u_in per unit area and time, the momentum it brings rho(A) u_in u_in.
-// Not done here: the flow's own cell ghosts of density and viscosity stay zero-gradient
-// (FlowBoundary::FillCellGhosts); at an inflow face they are used only by the viscous stress of the
-// boundary edge (the normal velocity there is prescribed).
+// The flow's ghost cells of density and viscosity beyond an inflow face (zero-gradient in
+// FlowBoundary::FillCellGhosts) take the entering mixture through Flow::SetPropertyGhosts; they are
+// read by the viscous stress of the face's edges (the normal velocity there is prescribed). Beyond an
+// outflow face they stay zero-gradient: the density of the fluid leaving.
 #include "vofdem/vof/Vof.hpp"
 
 #include "vofdem/core/Options.hpp"
@@ -149,6 +150,42 @@ PetscErrorCode Vof::OpenFaceGhosts(Vec local) const {
         }
   }
   PetscCall(DMDAVecRestoreArray(da_, local, &a));
+  PetscFunctionReturn(0);
+}
+
+// The flow's density and viscosity ghosts beyond inflow faces: the mixture of the entering fraction
+// (as UpdateProperties mixes them), times the ghost's eps (zero-gradient, the flow's).
+PetscErrorCode Vof::InflowPropertyGhosts(const void *ctx, const Flow &flow, Vec epsLocal, Vec emLocal, Vec betaLocal) {
+  const Vof           &v  = *static_cast<const Vof *>(ctx);
+  const StaggeredGrid &sg = flow.Staggered();
+  LocalField           e, m, b;
+  PetscInt             gs[3], gm[3];
+
+  PetscFunctionBeginUser;
+  const PetscReal rho0 = flow.ReferenceDensity(), mu0 = flow.ReferenceViscosity();
+  const PetscInt *N = v.grid_->Cells();
+  PetscCall(DMDAGetGhostCorners(sg.Cells(), &gs[0], &gs[1], &gs[2], &gm[0], &gm[1], &gm[2]));
+  PetscCall(sg.GetLocal(3, epsLocal, &e));
+  PetscCall(sg.GetLocal(3, emLocal, &m));
+  PetscCall(sg.GetLocal(3, betaLocal, &b));
+  for (int f = 0; f < 6; ++f) {
+    if (v.openType_[f] != 1) continue;
+    const int d = f / 2;
+    PetscInt  lo[3] = {gs[0], gs[1], gs[2]}, hi[3] = {gs[0] + gm[0], gs[1] + gm[1], gs[2] + gm[2]};
+    if (f % 2 == 0) hi[d] = std::min(hi[d], (PetscInt)0);
+    else lo[d] = std::max(lo[d], N[d]);
+    for (PetscInt k = lo[2]; k < hi[2]; ++k)
+      for (PetscInt j = lo[1]; j < hi[1]; ++j)
+        for (PetscInt i = lo[0]; i < hi[0]; ++i) {
+          const PetscInt  q[3] = {i, j, k};
+          const PetscReal a = v.EnteringFraction(f, q), eps = PetscRealPart(e.at(q));
+          m.at(q)              = eps * (a * v.viscosity_ + (1 - a) * mu0);
+          b.at(q)              = eps / (a * v.density_ + (1 - a) * rho0);
+        }
+  }
+  PetscCall(sg.RestoreLocal(3, betaLocal, &b));
+  PetscCall(sg.RestoreLocal(3, emLocal, &m));
+  PetscCall(sg.RestoreLocal(3, epsLocal, &e));
   PetscFunctionReturn(0);
 }
 

@@ -116,7 +116,7 @@ public:
   bool HasOpenFaces() const;
 
 private:
-  PetscErrorCode FillGhosts();  // alpha_ -> alphaLocal_, boundary layers by zero gradient, then the contact angles
+  PetscErrorCode FillGhosts();  // alpha_ -> alphaLocal_, boundary layers by zero gradient, then inflow faces' entering fraction, then the contact angles
   PetscErrorCode MirrorBoundary(Vec local) const;  // a local vector of da_: boundary layers by zero gradient
   // Contact angles (VofContactAngle.cpp): the options (inside SetFromOptions' block), the check
   // against the flow's face types (CheckFlowOptions), and the ghost layers of alpha beyond every
@@ -135,6 +135,8 @@ private:
   double         EnteringFraction(int face, const PetscInt q[3]) const;
   int            OpenDonorFace(int d, const PetscInt q[3], PetscReal vel) const;
   PetscErrorCode SaveOpenFaces(PetscViewer viewer) const;
+  // The flow's hook (Flow::SetPropertyGhosts): eps mu and eps/rho beyond inflow faces from the entering fraction.
+  static PetscErrorCode InflowPropertyGhosts(const void *ctx, const Flow &flow, Vec epsLocal, Vec emLocal, Vec betaLocal);
   PetscErrorCode LoadOpenFaces(PetscViewer viewer);
   PetscErrorCode FluidFractionGhosts();  // eps_, epsChange_ -> epsLocal_, changeLocal_ (VofFluidFraction.cpp)
   // Sweep `stage` (1-3) of a step along d.
