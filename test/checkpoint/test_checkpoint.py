@@ -52,7 +52,7 @@ SCENES = {
             "-grid_cells 40,20,2 -grid_upper 0.28575,0.142875,0.0142875 -vof_boxes 0,0,0,0.05715,0.1143,0.0142875".split(), 20, (20, 20)),
     # Open faces (issue 8): the water jet entering through a band of the inflow face, falling, leaving through
     # the outflow faces (config/scenes/liquid-jet.yaml, coarser); the volumes in and out must come back too.
-    "vofopen": (["-options_file_yaml", os.path.join(ROOT, "config", "scenes", "liquid-jet.yaml")] + "-grid_cells 24,12,2".split(), 20, (20, 20)),
+    "vofopen": (["-options_file_yaml", os.path.join(ROOT, "config", "scenes", "liquid-jet.yaml")] + "-grid_cells 24,12,2".split(), 10, (10, 10)),
     # -physics dem,flow (issue 7): 20 spheres settling and colliding in a fluid; the particles' drag
     # impulses (swarm fields) and the coupling's last step length carry the exchange across a restart.
     "coupled": ("-physics dem,flow -grid_cells 8,8,12 -grid_upper 0.008,0.008,0.012 -dem_radius 5e-4 -dem_density 2500 -dem_fill_count 20 "
