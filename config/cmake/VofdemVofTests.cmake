@@ -77,9 +77,10 @@ vofdem_bad_input(vof_open_unknown_face "unknown or unused option -vof_bc_xmid_al
 vofdem_bad_input(vof_open_band_count  "option -vof_bc_xlo_alpha_band: give lo,hi or lo,hi,lo2,hi2 \\(m\\), got 3 numbers" ${_vof_open} -vof_bc_xlo_alpha_band 0.1,0.2,0.3)
 vofdem_bad_input(vof_open_band_order  "option -vof_bc_xlo_alpha_band: lo 0.5 must be below hi 0.2" ${_vof_open} -vof_bc_xlo_alpha_band 0.5,0.2)
 vofdem_bad_input(vof_open_band_outflow "option -vof_bc_xhi_alpha_band: face xhi is outflow. a band is for an inflow face" ${_vof_open} -vof_bc_xhi_alpha_band 0,0.5)
-# The water-jet scene loads and steps; the monitor prints the volumes in and out and the balance.
+# The water-jet scene loads and steps; the monitor prints the volumes in and out and the balance (below 1e-12: round-off
+# plus the Weymouth-Yue term c_i dt div(u) of the projection's residual divergence).
 add_test(NAME vof/liquid_jet_scene
          COMMAND $<TARGET_FILE:vofdem_app> -options_file_yaml ${CMAKE_CURRENT_SOURCE_DIR}/config/scenes/liquid-jet.yaml -grid_cells 24,12,2 -max_steps 20 -monitor_every 20)
 set_tests_properties(vof/liquid_jet_scene PROPERTIES LABELS "quick;vof" PROCESSORS 1 TIMEOUT 120
-                     PASS_REGULAR_EXPRESSION "inflow face xlo brings phase 1 at fraction 1\\.? through the band 0.0875\\.\\.0.1125 m.*step +20 .*in [0-9.e+-]+ out [0-9.e+-]+ m\\^3  balance -?[0-9.]+e-1[5-9].*finished after 20 steps"
+                     PASS_REGULAR_EXPRESSION "inflow face xlo brings phase 1 at fraction 1\\.? through the band 0.0875\\.\\.0.1125 m.*step +20 .*in [0-9.e+-]+ out [0-9.e+-]+ m\\^3  balance -?[0-9.]+e-1[3-9].*finished after 20 steps"
                      ENVIRONMENT "OMPI_ALLOW_RUN_AS_ROOT=1;OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1;OMP_NUM_THREADS=1")

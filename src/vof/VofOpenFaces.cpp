@@ -22,7 +22,8 @@
 // share), so Youngs' and the height-function normals and the curvature of the cells inside see the
 // phase that is coming in; beyond an outflow face they stay zero-gradient (MirrorBoundary).
 // Momentum (VofMomentum.cpp) takes the sweeps' phase-1 fluxes, these included: the mass entering is
-// rho(A) u_in per unit area and time, the momentum it brings rho(A) u_in u_in.
+// rho(A) u_in per unit area and time, the momentum it brings rho(A) u_in u_in (the tangential
+// components' ghosts hold the inflow's value: InflowVelocityGhosts).
 // The flow's ghost cells of density and viscosity beyond an inflow face (zero-gradient in
 // FlowBoundary::FillCellGhosts) take the entering mixture through Flow::SetPropertyGhosts; they are
 // read by the viscous stress of the face's edges (the normal velocity there is prescribed). Beyond an
@@ -186,6 +187,45 @@ PetscErrorCode Vof::InflowPropertyGhosts(const void *ctx, const Flow &flow, Vec 
   PetscCall(sg.RestoreLocal(3, betaLocal, &b));
   PetscCall(sg.RestoreLocal(3, emLocal, &m));
   PetscCall(sg.RestoreLocal(3, epsLocal, &e));
+  PetscFunctionReturn(0);
+}
+
+// The face value the momentum sweep takes upwind of an inflow face is the first ghost's: for a
+// tangential component the flow's ghost is the reflection 2 v_in - v_inside (its viscous stress needs
+// that), which would bring in minus the velocity inside; the fluid coming in has v_in. So the
+// transported copy's ghost layers beyond an inflow face hold v_in (the normal component's already hold
+// the inflow velocity). Only with open faces, on the VOF's private copy of the velocity.
+PetscErrorCode Vof::InflowVelocityGhosts(const Flow &flow, int c, Vec local) const {
+  LocalField u;
+  PetscInt   gs[3], gm[3];
+
+  PetscFunctionBeginUser;
+  bool any = false;
+  for (int f = 0; f < 6; ++f) any = any || (openType_[f] == 1 && f / 2 != c);
+  if (!any) PetscFunctionReturn(0);
+  const StaggeredGrid &sg = *sg_;
+  const FlowBoundary  &bc = flow.Boundary();
+  const PetscReal     *lo = grid_->Lower(), *h = grid_->Spacing();
+  PetscCall(DMDAGetGhostCorners(sg.Face(c), &gs[0], &gs[1], &gs[2], &gm[0], &gm[1], &gm[2]));
+  PetscCall(sg.GetLocal(c, local, &u));
+  for (int f = 0; f < 6; ++f) {
+    const int d = f / 2;
+    if (openType_[f] != 1 || d == c) continue;
+    const PetscInt last = sg.Points(c, d) - 1;  // c's points along d are cells (d != c): 0 .. N_d - 1
+    PetscInt       a[3] = {gs[0], gs[1], gs[2]}, b[3] = {gs[0] + gm[0], gs[1] + gm[1], gs[2] + gm[2]};
+    if (f % 2 == 0) b[d] = std::min(b[d], (PetscInt)0);
+    else a[d] = std::max(a[d], last + 1);
+    for (PetscInt k = a[2]; k < b[2]; ++k)
+      for (PetscInt j = a[1]; j < b[1]; ++j)
+        for (PetscInt i = a[0]; i < b[0]; ++i) {
+          const PetscInt q[3] = {i, j, k};
+          PetscReal      x[3];
+          for (int e = 0; e < 3; ++e) x[e] = lo[e] + (e == c ? q[e] : q[e] + 0.5) * h[e];
+          x[d]    = f % 2 ? grid_->Upper()[d] : lo[d];  // on the face (a parabolic profile's value there)
+          u.at(q) = bc.Prescribed(f, c, x);
+        }
+  }
+  PetscCall(sg.RestoreLocal(c, local, &u));
   PetscFunctionReturn(0);
 }
 

@@ -135,6 +135,9 @@ private:
   double         EnteringFraction(int face, const PetscInt q[3]) const;
   int            OpenDonorFace(int d, const PetscInt q[3], PetscReal vel) const;
   PetscErrorCode SaveOpenFaces(PetscViewer viewer) const;
+  // The transported velocity's ghosts beyond inflow faces, tangential components: the inflow's own
+  // value (the fluid coming in), instead of the flow's reflection about it.
+  PetscErrorCode InflowVelocityGhosts(const Flow &flow, int c, Vec local) const;
   // The flow's hook (Flow::SetPropertyGhosts): eps mu and eps/rho beyond inflow faces from the entering fraction.
   static PetscErrorCode InflowPropertyGhosts(const void *ctx, const Flow &flow, Vec epsLocal, Vec emLocal, Vec betaLocal);
   PetscErrorCode LoadOpenFaces(PetscViewer viewer);
