@@ -67,3 +67,20 @@ vofdem_bad_input(vof_contact_angle_alone "option -vof_contact_angle_faces: needs
 vofdem_bad_input(vof_contact_angle_periodic "option -vof_contact_angle_faces: face xlo is periodic" ${_vof_ca} -grid_periodic x -vof_contact_angle 60 -vof_contact_angle_faces xlo)
 vofdem_bad_input(vof_contact_angle_open  "option -vof_contact_angle: face zhi is outflow \\(-flow_bc_zhi\\)" ${_vof_ca} -flow_bc_zhi outflow -vof_contact_angle 60 -vof_contact_angle_faces zlo,zhi)
 vofdem_bad_input(vof_contact_angle_thin  "option -vof_contact_angle: face ylo needs at least 4 cells across the box in y, got 2" -physics flow,vof -grid_cells 8,2,8 -max_steps 1 -vof_contact_angle 60)
+
+# Open faces (-vof_bc_<face>_alpha[_band], src/vof/VofOpenFaces.cpp; ex46 is the open channel).
+set(_vof_open -physics flow,vof -grid_cells 8,8,8 -max_steps 1 -flow_bc_xlo inflow -flow_bc_xlo_velocity 1,0,0 -flow_bc_xhi outflow)
+vofdem_bad_input(vof_open_alpha_range "option -vof_bc_xlo_alpha: 1.5 is out of range" ${_vof_open} -vof_bc_xlo_alpha 1.5)
+vofdem_bad_input(vof_open_alpha_wall  "option -vof_bc_ylo_alpha: face ylo is wall \\(-flow_bc_ylo\\). only inflow and outflow faces" ${_vof_open} -vof_bc_ylo_alpha 1)
+vofdem_bad_input(vof_open_band_slip   "option -vof_bc_zhi_alpha_band: face zhi is slip" ${_vof_open} -flow_bc_zhi slip -vof_bc_zhi_alpha_band 0,0.5)
+vofdem_bad_input(vof_open_unknown_face "unknown or unused option -vof_bc_xmid_alpha" ${_vof_open} -vof_bc_xmid_alpha 1)
+vofdem_bad_input(vof_open_band_count  "option -vof_bc_xlo_alpha_band: give lo,hi or lo,hi,lo2,hi2 \\(m\\), got 3 numbers" ${_vof_open} -vof_bc_xlo_alpha_band 0.1,0.2,0.3)
+vofdem_bad_input(vof_open_band_order  "option -vof_bc_xlo_alpha_band: lo 0.5 must be below hi 0.2" ${_vof_open} -vof_bc_xlo_alpha_band 0.5,0.2)
+vofdem_bad_input(vof_open_band_outflow "option -vof_bc_xhi_alpha_band: face xhi is outflow. a band is for an inflow face" ${_vof_open} -vof_bc_xhi_alpha_band 0,0.5)
+# The water-jet scene loads and steps; the monitor prints the volumes in and out and the balance (below 1e-12: round-off
+# plus the Weymouth-Yue term c_i dt div(u) of the projection's residual divergence).
+add_test(NAME vof/liquid_jet_scene
+         COMMAND $<TARGET_FILE:vofdem_app> -options_file_yaml ${CMAKE_CURRENT_SOURCE_DIR}/config/scenes/liquid-jet.yaml -grid_cells 24,12,2 -max_steps 20 -monitor_every 20)
+set_tests_properties(vof/liquid_jet_scene PROPERTIES LABELS "quick;vof" PROCESSORS 1 TIMEOUT 120
+                     PASS_REGULAR_EXPRESSION "inflow face xlo brings phase 1 at fraction 1\\.? through the band 0.0875\\.\\.0.1125 m.*step +20 .*in [0-9.e+-]+ out [0-9.e+-]+ m\\^3  balance -?[0-9.]+e-1[3-9].*finished after 20 steps"
+                     ENVIRONMENT "OMPI_ALLOW_RUN_AS_ROOT=1;OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1;OMP_NUM_THREADS=1")

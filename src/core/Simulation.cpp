@@ -144,11 +144,12 @@ PetscErrorCode Simulation::SetUp() {
       if (!ec) csv_ = std::fopen(path.c_str(), append ? "a" : "w");
       ok = csv_ != nullptr;
       if (csv_ && !append)
-        std::fprintf(csv_, "step,time_s,dt_s,particles,kinetic_energy_J,rotational_energy_J,pair_contacts,coordination,wall_contacts,max_overlap_per_diameter,floor_force_z_N,inserted,deleted,wall_time_s%s%s%s%s%s\n",
+        std::fprintf(csv_, "step,time_s,dt_s,particles,kinetic_energy_J,rotational_energy_J,pair_contacts,coordination,wall_contacts,max_overlap_per_diameter,floor_force_z_N,inserted,deleted,wall_time_s%s%s%s%s%s%s\n",
                      physics_.dem ? dem_->WallLoadColumns().c_str() : "", physics_.dem ? dem_->MonitorHeader().c_str() : "",
                      physics_.flow ? ",flow_kinetic_energy_J,flow_max_velocity_m_s,flow_max_divergence_1_s,flow_cfl,pressure_iterations,pressure_residual,pressure_pc_reused,viscous_iterations" : "",
                      physics_.vof ? (coupling_ ? ",vof_volume_m3,vof_volume_relative_change,vof_bound_violation,vof_interface_cells,vof_phase0_volume_m3,vof_phase0_volume_relative_change"
                                                : ",vof_volume_m3,vof_volume_relative_change,vof_bound_violation,vof_interface_cells") : "",
+                     physics_.vof && vof_->HasOpenFaces() ? ",vof_inflow_volume_m3,vof_outflow_volume_m3,vof_balance_error" : "",
                      coupling_ ? ",coupling_min_eps,coupling_eps_clipped_cells,coupling_drag_x_N,coupling_drag_y_N,coupling_drag_z_N,coupling_exchange_error,coupling_volume_error" : "");
     }
     PetscCallMPI(MPI_Allreduce(&ok, &allOk, 1, MPI_INT, MPI_MIN, comm_));
@@ -357,6 +358,14 @@ PetscErrorCode Simulation::Monitor() {
       std::snprintf(vb, sizeof vb, "  phase-0 volume %.10e m^3  rel. change %.2e", (double)vs.otherVolume, (double)otherErr);
       flowScreen += vb;
       std::snprintf(vb, sizeof vb, ",%.16e,%.6e", (double)vs.otherVolume, (double)otherErr);
+      extraCsv += vb;
+    }
+    if (vs.openFaces) {  // inflow/outflow (VofOpenFaces.cpp): V - V0 = in - out, the error relative to the largest of the four
+      const PetscReal scale = std::max({vofVolume0_, vs.volume, vs.inflowVolume, vs.outflowVolume, (PetscReal)PETSC_SMALL});
+      const PetscReal balance = (vs.volume - vofVolume0_ - (vs.inflowVolume - vs.outflowVolume)) / scale;
+      std::snprintf(vb, sizeof vb, "  in %.6e out %.6e m^3  balance %.1e", (double)vs.inflowVolume, (double)vs.outflowVolume, (double)balance);
+      flowScreen += vb;
+      std::snprintf(vb, sizeof vb, ",%.16e,%.16e,%.6e", (double)vs.inflowVolume, (double)vs.outflowVolume, (double)balance);
       extraCsv += vb;
     }
   }

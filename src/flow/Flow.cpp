@@ -235,6 +235,7 @@ PetscErrorCode Flow::UpdateLocals(bool properties) {
     PetscCall(bc_.FillCellGhosts(sg_, betaLocal_));
     PetscCall(DMGlobalToLocal(sg_.Cells(), eps_, INSERT_VALUES, epsLocal_));
     PetscCall(bc_.FillCellGhosts(sg_, epsLocal_));
+    if (propertyGhosts_) PetscCall(propertyGhosts_(propertyGhostsCtx_, *this, epsLocal_, emLocal_, betaLocal_));
     // with a relaxation the projection sets its own coefficient (FlowDragProjection.cpp)
     if (!relaxRate_[0]) PetscCall(pressure_.SetCoefficient(beta_, "flow: eps/rho"));
     propertiesDirty_ = false;

@@ -45,6 +45,7 @@ PetscErrorCode Vof::SetFromOptions(const Grid &grid) {
     PetscCall(opt.Real("-cfl", "Courant number of each split sweep, max |u_d| dt / h_d; at most 1/2 keeps alpha in [0, 1] (Weymouth & Yue 2010)", "-", &cfl_,
                        RealRange::LeftOpen(0, 0.5)));
     PetscCall(ReadContactAngleOptions(opt));
+    PetscCall(ReadOpenFaceOptions(opt));
   }
   PetscOptionsEnd();
   PetscFunctionReturn(0);
@@ -138,6 +139,7 @@ PetscErrorCode Vof::FillGhosts() {
   PetscFunctionBeginUser;
   PetscCall(DMGlobalToLocal(da_, alpha_, INSERT_VALUES, alphaLocal_));
   PetscCall(MirrorBoundary(alphaLocal_));
+  PetscCall(OpenFaceGhosts(alphaLocal_));      // nothing unless a face is inflow (VofOpenFaces.cpp)
   PetscCall(ContactAngleGhosts(alphaLocal_));  // nothing unless a face's angle is not 90 degrees
   PetscFunctionReturn(0);
 }
@@ -218,6 +220,9 @@ PetscErrorCode Vof::Summarize(VofSummary *out) const {
   out->boundViolation = std::max({gmax[2], gmax[0], gmax[1] - 1, (PetscReal)0});
   out->heightNormals  = heightShare_;  // already global (Advect)
   out->missingCurvature = missingCurvature_;
+  out->openFaces        = HasOpenFaces();
+  out->inflowVolume     = openVolume_[0];  // already global (Advect)
+  out->outflowVolume    = openVolume_[1];
   PetscFunctionReturn(0);
 }
 
@@ -241,6 +246,7 @@ PetscErrorCode Vof::Save(PetscViewer viewer) const {
   PetscCall(VecAssemblyEnd(scalars));
   PetscCall(VecView(scalars, viewer));
   PetscCall(VecDestroy(&scalars));
+  if (HasOpenFaces()) PetscCall(SaveOpenFaces(viewer));
   PetscFunctionReturn(0);
 }
 
@@ -266,6 +272,7 @@ PetscErrorCode Vof::Load(PetscViewer viewer) {
   steps_          = (PetscInt)s[0];
   boundViolation_ = s[1];  // the largest seen on any rank: a bound, the same on every rank count
   heightShare_    = s[2];
+  if (HasOpenFaces()) PetscCall(LoadOpenFaces(viewer));
   PetscCall(FillGhosts());
   PetscFunctionReturn(0);
 }
@@ -277,6 +284,15 @@ PetscErrorCode Vof::View(PetscViewer viewer) const {
                                    momentum_ == VofMomentum::Consistent ? "mass-consistent" : "advective (non-conservative)", (int)(boxes_.size() / 6), (int)(spheres_.size() / 4)));
   for (int f = 0; f < 6; ++f)
     if (contactAngle_[f] != 90) PetscCall(PetscViewerASCIIPrintf(viewer, "vof: contact angle %g degrees (through phase 1) on face %s\n", (double)contactAngle_[f], FlowBoundary::FaceName(f)));
+  for (int f = 0; f < 6; ++f) {
+    if (openType_[f] == 1 && openBand_[f].empty())
+      PetscCall(PetscViewerASCIIPrintf(viewer, "vof: inflow face %s brings phase 1 at fraction %g\n", FlowBoundary::FaceName(f), (double)openAlpha_[f]));
+    else if (openType_[f] == 1)
+      PetscCall(PetscViewerASCIIPrintf(viewer, "vof: inflow face %s brings phase 1 at fraction %g through the band %g..%g m%s, phase 0 elsewhere\n", FlowBoundary::FaceName(f),
+                                       (double)openAlpha_[f], (double)openBand_[f][0], (double)openBand_[f][1], openBand_[f].size() == 4 ? " (and a second band along the other axis)" : ""));
+    else if (openType_[f] == 2)
+      PetscCall(PetscViewerASCIIPrintf(viewer, "vof: outflow face %s: fluid leaves with its own alpha, backflow brings fraction %g\n", FlowBoundary::FaceName(f), (double)openAlpha_[f]));
+  }
   PetscFunctionReturn(0);
 }
 

@@ -115,6 +115,7 @@ PetscErrorCode Vof::Sweep(int d, int stage, Vec const uLocal[3], PetscReal dt, P
 
   PetscFunctionBeginUser;
   const PetscReal h = grid_->Spacing()[d], r = dt / h;
+  const double    cellVolume = grid_->Spacing()[0] * grid_->Spacing()[1] * grid_->Spacing()[2];
   PetscCall(DMDAGetCorners(da_, &s[0], &s[1], &s[2], &n[0], &n[1], &n[2]));
   PetscCall(DMDAGetGhostCorners(da_, &gs[0], &gs[1], &gs[2], &gm[0], &gm[1], &gm[2]));
   PetscCall(VecGetArray(alphaLocal_, &a.data));
@@ -152,7 +153,10 @@ PetscErrorCode Vof::Sweep(int d, int stage, Vec const uLocal[3], PetscReal dt, P
         const double v = PetscRealPart(a.at(donor));
         double       nrm[3], c;
         bool         heights;
-        if (!Reconstruct(a, donor, nrm, &c, &heights)) {
+        const int    open = OpenDonorFace(d, q, vel);  // donor outside an open face: what enters (VofOpenFaces.cpp)
+        if (open >= 0) {
+          flux_[idx] = cour * EnteringFraction(open, q);
+        } else if (!Reconstruct(a, donor, nrm, &c, &heights)) {
           flux_[idx] = cour * v;  // full, empty or without a gradient: uniform
         } else {
           double lo[3] = {0, 0, 0}, hi[3] = {1, 1, 1};
@@ -162,6 +166,10 @@ PetscErrorCode Vof::Sweep(int d, int stage, Vec const uLocal[3], PetscReal dt, P
         }
         // F1b: the fluid crossing is eps_f u_f dt/h of a cell; alpha's PLIC share of the slab it sweeps.
         if (eps_) flux_[idx] *= faceEps(q);
+        if (!grid_->Periodic(d) && (q[d] == 0 || q[d] == grid_->Cells()[d])) {  // an open face (walls have no normal velocity)
+          const double in = (q[d] == 0 ? 1 : -1) * flux_[idx] * cellVolume;
+          openStep_[in > 0 ? 0 : 1] += std::fabs(in);
+        }
       }
   {  // this sweep's phase-1 volume flux per face (m/s), for the consistent momentum (VofMomentum.cpp)
     LocalField pf;
@@ -254,6 +262,13 @@ PetscErrorCode Vof::Advect(Vec const u[3], PetscReal dt) {
   }
   PetscCallMPI(MPI_Allreduce(counts, total, 2, MPIU_REAL, MPIU_SUM, grid_->Comm()));
   heightShare_ = total[1] > 0 ? total[0] / total[1] : 0;
+  if (HasOpenFaces()) {  // this step's phase-1 volume in and out through open faces (VofOpenFaces.cpp)
+    PetscReal step[2];
+    PetscCallMPI(MPI_Allreduce(openStep_, step, 2, MPIU_REAL, MPIU_SUM, grid_->Comm()));
+    openVolume_[0] += step[0];
+    openVolume_[1] += step[1];
+    openStep_[0] = openStep_[1] = 0;
+  }
   ++steps_;
   PetscFunctionReturn(0);
 }

@@ -132,6 +132,7 @@ PetscErrorCode Vof::CheckFlowOptions(const Flow &flow) {
     VofdemInputError(grid_->Comm(), "option -flow_advection central: unbounded and unstable with the forward-Euler momentum transport of -vof_momentum consistent; "
                                     "choose a limiter (e.g. vanleer) or -vof_momentum advective");
   PetscCall(CheckContactAngleFaces(flow));
+  PetscCall(CheckOpenFaces(flow));
   PetscFunctionReturn(0);
 }
 
@@ -150,6 +151,7 @@ PetscErrorCode Vof::AdvectWithMomentum(Flow &flow, PetscReal dt) {
     PetscCall(VecCopy(flow.Velocity(d), velocity_[d]));
     PetscCall(DMGlobalToLocal(sg_->Face(d), velocity_[d], INSERT_VALUES, velocityLocal_[d]));
     PetscCall(flow.Boundary().FillVelocityGhosts(*sg_, d, velocityLocal_[d]));
+    PetscCall(InflowVelocityGhosts(flow, d, velocityLocal_[d]));  // VofOpenFaces.cpp
   }
   Vec u[3] = {flow.Velocity(0), flow.Velocity(1), flow.Velocity(2)};
   momentumFlow_ = &flow;
@@ -209,6 +211,7 @@ PetscErrorCode Vof::MomentumSweep(int e, PetscReal dt) {
   for (int c = 0; c < 3; ++c) {  // u'' with ghosts for the next sweep
     PetscCall(DMGlobalToLocal(sg_->Face(c), velocity_[c], INSERT_VALUES, velocityLocal_[c]));
     PetscCall(flow.Boundary().FillVelocityGhosts(*sg_, c, velocityLocal_[c]));
+    PetscCall(InflowVelocityGhosts(flow, c, velocityLocal_[c]));
   }
   PetscFunctionReturn(0);
 }

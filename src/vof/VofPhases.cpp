@@ -58,6 +58,9 @@ PetscErrorCode Vof::UpdateProperties(Flow &flow) const {
   PetscCall(VecRestoreArray(flow.Viscosity(), &mu));
   PetscCall(VecRestoreArray(flow.Density(), &rho));
   PetscCall(VecRestoreArrayRead(alpha_, &a));
+  bool inflow = false;  // the flow's ghost cells beyond inflow faces take the entering phase (VofOpenFaces.cpp)
+  for (int t : openType_) inflow = inflow || t == 1;
+  if (inflow) flow.SetPropertyGhosts(InflowPropertyGhosts, this);
   PetscCall(flow.PropertiesChanged());
   PetscFunctionReturn(0);
 }

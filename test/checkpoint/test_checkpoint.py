@@ -19,7 +19,7 @@
                         zero exit on every rank (test/badinput/expect-error); -restart latest skips a
                         corrupted newest file and says so; a write that fails mid-run is one error line
                         and leaves the previous checkpoint valid.
-SCENE is dem, demclumps, flow, vof, coupled, coupledvof or coupledwet (the coupled ones: bitwise only). Usage: test_checkpoint.py VOFDEM CASE ARGS..."""
+SCENE is dem, demclumps, flow, vof, vofopen, coupled, coupledvof or coupledwet (the coupled ones: bitwise only). Usage: test_checkpoint.py VOFDEM CASE ARGS..."""
 import glob
 import os
 import re
@@ -57,6 +57,9 @@ SCENES = {
     # bound record and the flow's alpha-dependent density and viscosity must all come back.
     "vof": (["-options_file_yaml", os.path.join(ROOT, "config", "scenes", "dam-break.yaml")] +
             "-grid_cells 40,20,2 -grid_upper 0.28575,0.142875,0.0142875 -vof_boxes 0,0,0,0.05715,0.1143,0.0142875".split(), 20, (20, 20)),
+    # Open faces (issue 8): the water jet entering through a band of the inflow face, falling, leaving through
+    # the outflow faces (config/scenes/liquid-jet.yaml, coarser); the volumes in and out must come back too.
+    "vofopen": (["-options_file_yaml", os.path.join(ROOT, "config", "scenes", "liquid-jet.yaml")] + "-grid_cells 24,12,2".split(), 10, (10, 10)),
     # -physics dem,flow (issue 7): 20 spheres settling and colliding in a fluid; the particles' drag
     # impulses (swarm fields) and the coupling's last step length carry the exchange across a restart.
     "coupled": ("-physics dem,flow -grid_cells 8,8,12 -grid_upper 0.008,0.008,0.012 -dem_radius 5e-4 -dem_density 2500 -dem_fill_count 20 "
@@ -105,6 +108,7 @@ def case_bitwise(exe, scene, ranks):
     tmp = tempfile.mkdtemp(prefix="vofdem-ckpt-")
     a, b, c = (os.path.join(tmp, x) for x in "abc")
     index, every = {"dem": ("particles.xmf", "-dem_output_every"), "demclumps": ("particles.xmf", "-dem_output_every"), "flow": ("flow.xmf", "-flow_output_every"), "vof": ("flow.xmf", "-flow_output_every"),
+                    "vofopen": ("flow.xmf", "-flow_output_every"),
                     "coupled": ("particles.xmf", "-dem_output_every"), "coupledvof": ("particles.xmf", "-dem_output_every"),
                     "coupledwet": ("particles.xmf", "-dem_output_every")}[scene]
     out = [every, str(n // 4)]  # the ParaView series, whose index a restart must continue

@@ -80,6 +80,11 @@ public:
   // vectors of Staggered().Face(d), owned by the caller) is added in Predict once (forward Euler, not
   // in the AB2 history, which then holds only the transpose viscous term); nullptr: the flow's own.
   void SetAdvectionAcceleration(Vec a[3]) { for (int d = 0; d < 3; ++d) advectionAcceleration_[d] = a ? a[d] : nullptr; }
+  // The ghost cells of the properties beyond the box are zero-gradient (FlowBoundary::FillCellGhosts);
+  // this hook, if set, may then overwrite them: the VOF module's inflow faces give the entering phase's
+  // density and viscosity (VofOpenFaces.cpp). It gets the ghosted local vectors of eps, eps mu, eps/rho.
+  using PropertyGhosts = PetscErrorCode (*)(const void *ctx, const Flow &flow, Vec epsLocal, Vec emLocal, Vec betaLocal);
+  void SetPropertyGhosts(PropertyGhosts f, const void *ctx) { propertyGhosts_ = f; propertyGhostsCtx_ = ctx; }
   Limiter AdvectionLimiter() const { return limiter_; }
   // A linear drag toward a velocity w per face, rate c (1/s), taken implicitly right after the
   // predictor (operator splitting): u* <- (u* + dt c w)/(1 + dt c). The coupling's fluid side of the
@@ -163,6 +168,8 @@ private:
   Vec       faceForce_[3] = {nullptr, nullptr, nullptr};  // FaceForce(); null unless asked for
   Vec       faceAcceleration_[3] = {nullptr, nullptr, nullptr};
   Vec       advectionAcceleration_[3] = {nullptr, nullptr, nullptr};  // SetAdvectionAcceleration
+  PropertyGhosts propertyGhosts_ = nullptr;  // SetPropertyGhosts
+  const void    *propertyGhostsCtx_ = nullptr;
   Vec       relaxRate_[3] = {nullptr, nullptr, nullptr}, relaxTarget_[3] = {nullptr, nullptr, nullptr};
   // With a relaxation: the projection's coefficient eps/(rho (1 + dt c)) (FlowDragProjection.cpp)
   Vec            dragBeta_ = nullptr, dragBetaLocal_ = nullptr, rateLocal_[3] = {nullptr, nullptr, nullptr};

@@ -40,6 +40,10 @@ struct VofSummary {
   PetscReal interfaceCells = 0;  // cells with 1e-12 < alpha < 1 - 1e-12 (as a real: a sum over ranks)
   PetscReal heightNormals = 0;   // fraction of interface cells of the last step whose normal came from heights
   PetscReal missingCurvature = 0;  // interface cells that got no curvature in the last SurfaceTension
+  // Open faces (inflow, outflow; VofOpenFaces.cpp): phase-1 volume (sum eps alpha dV units) that entered and
+  // left through them since the start, from the sweeps' geometric face fluxes; the same on every rank.
+  bool      openFaces = false;
+  PetscReal inflowVolume = 0, outflowVolume = 0;  // m^3
 };
 
 class Vof {
@@ -108,9 +112,11 @@ public:
   // Static contact angle of box face f (xlo, xhi, ylo, yhi, zlo, zhi), degrees through phase 1
   // (-vof_contact_angle; 90: the neutral zero-gradient wall). VofContactAngle.cpp.
   PetscReal ContactAngle(int face) const { return contactAngle_[face]; }
+  // True when a face is inflow or outflow (known after CheckFlowOptions): phase 1 can enter or leave.
+  bool HasOpenFaces() const;
 
 private:
-  PetscErrorCode FillGhosts();  // alpha_ -> alphaLocal_, boundary layers by zero gradient, then the contact angles
+  PetscErrorCode FillGhosts();  // alpha_ -> alphaLocal_, boundary layers by zero gradient, then inflow faces' entering fraction, then the contact angles
   PetscErrorCode MirrorBoundary(Vec local) const;  // a local vector of da_: boundary layers by zero gradient
   // Contact angles (VofContactAngle.cpp): the options (inside SetFromOptions' block), the check
   // against the flow's face types (CheckFlowOptions), and the ghost layers of alpha beyond every
@@ -118,6 +124,23 @@ private:
   PetscErrorCode ReadContactAngleOptions(OptionReader &opt);
   PetscErrorCode CheckContactAngleFaces(const Flow &flow);
   PetscErrorCode ContactAngleGhosts(Vec local);
+  // Open faces (VofOpenFaces.cpp): -vof_bc_<face>_alpha[_band] (inside SetFromOptions' block), the
+  // check against the flow's face types (CheckFlowOptions), the ghost layers beyond inflow faces
+  // (FillGhosts, after MirrorBoundary), the fraction of phase 1 in the fluid entering through face
+  // `face` at the boundary face or ghost cell q (tangential indices used), and the donor-outside test
+  // of a sweep's boundary face q along d with velocity vel (the open face, or -1).
+  PetscErrorCode ReadOpenFaceOptions(OptionReader &opt);
+  PetscErrorCode CheckOpenFaces(const Flow &flow);
+  PetscErrorCode OpenFaceGhosts(Vec local) const;
+  double         EnteringFraction(int face, const PetscInt q[3]) const;
+  int            OpenDonorFace(int d, const PetscInt q[3], PetscReal vel) const;
+  PetscErrorCode SaveOpenFaces(PetscViewer viewer) const;
+  // The transported velocity's ghosts beyond inflow faces, tangential components: the inflow's own
+  // value (the fluid coming in), instead of the flow's reflection about it.
+  PetscErrorCode InflowVelocityGhosts(const Flow &flow, int c, Vec local) const;
+  // The flow's hook (Flow::SetPropertyGhosts): eps mu and eps/rho beyond inflow faces from the entering fraction.
+  static PetscErrorCode InflowPropertyGhosts(const void *ctx, const Flow &flow, Vec epsLocal, Vec emLocal, Vec betaLocal);
+  PetscErrorCode LoadOpenFaces(PetscViewer viewer);
   PetscErrorCode FluidFractionGhosts();  // eps_, epsChange_ -> epsLocal_, changeLocal_ (VofFluidFraction.cpp)
   // Sweep `stage` (1-3) of a step along d.
   PetscErrorCode Sweep(int d, int stage, Vec const uLocal[3], PetscReal dt, PetscReal *heightCells, PetscReal *interfaceCells);
@@ -162,6 +185,12 @@ private:
   bool        contactNamed_[6] = {false, false, false, false, false, false};  // named in -vof_contact_angle_faces
   Vec         contactGhost_[6] = {nullptr, nullptr, nullptr, nullptr, nullptr, nullptr};  // per angled face: its ghost layers, reflected into the box
   Vec         contactLocal_ = nullptr;  // scratch local vector of da_
+  int         openType_[6] = {0, 0, 0, 0, 0, 0};  // 0 closed (wall, slip, periodic), 1 inflow, 2 outflow (CheckOpenFaces)
+  PetscReal   openAlpha_[6] = {0, 0, 0, 0, 0, 0};  // -vof_bc_<face>_alpha: entering (inflow) or backflow (outflow) fraction
+  bool        openAlphaGiven_[6] = {false, false, false, false, false, false};
+  std::vector<PetscReal> openBand_[6];            // -vof_bc_<face>_alpha_band: lo,hi[,lo,hi] along the face's tangential axes (m)
+  PetscReal   openVolume_[2] = {0, 0};            // phase-1 volume in, out through open faces since the start (global)
+  PetscReal   openStep_[2] = {0, 0};              // this rank's part of the current step's in, out
   std::vector<PetscReal> boxes_, spheres_;        // initial shapes of phase 1
   PetscInt    samples_ = 8;                       // per direction and cell, for the initial fraction
   // state
