@@ -1,5 +1,6 @@
 // Set-up, initial fraction, ghost layers, time-step limit and summaries of the VOF module (Vof.hpp).
 #include "vofdem/vof/Vof.hpp"
+#include "vofdem/vof/GhostSlab.hpp"
 
 #include "vofdem/core/Options.hpp"
 #include "vofdem/core/Runtime.hpp"
@@ -157,9 +158,8 @@ PetscErrorCode Vof::MirrorBoundary(Vec local) const {
   for (int d = 0; d < 3; ++d) {
     if (grid_->Periodic(d)) continue;
     for (int side = 0; side < 2; ++side) {  // only the layers outside the box, where this rank has them
-      PetscInt lo[3] = {gs[0], gs[1], gs[2]}, hi[3] = {gs[0] + gm[0], gs[1] + gm[1], gs[2] + gm[2]};
-      if (side == 0) hi[d] = std::min(hi[d], (PetscInt)0);
-      else lo[d] = std::max(lo[d], N[d]);
+      PetscInt lo[3], hi[3];
+      GhostSlabBeyondFace(2 * d + side, gs, gm, N, lo, hi);
       for (PetscInt k = lo[2]; k < hi[2]; ++k)
         for (PetscInt j = lo[1]; j < hi[1]; ++j)
           for (PetscInt i = lo[0]; i < hi[0]; ++i) {

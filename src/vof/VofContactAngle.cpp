@@ -32,6 +32,7 @@
 // the face, stores layer m in the m-th row inside the box of a global vector (a reflection), and the
 // DMDA's ghost exchange brings the neighbours' parts: the same numbers on any rank count.
 #include "vofdem/vof/Vof.hpp"
+#include "vofdem/vof/GhostSlab.hpp"
 
 #include "vofdem/core/Options.hpp"
 #include "vofdem/core/Runtime.hpp"
@@ -192,9 +193,8 @@ PetscErrorCode Vof::ContactAngleGhosts(Vec local) {
     PetscScalar       ***out;
     PetscCall(DMDAVecGetArrayRead(da_, contactLocal_, &r));
     PetscCall(DMDAVecGetArray(da_, local, &out));
-    PetscInt lo[3] = {gs[0], gs[1], gs[2]}, hi[3] = {gs[0] + gm[0], gs[1] + gm[1], gs[2] + gm[2]};
-    if (side == 0) hi[d] = std::min(hi[d], (PetscInt)0);
-    else lo[d] = std::max(lo[d], N[d]);
+    PetscInt lo[3], hi[3];
+    GhostSlabBeyondFace(f, gs, gm, N, lo, hi);
     for (PetscInt k = lo[2]; k < hi[2]; ++k)
       for (PetscInt j = lo[1]; j < hi[1]; ++j)
         for (PetscInt i = lo[0]; i < hi[0]; ++i) {

@@ -29,6 +29,7 @@
 // read by the viscous stress of the face's edges (the normal velocity there is prescribed). Beyond an
 // outflow face they stay zero-gradient: the density of the fluid leaving.
 #include "vofdem/vof/Vof.hpp"
+#include "vofdem/vof/GhostSlab.hpp"
 
 #include "vofdem/core/Options.hpp"
 #include "vofdem/core/Runtime.hpp"
@@ -139,10 +140,8 @@ PetscErrorCode Vof::OpenFaceGhosts(Vec local) const {
   const PetscInt *N = grid_->Cells();
   for (int f = 0; f < 6; ++f) {
     if (openType_[f] != 1) continue;
-    const int d = f / 2;
-    PetscInt  lo[3] = {gs[0], gs[1], gs[2]}, hi[3] = {gs[0] + gm[0], gs[1] + gm[1], gs[2] + gm[2]};
-    if (f % 2 == 0) hi[d] = std::min(hi[d], (PetscInt)0);
-    else lo[d] = std::max(lo[d], N[d]);
+    PetscInt lo[3], hi[3];
+    GhostSlabBeyondFace(f, gs, gm, N, lo, hi);
     for (PetscInt k = lo[2]; k < hi[2]; ++k)
       for (PetscInt j = lo[1]; j < hi[1]; ++j)
         for (PetscInt i = lo[0]; i < hi[0]; ++i) {
@@ -171,10 +170,8 @@ PetscErrorCode Vof::InflowPropertyGhosts(const void *ctx, const Flow &flow, Vec 
   PetscCall(sg.GetLocal(3, betaLocal, &b));
   for (int f = 0; f < 6; ++f) {
     if (v.openType_[f] != 1) continue;
-    const int d = f / 2;
-    PetscInt  lo[3] = {gs[0], gs[1], gs[2]}, hi[3] = {gs[0] + gm[0], gs[1] + gm[1], gs[2] + gm[2]};
-    if (f % 2 == 0) hi[d] = std::min(hi[d], (PetscInt)0);
-    else lo[d] = std::max(lo[d], N[d]);
+    PetscInt lo[3], hi[3];
+    GhostSlabBeyondFace(f, gs, gm, N, lo, hi);
     for (PetscInt k = lo[2]; k < hi[2]; ++k)
       for (PetscInt j = lo[1]; j < hi[1]; ++j)
         for (PetscInt i = lo[0]; i < hi[0]; ++i) {
