@@ -10,7 +10,6 @@ struct TermFields {
   LocalField u[3];      // ghosted velocities
   LocalField em, beta, eps;  // ghosted cell fields: eps*mu, eps/rho, eps
   LocalField H, L;      // outputs (global, component d)
-  bool       advect = true;  // false: another module transports momentum (Flow::SetAdvectionAcceleration)
 };
 
 // Explicit terms for component d at the owned faces [s, s+n) that are not boundary faces:
@@ -20,7 +19,8 @@ struct TermFields {
 // the other directions. Its faces normal to d sit at cell centres, the others on cell edges.
 // Hot loop: every neighbour is a fixed offset from the point's index in its own array (the arrays
 // of the staggered locations differ in size), computed once per component.
-template <Limiter LIM>
+// ADV false: another module moves the momentum; the advective part is not computed at all.
+template <Limiter LIM, bool ADV>
 void MomentumTerms(int d, const TermFields &F, const PetscInt s[3], const PetscInt n[3], const PetscReal h[3]) {
   const LocalField &ud = F.u[d];
   const int         t1 = (d + 1) % 3, t2 = (d + 2) % 3;  // the tangential directions
@@ -49,13 +49,16 @@ void MomentumTerms(int d, const TermFields &F, const PetscInt s[3], const PetscI
       for (PetscInt i = 0; i < n[0]; ++i) {
         const PetscReal uP = u[i];
         const PetscReal emC = em[i], emM = em[i - cs_d];
-        PetscReal       adv, lap, trans;
+        PetscReal       adv = 0, lap, trans;
         {  // e = d: control-volume faces at the two cell centres
-          const PetscReal uE = u[i + ds], uW = u[i - ds], uEE = u[i + 2 * ds], uWW = u[i - 2 * ds];
-          const PetscReal Up = 0.5 * (uP + uE), Um = 0.5 * (uW + uP);
-          const PetscReal fP = Up >= 0 ? LimitedFace<LIM>(uW, uP, uE) : LimitedFace<LIM>(uEE, uE, uP);
-          const PetscReal fM = Um >= 0 ? LimitedFace<LIM>(uWW, uW, uP) : LimitedFace<LIM>(uE, uP, uW);
-          adv = ((Up * fP - Um * fM) - uP * (Up - Um)) * ih[d];
+          const PetscReal uE = u[i + ds], uW = u[i - ds];
+          if constexpr (ADV) {
+            const PetscReal uEE = u[i + 2 * ds], uWW = u[i - 2 * ds];
+            const PetscReal Up = 0.5 * (uP + uE), Um = 0.5 * (uW + uP);
+            const PetscReal fP = Up >= 0 ? LimitedFace<LIM>(uW, uP, uE) : LimitedFace<LIM>(uEE, uE, uP);
+            const PetscReal fM = Um >= 0 ? LimitedFace<LIM>(uWW, uW, uP) : LimitedFace<LIM>(uE, uP, uW);
+            adv = ((Up * fP - Um * fM) - uP * (Up - Um)) * ih[d];
+          }
           lap = (emC * (uE - uP) - emM * (uP - uW)) * ih[d] * ih[d];
           trans = lap;  // the transpose term equals the gradient term along d
         }
@@ -63,22 +66,25 @@ void MomentumTerms(int d, const TermFields &F, const PetscInt s[3], const PetscI
           const int          e  = te[a];
           const PetscInt     o  = us[a];
           const PetscScalar *ue = uet[a] + i;
-          const PetscReal    uE = u[i + o], uW = u[i - o], uEE = u[i + 2 * o], uWW = u[i - 2 * o];
+          const PetscReal    uE = u[i + o], uW = u[i - o];
           // advecting u_e: e-faces q_e+1 (plus) and q_e (minus), cells q_d-1 and q_d
           const PetscReal uea = ue[ues_e[a]], ueam = ue[ues_e[a] - ues_d[a]], ueb = ue[0], uebm = ue[-ues_d[a]];
           const PetscReal Up = 0.5 * (uea + ueam), Um = 0.5 * (ueb + uebm);
           const PetscScalar *c = em + i;
           const PetscReal emP = 0.25 * (emC + emM + c[cs_e[a]] + c[cs_e[a] - cs_d]);
           const PetscReal emN = 0.25 * (emC + emM + c[-cs_e[a]] + c[-cs_e[a] - cs_d]);
-          const PetscReal fP = Up >= 0 ? LimitedFace<LIM>(uW, uP, uE) : LimitedFace<LIM>(uEE, uE, uP);
-          const PetscReal fM = Um >= 0 ? LimitedFace<LIM>(uWW, uW, uP) : LimitedFace<LIM>(uE, uP, uW);
-          adv += ((Up * fP - Um * fM) - uP * (Up - Um)) * ih[e];
+          if constexpr (ADV) {
+            const PetscReal uEE = u[i + 2 * o], uWW = u[i - 2 * o];
+            const PetscReal fP = Up >= 0 ? LimitedFace<LIM>(uW, uP, uE) : LimitedFace<LIM>(uEE, uE, uP);
+            const PetscReal fM = Um >= 0 ? LimitedFace<LIM>(uWW, uW, uP) : LimitedFace<LIM>(uE, uP, uW);
+            adv += ((Up * fP - Um * fM) - uP * (Up - Um)) * ih[e];
+          }
           lap += (emP * (uE - uP) - emN * (uP - uW)) * ih[e] * ih[e];
           trans += (emP * (uea - ueam) - emN * (ueb - uebm)) * ih[d] * ih[e];
         }
         const PetscReal bL = be[i - cs_d], bR = be[i];
         const PetscReal eF = 0.5 * (ep[i - cs_d] + ep[i]), bF = 2 * bL * bR / (bL + bR);
-        Ho[i] = (F.advect ? -adv : 0) + trans * bF / (eF * eF);  // (eps rho)_f = eps_f^2 / b_f
+        Ho[i] = (ADV ? -adv : 0) + trans * bF / (eF * eF);  // (eps rho)_f = eps_f^2 / b_f
         Lo[i] = lap;
       }
     }
@@ -96,7 +102,7 @@ PetscErrorCode Flow::ComputeExplicitTerms() {
   PetscCall(sg_.GetLocal(3, emLocal_, &F.em));
   PetscCall(sg_.GetLocal(3, betaLocal_, &F.beta));
   PetscCall(sg_.GetLocal(3, epsLocal_, &F.eps));
-  F.advect = advectionAcceleration_[0] == nullptr;
+  const bool advect = advectionAcceleration_[0] == nullptr;  // false: another module transports momentum (Flow::SetAdvectionAcceleration)
   const PetscReal *h = grid_->Spacing();
   for (int d = 0; d < 3; ++d) {
     PetscCall(sg_.GetGlobal(d, H_[d], &F.H));
@@ -117,13 +123,13 @@ PetscErrorCode Flow::ComputeExplicitTerms() {
       n[d] = std::max(b - a, (PetscInt)0);
     }
     switch (limiter_) {
-    case Limiter::Upwind: MomentumTerms<Limiter::Upwind>(d, F, s, n, h); break;
-    case Limiter::Central: MomentumTerms<Limiter::Central>(d, F, s, n, h); break;
-    case Limiter::Minmod: MomentumTerms<Limiter::Minmod>(d, F, s, n, h); break;
-    case Limiter::VanLeer: MomentumTerms<Limiter::VanLeer>(d, F, s, n, h); break;
-    case Limiter::MC: MomentumTerms<Limiter::MC>(d, F, s, n, h); break;
-    case Limiter::Superbee: MomentumTerms<Limiter::Superbee>(d, F, s, n, h); break;
-    case Limiter::Koren: MomentumTerms<Limiter::Koren>(d, F, s, n, h); break;
+    case Limiter::Upwind: advect ? MomentumTerms<Limiter::Upwind, true>(d, F, s, n, h) : MomentumTerms<Limiter::Upwind, false>(d, F, s, n, h); break;
+    case Limiter::Central: advect ? MomentumTerms<Limiter::Central, true>(d, F, s, n, h) : MomentumTerms<Limiter::Central, false>(d, F, s, n, h); break;
+    case Limiter::Minmod: advect ? MomentumTerms<Limiter::Minmod, true>(d, F, s, n, h) : MomentumTerms<Limiter::Minmod, false>(d, F, s, n, h); break;
+    case Limiter::VanLeer: advect ? MomentumTerms<Limiter::VanLeer, true>(d, F, s, n, h) : MomentumTerms<Limiter::VanLeer, false>(d, F, s, n, h); break;
+    case Limiter::MC: advect ? MomentumTerms<Limiter::MC, true>(d, F, s, n, h) : MomentumTerms<Limiter::MC, false>(d, F, s, n, h); break;
+    case Limiter::Superbee: advect ? MomentumTerms<Limiter::Superbee, true>(d, F, s, n, h) : MomentumTerms<Limiter::Superbee, false>(d, F, s, n, h); break;
+    case Limiter::Koren: advect ? MomentumTerms<Limiter::Koren, true>(d, F, s, n, h) : MomentumTerms<Limiter::Koren, false>(d, F, s, n, h); break;
     }
     PetscCall(sg_.RestoreGlobal(d, L_[d], &F.L));
     PetscCall(sg_.RestoreGlobal(d, H_[d], &F.H));

@@ -181,6 +181,8 @@ PetscErrorCode PressureSolver::SetUp() {
   }
   PetscCall(PetscObjectSetName((PetscObject)A_, "flow_pressure_operator"));
   PetscCall(DMCreateLocalVector(dm_, &betaLocal_));
+  PetscCall(VecDuplicate(betaLocal_, &betaAssembled_));
+  assembled_ = false;
   PetscCall(DMCreateGlobalVector(dm_, &betaRef_));
   PetscCall(PetscObjectSetName((PetscObject)betaRef_, "flow_pressure_reference_coefficient"));
   PetscCall(VecDuplicate(betaRef_, &bDirichlet_));
@@ -236,7 +238,7 @@ PetscErrorCode PressureSolver::SetUp() {
 // -div(beta grad p) by finite volumes, divided by the cell volume: per face the flux
 // beta_f (p_C - p_N)/h^2 (PHYSICS.md F1: the projection's div(eps U) = ... with U = -(eps/rho) grad p dt).
 PetscErrorCode PressureSolver::Assemble(Vec beta) {
-  const PetscScalar ***b;
+  const PetscScalar ***b, ***bOld;
   PetscScalar       ***bd;
   PetscInt             xs, ys, zs, xm, ym, zm;
 
@@ -244,6 +246,7 @@ PetscErrorCode PressureSolver::Assemble(Vec beta) {
   PetscCall(DMGlobalToLocal(dm_, beta, INSERT_VALUES, betaLocal_));
   PetscCall(VecSet(bDirichlet_, 0));
   PetscCall(DMDAVecGetArrayRead(dm_, betaLocal_, &b));
+  PetscCall(DMDAVecGetArrayRead(dm_, betaAssembled_, &bOld));
   PetscCall(DMDAVecGetArray(dm_, bDirichlet_, &bd));
   PetscCall(DMDAGetCorners(dm_, &xs, &ys, &zs, &xm, &ym, &zm));
   const PetscScalar ***sol = nullptr;
@@ -257,6 +260,10 @@ PetscErrorCode PressureSolver::Assemble(Vec beta) {
         PetscInt        n = 1;
         const PetscInt  c[3] = {i, j, k};
         const PetscReal bc   = PetscRealPart(b[k][j][i]);
+        // A row whose coefficients (this cell's and its neighbours') are those of the last assembly is
+        // left as it is: a moving interface changes a few percent of the rows per step, and setting
+        // every row of a hyprestruct matrix was a tenth of the dam break's step.
+        bool changed = !assembled_ || sol || b[k][j][i] != bOld[k][j][i];
         if (sol && PetscRealPart(sol[k][j][i]) > 0.5) {
           // A solid cell: decoupled, scaled like its fluid neighbours' rows; its rhs is 0 (no flow).
           col[0] = row;
@@ -273,6 +280,7 @@ PetscErrorCode PressureSolver::Assemble(Vec beta) {
               q[d]          = nb;  // DMDA wraps -1 and N in periodic directions
               if (sol && PetscRealPart(sol[q[2]][q[1]][q[0]]) > 0.5) continue;  // a solid neighbour: no flux
               const PetscReal bn = PetscRealPart(b[q[2]][q[1]][q[0]]);
+              changed            = changed || b[q[2]][q[1]][q[0]] != bOld[q[2]][q[1]][q[0]];
               const PetscReal w  = 2 * bc * bn / (bc + bn) * ih2[d];  // harmonic mean at the face
               col[n]             = {q[2], q[1], q[0], 0};
               val[n++]           = -w;
@@ -286,10 +294,13 @@ PetscErrorCode PressureSolver::Assemble(Vec beta) {
           }
         col[0] = row;
         val[0] = diag;
-        PetscCall(MatSetValuesStencil(A_, 1, &row, n, col, val, INSERT_VALUES));
+        if (changed) PetscCall(MatSetValuesStencil(A_, 1, &row, n, col, val, INSERT_VALUES));
       }
   PetscCall(DMDAVecRestoreArray(dm_, bDirichlet_, &bd));
+  PetscCall(DMDAVecRestoreArrayRead(dm_, betaAssembled_, &bOld));
   PetscCall(DMDAVecRestoreArrayRead(dm_, betaLocal_, &b));
+  PetscCall(VecCopy(betaLocal_, betaAssembled_));
+  assembled_ = true;
   if (solidLocal_) PetscCall(DMDAVecRestoreArrayRead(dm_, solidLocal_, &sol));
   PetscCall(MatAssemblyBegin(A_, MAT_FINAL_ASSEMBLY));
   PetscCall(MatAssemblyEnd(A_, MAT_FINAL_ASSEMBLY));
@@ -334,6 +345,22 @@ PetscErrorCode PressureSolver::Solve(Vec rhs, Vec p) {
   PetscCall(KSPGetIterationNumber(ksp_, &iterations_));
   PetscCall(KSPGetResidualNorm(ksp_, &residual_));
   PetscCall(KSPGetConvergedReason(ksp_, &reason));
+  if (reason == KSP_DIVERGED_INDEFINITE_PC || reason == KSP_DIVERGED_INDEFINITE_MAT || reason == KSP_DIVERGED_BREAKDOWN) {
+    // CG breaks down by round-off once the residual reaches the floor of what can be computed (the
+    // constant part the null-space projection cancels; the coefficient jump of a density ratio of 1000
+    // widens it): PFMG on the dam break at 160 x 80 stalled at 1.9e-6 against an absolute tolerance of
+    // 1.8e-6 in its first solve and then reported an indefinite preconditioner. A breakdown within
+    // kFloorFactor of the absolute tolerance is that floor, not a failed solve; further away it is an error.
+    PetscReal rtol, atol, dtol;
+    PetscInt  maxit;
+    PetscCall(KSPGetTolerances(ksp_, &rtol, &atol, &dtol, &maxit));
+    if (residual_ <= kFloorFactor * atol) {
+      PetscCall(PetscInfo(ksp_, "pressure: CG stopped by %s at residual %g, within %g of the absolute tolerance %g: accepted as converged\n", KSPConvergedReasons[reason],
+                          (double)residual_, (double)kFloorFactor, (double)atol));
+      ++floorStops_;
+      reason = KSP_CONVERGED_ATOL;
+    }
+  }
   // One line on every rank of comm_ and a non-zero exit (Runtime.hpp), not a trace: the reason names what
   // to change (-flow_pressure_ksp_max_it, _rtol; -flow_pressure_ksp_monitor shows the history).
   if (reason <= 0)
@@ -394,6 +421,7 @@ PetscErrorCode PressureSolver::Destroy() {
   PetscCall(MatNullSpaceDestroy(&nullSpace_));
   PetscCall(MatDestroy(&A_));
   PetscCall(VecDestroy(&betaLocal_));
+  PetscCall(VecDestroy(&betaAssembled_));
   PetscCall(VecDestroy(&betaRef_));
   PetscCall(VecDestroy(&bDirichlet_));
   PetscCall(VecDestroy(&work_));

@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 
 namespace vofdem {
 
@@ -95,7 +96,6 @@ PetscErrorCode Vof::Destroy() {
     PetscCall(VecDestroy(&velocityLocal_[d]));
     PetscCall(VecDestroy(&momentumAcc_[d]));
   }
-  PetscCall(VecDestroy(&alphaPrev_));
   for (Vec &v : contactGhost_) PetscCall(VecDestroy(&v));
   PetscCall(VecDestroy(&contactLocal_));
   PetscCall(VecDestroy(&kappa_));
@@ -146,30 +146,37 @@ PetscErrorCode Vof::FillGhosts() {
 }
 
 PetscErrorCode Vof::MirrorBoundary(Vec local) const {
-  PetscScalar ***a;
-  PetscInt       gs[3], gm[3];
+  PetscScalar *a;
+  PetscInt     gs[3], gm[3];
 
   PetscFunctionBeginUser;
   PetscCall(DMDAGetGhostCorners(da_, &gs[0], &gs[1], &gs[2], &gm[0], &gm[1], &gm[2]));
-  PetscCall(DMDAVecGetArray(da_, local, &a));
+  PetscCall(VecGetArray(local, &a));
   const PetscInt *N = grid_->Cells();
   // Walls and open faces: zero normal gradient (a 90 degree contact angle); direction by direction
-  // over the whole ghosted extent, so edges and corners come out consistent.
+  // over the whole ghosted extent, so edges and corners come out consistent. Rows along x are copied
+  // whole where the mirror is across y or z (the ghost layers are 4 deep: with 2 cells across, as in
+  // the quasi-2-D dam break, they are most of the array).
+  auto row = [&](PetscInt j, PetscInt k) { return (size_t)((j - gs[1]) + gm[1] * (k - gs[2])) * (size_t)gm[0]; };
   for (int d = 0; d < 3; ++d) {
     if (grid_->Periodic(d)) continue;
     for (int side = 0; side < 2; ++side) {  // only the layers outside the box, where this rank has them
       PetscInt lo[3], hi[3];
       GhostSlabBeyondFace(2 * d + side, gs, gm, N, lo, hi);
+      const PetscInt src = side == 0 ? 0 : N[d] - 1;
       for (PetscInt k = lo[2]; k < hi[2]; ++k)
-        for (PetscInt j = lo[1]; j < hi[1]; ++j)
-          for (PetscInt i = lo[0]; i < hi[0]; ++i) {
-            PetscInt q[3] = {i, j, k};
-            q[d]          = side == 0 ? 0 : N[d] - 1;
-            a[k][j][i]    = a[q[2]][q[1]][q[0]];
+        for (PetscInt j = lo[1]; j < hi[1]; ++j) {
+          PetscScalar *dst = a + row(j, k) - gs[0];
+          if (d == 0) {
+            for (PetscInt i = lo[0]; i < hi[0]; ++i) dst[i] = dst[src];
+          } else if (hi[0] > lo[0]) {
+            const PetscScalar *from = a + (d == 1 ? row(src, k) : row(j, src)) - gs[0];
+            std::memcpy(dst + lo[0], from + lo[0], (size_t)(hi[0] - lo[0]) * sizeof(PetscScalar));
           }
+        }
     }
   }
-  PetscCall(DMDAVecRestoreArray(da_, local, &a));
+  PetscCall(VecRestoreArray(local, &a));
   PetscFunctionReturn(0);
 }
 

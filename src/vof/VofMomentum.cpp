@@ -43,6 +43,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 namespace vofdem {
 
@@ -50,7 +51,7 @@ namespace {
 
 struct SweepFields {
   LocalField u, m;         // ghosted: the component being moved (u'), the sweep's face mass fluxes
-  LocalField a0, a1;       // ghosted alpha before (alpha') and after (alpha'') the sweep (the VOF's DMDA)
+  LocalField r0, r1;       // ghosted cell mixture densities before (from alpha') and after (alpha'') the sweep (the VOF's DMDA layout)
   LocalField out, un;      // global: u'' (written), u^n (the flow's, read)
   PetscReal  rho0, rho1;
 };
@@ -65,54 +66,75 @@ struct SweepFields {
 // momentum in one crossing).
 const PetscReal kTvdCourant = 0.5;
 
-inline PetscReal MixtureDensity(const SweepFields &F, PetscReal a) {  // as UpdateProperties
-  const PetscReal f = std::fmin(std::fmax(a, (PetscReal)0), (PetscReal)1);
-  return f * F.rho1 + (1 - f) * F.rho0;
+inline PetscReal MixtureDensity(PetscReal rho0, PetscReal rho1, PetscReal a) {  // as UpdateProperties
+  const PetscReal f = std::min(std::max(a, (PetscReal)0), (PetscReal)1);
+  return f * rho1 + (1 - f) * rho0;
 }
 
-// Component c moved along e at the owned faces [s, s+n) of c that are not boundary faces.
+// The cells' mixture densities of a ghosted alpha array (the VOF's DMDA), once per sweep: every face
+// of the three components reads them up to eight times (computing them there was a sixth of the dam
+// break's step). Only cells within 2 of the owned ones are read (a face's volume and its neighbours
+// along e); the 4-deep ghost layers beyond them are skipped.
+void CellDensities(DM da, const Vec alphaLocal, PetscReal rho0, PetscReal rho1, std::vector<PetscReal> *rho) {
+  const PetscScalar *a;
+  PetscInt           n, s[3], m[3], gs[3], gm[3], lo[3], hi[3];
+  PetscCallAbort(PETSC_COMM_SELF, DMDAGetCorners(da, &s[0], &s[1], &s[2], &m[0], &m[1], &m[2]));
+  PetscCallAbort(PETSC_COMM_SELF, DMDAGetGhostCorners(da, &gs[0], &gs[1], &gs[2], &gm[0], &gm[1], &gm[2]));
+  for (int d = 0; d < 3; ++d) {
+    lo[d] = std::max(s[d] - 2, gs[d]) - gs[d];
+    hi[d] = std::min(s[d] + m[d] + 2, gs[d] + gm[d]) - gs[d];
+  }
+  PetscCallAbort(PETSC_COMM_SELF, VecGetLocalSize(alphaLocal, &n));
+  PetscCallAbort(PETSC_COMM_SELF, VecGetArrayRead(alphaLocal, &a));
+  rho->resize((size_t)n);
+  for (PetscInt k = lo[2]; k < hi[2]; ++k)
+    for (PetscInt j = lo[1]; j < hi[1]; ++j) {
+      const PetscInt row = (j + gm[1] * k) * gm[0];
+      for (PetscInt i = lo[0]; i < hi[0]; ++i) (*rho)[(size_t)(row + i)] = MixtureDensity(rho0, rho1, PetscRealPart(a[row + i]));
+    }
+  PetscCallAbort(PETSC_COMM_SELF, VecRestoreArrayRead(alphaLocal, &a));
+}
+
+// Component c moved along e at the owned faces [s, s+n) of c that are not boundary faces. Neighbours
+// are reached by linear offsets (a stride per field and direction) rather than index triples: the
+// triples, shifted along a run-time direction, kept the loop on the stack (it was a fifth of the dam
+// break's step with PFMG). The arithmetic is the same, term by term.
 template <Limiter LIM>
 void MomentumSweepKernel(int c, int e, const SweepFields &F, const PetscInt s[3], const PetscInt n[3], PetscReal r) {
+  auto offset = [](const LocalField &f, PetscInt i, PetscInt j, PetscInt k) {
+    return (i - f.g0[0]) * f.stride[0] + (j - f.g0[1]) * f.stride[1] + (k - f.g0[2]) * f.stride[2];
+  };
+  const PetscInt ue = F.u.stride[e], me = F.m.stride[e], mc = F.m.stride[c], re = F.r1.stride[e], rc = F.r1.stride[c];
+  const PetscScalar *u = F.u.data, *m = F.m.data, *r0 = F.r0.data, *r1 = F.r1.data, *un = F.un.data;
+  PetscScalar       *out = F.out.data;
   for (PetscInt k = s[2]; k < s[2] + n[2]; ++k)
-    for (PetscInt j = s[1]; j < s[1] + n[1]; ++j)
-      for (PetscInt i = s[0]; i < s[0] + n[0]; ++i) {
-        const PetscInt q[3] = {i, j, k};
-        PetscInt       cm[3] = {i, j, k};  // the cell below the face along c (q is the cell above)
-        cm[c] -= 1;
-        auto      U = [&](int o) { PetscInt p[3] = {q[0], q[1], q[2]}; p[e] += o; return PetscRealPart(F.u.at(p)); };
+    for (PetscInt j = s[1]; j < s[1] + n[1]; ++j) {
+      PetscInt iu = offset(F.u, s[0], j, k), im = offset(F.m, s[0], j, k), ir = offset(F.r1, s[0], j, k), io = offset(F.out, s[0], j, k);
+      for (PetscInt i = s[0]; i < s[0] + n[0]; ++i, ++iu, ++im, ++ir, ++io) {
+        auto      U = [&](int o) { return PetscRealPart(u[iu + o * ue]); };
         PetscReal mP, mM;  // mass fluxes through the + and - faces of the control volume along e
         if (e == c) {
-          PetscInt qm[3] = {i, j, k}, qp[3] = {i, j, k};
-          qm[c] -= 1;
-          qp[c] += 1;
-          mP = 0.5 * PetscRealPart(F.m.at(q) + F.m.at(qp));
-          mM = 0.5 * PetscRealPart(F.m.at(qm) + F.m.at(q));
-        } else {  // e-faces with e-index q_e (minus) and q_e + 1 (plus) of the cells cm and q
-          PetscInt a[3] = {i, j, k}, b[3] = {cm[0], cm[1], cm[2]};
-          mM = 0.5 * PetscRealPart(F.m.at(a) + F.m.at(b));
-          a[e] += 1;
-          b[e] += 1;
-          mP = 0.5 * PetscRealPart(F.m.at(a) + F.m.at(b));
+          mP = 0.5 * PetscRealPart(m[im] + m[im + me]);
+          mM = 0.5 * PetscRealPart(m[im - me] + m[im]);
+        } else {  // e-faces with e-index q_e (minus) and q_e + 1 (plus) of the cells q - e_c and q
+          mM = 0.5 * PetscRealPart(m[im] + m[im - mc]);
+          mP = 0.5 * PetscRealPart(m[im + me] + m[im - mc + me]);
         }
         const PetscReal uP = U(0), uE = U(1), uW = U(-1);
-        // rho'' of this control volume and of its neighbours along e (o = -1, 0, 1)
-        auto rhoAt = [&](int o) {
-          PetscInt a[3] = {q[0], q[1], q[2]}, b[3] = {cm[0], cm[1], cm[2]};
-          a[e] += o;
-          b[e] += o;
-          return 0.5 * (MixtureDensity(F, PetscRealPart(F.a1.at(a))) + MixtureDensity(F, PetscRealPart(F.a1.at(b))));
-        };
+        // rho'' of this control volume (cells q - e_c and q) and of its neighbours along e (o = -1, 0, 1)
+        auto rhoAt = [&](int o) { return 0.5 * (PetscRealPart(r1[ir + o * re]) + PetscRealPart(r1[ir - rc + o * re])); };
         const PetscReal rho = rhoAt(0);
         // Per face (so that both volumes sharing it take the same flux: conservation), TVD only where
         // the face's effective Courant number is small for both volumes.
-        const bool tvdP = r * std::fabs(mP) <= kTvdCourant * std::fmin(rho, rhoAt(1));
-        const bool tvdM = r * std::fabs(mM) <= kTvdCourant * std::fmin(rho, rhoAt(-1));
+        const bool tvdP = r * std::fabs(mP) <= kTvdCourant * std::min(rho, rhoAt(1));
+        const bool tvdM = r * std::fabs(mM) <= kTvdCourant * std::min(rho, rhoAt(-1));
         const PetscReal fP = !tvdP ? (mP >= 0 ? uP : uE) : mP >= 0 ? LimitedFace<LIM>(uW, uP, uE) : LimitedFace<LIM>(U(2), uE, uP);
         const PetscReal fM = !tvdM ? (mM >= 0 ? uW : uP) : mM >= 0 ? LimitedFace<LIM>(U(-2), uW, uP) : LimitedFace<LIM>(uE, uP, uW);
-        const PetscReal rho0 = 0.5 * (MixtureDensity(F, PetscRealPart(F.a0.at(cm))) + MixtureDensity(F, PetscRealPart(F.a0.at(q))));
+        const PetscReal rho0 = 0.5 * (PetscRealPart(r0[ir - rc]) + PetscRealPart(r0[ir]));
         const PetscReal dil  = rho - rho0 + r * (mP - mM);  // the sweep's dilatation mass (see the top)
-        F.out.at(q) = uP + (r * (mM * (fM - uP) - mP * (fP - uP)) + dil * (PetscRealPart(F.un.at(q)) - uP)) / rho;
+        out[io] = uP + (r * (mM * (fM - uP) - mP * (fP - uP)) + dil * (PetscRealPart(un[io]) - uP)) / rho;
       }
+    }
 }
 
 // The owned faces of component c that are advanced (the boundary faces of a non-periodic c are not).
@@ -145,7 +167,6 @@ PetscErrorCode Vof::AdvectWithMomentum(Flow &flow, PetscReal dt) {
       PetscCall(DMCreateLocalVector(sg_->Face(d), &massLocal_[d]));
       PetscCall(DMCreateLocalVector(sg_->Face(d), &velocityLocal_[d]));
     }
-    PetscCall(VecDuplicate(alphaLocal_, &alphaPrev_));
   }
   for (int d = 0; d < 3; ++d) {
     PetscCall(VecCopy(flow.Velocity(d), velocity_[d]));
@@ -166,6 +187,15 @@ PetscErrorCode Vof::AdvectWithMomentum(Flow &flow, PetscReal dt) {
   PetscFunctionReturn(0);
 }
 
+// Before a sweep: the cell densities of alpha' (ghosts filled). Only the first sweep of a step computes
+// them; a later sweep starts from the alpha'' of the one before, whose densities MomentumSweep made.
+PetscErrorCode Vof::MomentumSweepStart(bool later) {
+  PetscFunctionBeginUser;
+  if (!later) CellDensities(da_, alphaLocal_, momentumFlow_->ReferenceDensity(), density_, &cellRho_[0]);
+  else std::swap(cellRho_[0], cellRho_[1]);
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode Vof::MomentumSweep(int e, PetscReal dt) {
   SweepFields F;
   PetscInt    s[3], n[3], gs[3], gm[3];
@@ -180,12 +210,14 @@ PetscErrorCode Vof::MomentumSweep(int e, PetscReal dt) {
   PetscCall(DMGlobalToLocal(sg_->Face(e), momentumAcc_[e], INSERT_VALUES, massLocal_[e]));
   PetscCall(sg_->GetLocal(e, massLocal_[e], &F.m));
   PetscCall(DMDAGetGhostCorners(da_, &gs[0], &gs[1], &gs[2], &gm[0], &gm[1], &gm[2]));
-  PetscCall(VecGetArray(alphaPrev_, &F.a0.data));
-  PetscCall(VecGetArray(alphaLocal_, &F.a1.data));
-  for (int c = 0; c < 3; ++c) F.a0.g0[c] = F.a1.g0[c] = gs[c];
-  F.a0.stride[0] = F.a1.stride[0] = 1;
-  F.a0.stride[1] = F.a1.stride[1] = gm[0];
-  F.a0.stride[2] = F.a1.stride[2] = gm[0] * gm[1];
+  // cellRho_[0] holds the densities of the sweep's start (MomentumSweepStart); the end's from alpha'':
+  CellDensities(da_, alphaLocal_, F.rho0, F.rho1, &cellRho_[1]);
+  F.r0.data = cellRho_[0].data();
+  F.r1.data = cellRho_[1].data();
+  for (int c = 0; c < 3; ++c) F.r0.g0[c] = F.r1.g0[c] = gs[c];
+  F.r0.stride[0] = F.r1.stride[0] = 1;
+  F.r0.stride[1] = F.r1.stride[1] = gm[0];
+  F.r0.stride[2] = F.r1.stride[2] = gm[0] * gm[1];
   const PetscReal r = dt / grid_->Spacing()[e];
   for (int c = 0; c < 3; ++c) {
     PetscCall(sg_->GetLocal(c, velocityLocal_[c], &F.u));
@@ -205,8 +237,6 @@ PetscErrorCode Vof::MomentumSweep(int e, PetscReal dt) {
     PetscCall(sg_->RestoreGlobal(c, velocity_[c], &F.out));
     PetscCall(sg_->RestoreLocal(c, velocityLocal_[c], &F.u));
   }
-  PetscCall(VecRestoreArray(alphaLocal_, &F.a1.data));
-  PetscCall(VecRestoreArray(alphaPrev_, &F.a0.data));
   PetscCall(sg_->RestoreLocal(e, massLocal_[e], &F.m));
   for (int c = 0; c < 3; ++c) {  // u'' with ghosts for the next sweep
     PetscCall(DMGlobalToLocal(sg_->Face(c), velocity_[c], INSERT_VALUES, velocityLocal_[c]));

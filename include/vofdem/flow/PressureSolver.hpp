@@ -71,6 +71,9 @@ public:
   // setting matches) until the next SetCoefficient decides anew.
   PetscErrorCode RestoreReuseFlag(PetscBool reused);
   PetscInt  PreconditionerBuilds() const { return builds_; }
+  // Solves whose CG broke down by round-off within kFloorFactor of the absolute tolerance, taken as converged (Solve).
+  PetscInt  FloorStops() const { return floorStops_; }
+  static constexpr PetscReal kFloorFactor = 10;
   bool      HasNullSpace() const { return nullSpace_ != nullptr; }
   PressureBoundary BoundaryType(int face) const { return bc_[face]; }
   PetscReal        BoundaryValue(int face) const { return bcValue_[face]; }
@@ -95,12 +98,14 @@ private:
   KSP                    ksp_ = nullptr;
   MatNullSpace           nullSpace_ = nullptr;
   Vec                    betaLocal_ = nullptr;  // ghosted coefficient for assembly
+  Vec                    betaAssembled_ = nullptr;  // betaLocal_ of the last assembly (rows whose coefficients match it are not set again)
+  bool                   assembled_ = false;
   Vec                    betaRef_ = nullptr;    // coefficient the preconditioner was built from
   Vec                    bDirichlet_ = nullptr; // rhs contribution of Dirichlet faces (depends on beta)
   Vec                    work_ = nullptr;       // rhs copy
   Vec                    solid_ = nullptr, solidLocal_ = nullptr;  // SetSolid
   bool                   hasRef_ = false;
-  PetscInt               iterations_ = 0, builds_ = 0;
+  PetscInt               iterations_ = 0, builds_ = 0, floorStops_ = 0;
   PetscReal              residual_ = 0;
   PetscBool              reused_ = PETSC_FALSE;
 };

@@ -146,6 +146,7 @@ private:
   PetscErrorCode Sweep(int d, int stage, Vec const uLocal[3], PetscReal dt, PetscReal *heightCells, PetscReal *interfaceCells);
   // The PLIC plane of the cell at q in cell units (n, c); false for a full, empty or flat-field cell.
   PetscErrorCode MomentumSweep(int d, PetscReal dt);  // VofMomentum.cpp
+  PetscErrorCode MomentumSweepStart(bool later);       // VofMomentum.cpp: the densities of the sweep's start (later: not the step's first sweep)
   PetscErrorCode Redistribute();  // alpha back into [0, 1] with particles, conservatively (VofRedistribute.cpp)
   bool Reconstruct(const LocalField &a, const PetscInt q[3], double n[3], double *c, bool *fromHeights) const;
 
@@ -165,7 +166,7 @@ private:
   Flow                *momentumFlow_ = nullptr;
   Vec                  massLocal_[3] = {nullptr, nullptr, nullptr}, velocity_[3] = {nullptr, nullptr, nullptr}, velocityLocal_[3] = {nullptr, nullptr, nullptr};
   Vec                  momentumAcc_[3] = {nullptr, nullptr, nullptr};
-  Vec                  alphaPrev_ = nullptr;
+  std::vector<PetscReal> cellRho_[2];  // MomentumSweep: cell mixture densities before and after the sweep
   Vec                  roomG_ = nullptr, fillG_ = nullptr, giveG_ = nullptr, takeG_ = nullptr;  // Redistribute's work, on da_
   Vec                  roomL_ = nullptr, fillL_ = nullptr, giveL_ = nullptr, takeL_ = nullptr;
 
