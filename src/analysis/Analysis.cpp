@@ -66,7 +66,7 @@ PetscErrorCode PowderAnalysis::SetFromOptions(MPI_Comm comm, const std::vector<s
     PetscCall(opt.RealVector("-repose_axis", "x,y of the pile's axis (default: the centroid of the heights above the substrate)", "m", reposeAxis_, 2, RealRange::Any(), &reposeAxisSet_));
     PetscCall(opt.RealVector("-repose_fit", "Fractions of the pile height between which the slope is fitted", "", reposeFit_, 2, RealRange::Closed(0, 1)));
     PetscCall(opt.Int("-bins", "Bins of the pore histograms", &bins_, 1, 100000));
-    PetscCall(opt.Int("-clump_resolution", "Quadrature columns per largest member diameter for the overlaps of clump members cut by the window or a ring (64: ~1e-5 of a clump's volume)",
+    PetscCall(opt.Int("-clump_resolution", "Quadrature columns per largest member diameter for the overlaps of clump members cut by the window or a ring (64: ~4e-4 of the volume where two members overlap)",
                       &clumpResolution_, 4, 4096));
   }
   PetscOptionsEnd();
