@@ -22,3 +22,8 @@ endfunction()
 vofdem_analyze_bad_input(analyze_no_input "option -analysis_input is missing")
 vofdem_analyze_bad_input(analyze_missing "option -analysis_input: cannot open '.*none\\.h5'" -analysis_input ${_bad}/none.h5)
 vofdem_analyze_bad_input(analyze_not_hdf5 "option -analysis_input: '.*typo\\.yaml' is not an HDF5 file" -analysis_input ${_bad}/typo.yaml)
+# Clumps (SolidVolume.cpp): a lattice of two-sphere clumps, each one particle, its union once in the packing, on 1
+# and 2 ranks and by vofdem-analyze (clump ids in particles_<step>.h5; a file without them read with a note).
+add_test(NAME analysis/clumps_run_and_tool COMMAND ${VOFDEM_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/test/analysis/test_clump_analysis.py
+         $<TARGET_FILE:vofdem_app> $<TARGET_FILE:vofdem_analyze>)
+set_tests_properties(analysis/clumps_run_and_tool PROPERTIES LABELS "quick;analysis;clumps" PROCESSORS 2 TIMEOUT 300)

@@ -66,6 +66,8 @@ PetscErrorCode PowderAnalysis::SetFromOptions(MPI_Comm comm, const std::vector<s
     PetscCall(opt.RealVector("-repose_axis", "x,y of the pile's axis (default: the centroid of the heights above the substrate)", "m", reposeAxis_, 2, RealRange::Any(), &reposeAxisSet_));
     PetscCall(opt.RealVector("-repose_fit", "Fractions of the pile height between which the slope is fitted", "", reposeFit_, 2, RealRange::Closed(0, 1)));
     PetscCall(opt.Int("-bins", "Bins of the pore histograms", &bins_, 1, 100000));
+    PetscCall(opt.Int("-clump_resolution", "Quadrature columns per largest member diameter for the overlaps of clump members cut by the window or a ring (64: ~4e-4 of the volume where two members overlap)",
+                      &clumpResolution_, 4, 4096));
   }
   PetscOptionsEnd();
   windowSet_ = (lowerSet || upperSet) ? PETSC_TRUE : PETSC_FALSE;
@@ -134,9 +136,9 @@ PetscErrorCode PowderAnalysis::Run(const Spheres &s, const Window &box, const st
   add("mean_radius_in_window", [&] { double m = 0; for (std::size_t i : in) m += s.r[i]; return m / in.size(); }(), "m");
 
   if (Wants("packing")) {
-    const double phi = PackingDensity(s, w);
+    const double phi = PackingDensity(s, w, (int)clumpResolution_);
     add("packing_density", phi, "1");
-    PetscCall(PetscPrintf(comm_, "  packing density %.6f (sphere volume inside the window / window volume)\n", phi));
+    PetscCall(PetscPrintf(comm_, "  packing density %.6f (solid volume inside the window / window volume)\n", phi));
   }
   std::vector<int> z;
   if (Wants("coordination") || Wants("rings")) z = CoordinationNumbers(s, gap_);
@@ -157,7 +159,7 @@ PetscErrorCode PowderAnalysis::Run(const Spheres &s, const Window &box, const st
   if (Wants("rings")) {
     const double pitch  = (w.hi[0] - w.lo[0]) / rings_;
     const double radius = ringRadius_ < 0 ? -ringRadius_ : std::min(0.5 * pitch, 0.5 * (w.hi[1] - w.lo[1]));
-    const auto   res    = SampleRings(s, RingsAlongX(w, (int)rings_, radius), z);
+    const auto   res    = SampleRings(s, RingsAlongX(w, (int)rings_, radius), z, (int)clumpResolution_);
     std::string  t      = "ring,x_m,y_m,radius_m,z0_m,z1_m,particles,packing_density,mean_coordination\n";
     double       phi = 0, zc = 0;
     for (size_t k = 0; k < res.size(); ++k) {

@@ -24,37 +24,7 @@ std::vector<std::size_t> CentresIn(const Spheres &s, const Window &w) {
   return in;
 }
 
-namespace {
-
-// The shifts of sphere i's periodic images that may reach into [lo - r, hi + r] (0 always).
-template <typename F>
-void ForImages(const Spheres &s, const double c[3], double reach, const double lo[3], const double hi[3], F &&f) {
-  double shifts[3][3];
-  int    counts[3];
-  for (int d = 0; d < 3; ++d) {
-    counts[d] = 0;
-    shifts[d][counts[d]++] = 0;
-    if (!s.periodic[d]) continue;
-    const double L = s.upper[d] - s.lower[d];
-    for (double sh : {-L, L})
-      if (c[d] + sh + reach > lo[d] && c[d] + sh - reach < hi[d]) shifts[d][counts[d]++] = sh;
-  }
-  for (int a = 0; a < counts[0]; ++a)
-    for (int b = 0; b < counts[1]; ++b)
-      for (int e = 0; e < counts[2]; ++e) {
-        const double p[3] = {c[0] + shifts[0][a], c[1] + shifts[1][b], c[2] + shifts[2][e]};
-        f(p);
-      }
-}
-
-}  // namespace
-
-double PackingDensity(const Spheres &s, const Window &w) {
-  double solid = 0;
-  for (std::size_t i = 0; i < s.Size(); ++i)
-    ForImages(s, &s.x[3 * i], s.r[i], w.lo, w.hi, [&](const double p[3]) { solid += s.Weight(i) * SphereBoxVolume(p, s.r[i], w.lo, w.hi); });
-  return solid / w.Volume();
-}
+double PackingDensity(const Spheres &s, const Window &w, int resolution) { return ClumpUnions(s, resolution).Inside(s, w) / w.Volume(); }
 
 std::vector<int> CoordinationNumbers(const Spheres &s, double gap) {
   const std::size_t n = s.Size();
@@ -161,19 +131,17 @@ std::vector<Ring> RingsAlongX(const Window &w, int n, double radius) {
   return rings;
 }
 
-std::vector<RingResult> SampleRings(const Spheres &s, const std::vector<Ring> &rings, const std::vector<int> &contacts) {
+std::vector<RingResult> SampleRings(const Spheres &s, const std::vector<Ring> &rings, const std::vector<int> &contacts, int resolution) {
   std::vector<RingResult> out;
+  const ClumpUnions       unions(s, resolution);
   for (const Ring &g : rings) {
-    RingResult   res;
-    const double lo[3] = {g.x - g.outer, g.y - g.outer, g.z0}, hi[3] = {g.x + g.outer, g.y + g.outer, g.z1};
-    double       solid = 0, zsum = 0;
-    res.ring           = g;
-    for (std::size_t i = 0; i < s.Size(); ++i) {
-      // A clump is counted once, by its largest sphere (CoordinationNumbers: the others hold -1).
+    RingResult res;
+    double     zsum = 0;
+    res.ring        = g;
+    // A clump is counted once, by its largest sphere (CoordinationNumbers: the others hold -1).
+    for (std::size_t i = 0; i < s.Size(); ++i)
       if (g.Contains(&s.x[3 * i]) && contacts[i] >= 0) ++res.centres, zsum += contacts[i];
-      ForImages(s, &s.x[3 * i], s.r[i], lo, hi, [&](const double p[3]) { solid += s.Weight(i) * SphereRingVolume(p, s.r[i], g); });
-    }
-    res.packing      = solid / g.Volume();
+    res.packing      = unions.Inside(s, g) / g.Volume();
     res.coordination = res.centres ? zsum / res.centres : 0;
     out.push_back(res);
   }

@@ -59,7 +59,7 @@ XdmfEntry DemOutputSettings::ParticleEntry(PetscInt step, PetscReal time, PetscI
   XdmfEntry e;
   e.time = time, e.step = step, e.file = StepFile("particles", step), e.nodes = N;
   e.attributes = {{"radius", "/radius"},     {"velocity", "/velocity", 3}, {"angular_velocity", "/angular_velocity", 3}, {"id", "/id"},
-                  {"type", "/type"},         {"contacts", "/contacts"},    {"contact_force", "/contact_force"}};
+                  {"type", "/type"},         {"clump", "/clump"},          {"contacts", "/contacts"},    {"contact_force", "/contact_force"}};
   return e;
 }
 
@@ -166,6 +166,7 @@ PetscErrorCode Dem::WriteParticles(PetscReal time) {
   PetscCall(column("angular_velocity", 3, [&](PetscInt p, PetscInt c) { return a.omega[3 * p + c]; }));
   PetscCall(column("id", 1, [&](PetscInt p, PetscInt) { return (PetscReal)a.id[p]; }));
   PetscCall(column("type", 1, [&](PetscInt p, PetscInt) { return ParticleTypeOf(a, p); }));
+  PetscCall(column("clump", 1, [&](PetscInt p, PetscInt) { return (PetscReal)a.clump[p]; }));  // -1: a loose sphere (vofdem-analyze groups the members)
   PetscCall(column("contacts", 1, [&](PetscInt p, PetscInt) { return contacts[p]; }));
   PetscCall(column("contact_force", 1, [&](PetscInt p, PetscInt) { return forceSum[p]; }));
   PetscCall(PetscViewerDestroy(&viewer));

@@ -49,7 +49,7 @@ private:
   PetscBool                windowSet_ = PETSC_FALSE;
   PetscReal                gap_ = 0, spacing_ = 2e-6, substrate_ = 0, referenceRadius_ = 0, ringRadius_ = 0;
   PetscBool                substrateSet_ = PETSC_FALSE;
-  PetscInt                 rings_ = 9, lineRays_ = 500, bins_ = 30, cells_[3] = {10, 1, 1};
+  PetscInt                 rings_ = 9, lineRays_ = 500, bins_ = 30, cells_[3] = {10, 1, 1}, clumpResolution_ = analysis::kClumpResolution;
   PetscReal                reposeAxis_[2] = {0, 0}, reposeFit_[2] = {0.2, 0.8};
   PetscBool                reposeAxisSet_ = PETSC_FALSE, surfaceGrid_ = PETSC_TRUE;
 };

@@ -1,7 +1,8 @@
 // Powder-bed metrics of a set of spheres (seeds 001 and 002, PHYSICS.md section S), serial and free
 // of PETSc objects so that unit tests can build packings with known answers:
 //  - packing density of a box window and of vertical sample rings (seed 002's "cutting rings"), with
-//    the part of every sphere inside the region (Geometry.hpp), periodic images included;
+//    the part of every sphere inside the region (Geometry.hpp), periodic images included, and the
+//    union of a clump's members inside it (SolidVolume.hpp);
 //  - coordination numbers: contacts with overlap > 0 (or a gap below a tolerance) to any sphere,
 //    counted for the spheres whose centre is in the window;
 //  - Delaunay tetrahedra of the centres in the window (CGAL, Pores.cpp): equivalent radius
@@ -15,6 +16,7 @@
 #pragma once
 
 #include "vofdem/analysis/Geometry.hpp"
+#include "vofdem/analysis/SolidVolume.hpp"
 
 #include <cstdint>
 #include <string>
@@ -27,11 +29,9 @@ struct Spheres {
   std::vector<double>       r;
   std::vector<std::int64_t> type;
   // Rigid clumps (P10), optional (empty: every sphere is a particle): each sphere's clump id (-1:
-  // none) and the weight of its volume, V_union / sum V_members of its clump (1 for a loose sphere),
-  // so that overlapping members are not counted twice in a packing density.
+  // none). A clump is one particle for coordination and rings; its members' overlaps are counted
+  // once in packing densities (SolidVolume.hpp).
   std::vector<std::int64_t> clump;
-  std::vector<double>       weight;
-  double Weight(std::size_t i) const { return weight.empty() ? 1.0 : weight[i]; }
   std::int64_t Clump(std::size_t i) const { return clump.empty() ? -1 : clump[i]; }
   // Periodic directions wrap at the box [lower, upper] (minimum image; the box must be wider than
   // three largest diameters in a periodic direction).
@@ -57,8 +57,9 @@ struct Window {
 // Indices of the spheres whose centre is in the window.
 std::vector<std::size_t> CentresIn(const Spheres &s, const Window &w);
 
-// Sum of the sphere volumes inside the window (periodic images included) / window volume.
-double PackingDensity(const Spheres &s, const Window &w);
+// Solid volume inside the window (periodic images included, clump overlaps once) / window volume;
+// `resolution`: of the clump overlaps cut by the window (SolidVolume.hpp).
+double PackingDensity(const Spheres &s, const Window &w, int resolution = kClumpResolution);
 
 // Contacts of every sphere: neighbours j with |x_i - x_j| < r_i + r_j + gap (minimum image).
 std::vector<int> CoordinationNumbers(const Spheres &s, double gap = 0);
@@ -66,10 +67,10 @@ std::vector<int> CoordinationNumbers(const Spheres &s, double gap = 0);
 struct RingResult {
   Ring   ring;
   long   centres      = 0;  // spheres whose centre is in the ring
-  double packing      = 0;  // sphere volume in the ring / ring volume
+  double packing      = 0;  // solid volume in the ring / ring volume
   double coordination = 0;  // mean contacts of the spheres whose centre is in the ring
 };
-std::vector<RingResult> SampleRings(const Spheres &s, const std::vector<Ring> &rings, const std::vector<int> &contacts);
+std::vector<RingResult> SampleRings(const Spheres &s, const std::vector<Ring> &rings, const std::vector<int> &contacts, int resolution = kClumpResolution);
 // n rings of radius `radius` along x through the window's middle in y, evenly spaced, its full height.
 std::vector<Ring> RingsAlongX(const Window &w, int n, double radius);
 
