@@ -99,6 +99,7 @@ vofdem_bad_input(periodic_short     "option -grid_periodic: the box is 0\\.01 m 
 vofdem_bad_input(periodic_unknown   "option -grid_periodic: unknown name 'w'"      ${_dem} -grid_periodic x,w)
 vofdem_bad_input(balance_unknown    "option -dem_balance: unknown name 'metis'"    ${_dem} -dem_balance metis)
 vofdem_bad_input(balance_threshold  "option -dem_balance_threshold: 0\\.5 is out of range" ${_dem} -dem_balance_threshold 0.5)
+vofdem_bad_input(balance_coupled    "option -dem_balance: coupled scenes keep the fluid's decomposition" -physics dem,flow -grid_upper 0.01,0.01,0.01 -dem_balance histogram)
 # -dem_walls (src/dem/Walls.cpp, StlMesh.cpp)
 vofdem_bad_input(wall_type_missing  "option -dem_wall_blade_type is missing: wall 'blade'" ${_dem} -dem_walls blade)
 vofdem_bad_input(wall_zero_normal   "option -dem_wall_tilt_normal: the normal must not be zero" ${_dem} -dem_walls tilt -dem_wall_tilt_type plane -dem_wall_tilt_normal 0,0,0)

@@ -67,6 +67,10 @@ PetscErrorCode Simulation::SetFromOptions() {
     PetscCall(coupling_->SetFromOptions(comm_));
     if (!(physics_.dem && physics_.flow)) coupling_.reset();
     else PetscCall(coupling_->CheckParticleSize(grid_, 2 * dem_->Radius()));
+    // The kernels and deposits live on the flow's decomposition: a DEM repartition would leave particles
+    // outside their rank's fluid cells (DemBalance.cpp).
+    if (coupling_ && dem_->Balancing())
+      VofdemInputError(comm_, "option -dem_balance: coupled scenes keep the fluid's decomposition (the particles' kernels live on its cells); use none (the default) and choose the split with -grid_ranks");
     // F1b: with moving particles, the interface's transport conserves both phases only with d(eps)/dt.
     if (coupling_ && physics_.vof && !coupling_->EpsRate())
       VofdemInputError(comm_, "option -coupling_eps_rate: particles with a free surface (dem,flow,vof) need it on: without d(eps)/dt the volumes of both phases drift as particles move");

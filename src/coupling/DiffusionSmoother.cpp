@@ -116,7 +116,17 @@ PetscErrorCode DiffusionSmoother::Assemble(int loc) {
   PetscCall(MatAssemblyEnd(A_[loc], MAT_FINAL_ASSEMBLY));
   PetscCallMPI(MPI_Allreduce(&count, &count_[loc], 1, MPIU_REAL, MPIU_SUM, grid.Comm()));
   PetscCall(CreateSolver(grid.Comm(), prefix_.c_str(), &ksp_[loc]));
-  PetscCall(KSPSetOperators(ksp_[loc], A_[loc], A_[loc]));
+  {  // the products by the stencil (DiffusionOperator.hpp); the assembled matrix stays for preconditioners
+    PetscInt lo[3], hi[3];
+    bool     periodic[3];
+    for (int e = 0; e < 3; ++e) {
+      periodic[e] = grid.Periodic(e);
+      lo[e] = 0, hi[e] = N[e] - 1;
+      if (loc == e && !periodic[e]) lo[e] = 1, hi[e] = N[e] - 2;
+    }
+    PetscCall(op_[loc].Create(dm_[loc], a, lo, hi, periodic, &S_[loc]));
+  }
+  PetscCall(KSPSetOperators(ksp_[loc], S_[loc], A_[loc]));
   PetscBool chebyshev;
   PetscCall(PetscObjectTypeCompare((PetscObject)ksp_[loc], KSPCHEBYSHEV, &chebyshev));
   if (chebyshev) {
@@ -137,6 +147,8 @@ PetscErrorCode DiffusionSmoother::Destroy() {
     work_[loc].clear();
     PetscCall(KSPDestroy(&ksp_[loc]));
     PetscCall(MatDestroy(&A_[loc]));
+    PetscCall(MatDestroy(&S_[loc]));
+    PetscCall(op_[loc].Destroy());
     PetscCall(VecDestroy(&mask_[loc]));
     PetscCall(VecDestroy(&rhs_[loc]));
     PetscCall(DMDestroy(&dm_[loc]));

@@ -116,7 +116,20 @@ bool KernelAverager::Gather(int loc, const PetscReal x[3], PetscReal H, Points &
   }
   const PetscInt  sy = gm_[loc][0], sz = gm_[loc][0] * gm_[loc][1];
   const PetscReal rc2 = rc * rc, irc2 = unresolved ? 0 : 1 / rc2, i2H2 = 1 / (2 * H * H);
-  const bool      smooth = settings_.shape == kernel::Shape::Smooth;
+  const bool      smooth = settings_.shape == kernel::Shape::Smooth && !unresolved;
+  // dx^2 of every x index of the box, computed once per particle (the same numbers as in the loop).
+  if (pts.dx2.size() < (size_t)std::max(q1[0] - q0[0] + 1, (PetscInt)0)) pts.dx2.resize(q1[0] - q0[0] + 1);
+  for (PetscInt i = q0[0]; i <= q1[0]; ++i) {
+    const PetscReal dx = (i - s[0]) * h[0];
+    pts.dx2[i - q0[0]] = dx * dx;
+  }
+  const PetscReal *dx2 = pts.dx2.data() - q0[0];
+  // The sums in registers: accumulated through pts they were stored and reloaded at every point.
+  PetscReal sumAll = 0, sumInner = 0;
+  size_t    m    = 0;
+  PetscInt *off  = pts.offsets.data();
+  PetscReal *raw = pts.raw.data();
+  char     *wall = pts.wall.data();
   for (PetscInt k = q0[2]; k <= q1[2]; ++k) {
     const PetscReal dz = (k - s[2]) * h[2];
     for (PetscInt j = q0[1]; j <= q1[1]; ++j) {
@@ -135,22 +148,29 @@ bool KernelAverager::Gather(int loc, const PetscReal x[3], PetscReal H, Points &
       // The row's wall flag (faces of y or z) or the wall faces' x indices (faces of x).
       const bool      rowWall = (loc == 1 && (j == wallAt[0] || j == wallAt[1])) || (loc == 2 && (k == wallAt[0] || k == wallAt[1]));
       const PetscInt  base    = (j - gs_[loc][1]) * sy + (k - gs_[loc][2]) * sz - gs_[loc][0];
-      PetscInt       *off     = pts.offsets.data();
-      PetscReal      *raw     = pts.raw.data();
-      char           *wall    = pts.wall.data();
-      size_t          m       = pts.n;
+      if (smooth) {  // the common case, written out: kernel::Weight with its divisions hoisted
+        for (PetscInt i = i0; i <= i1; ++i) {
+          const PetscReal r2 = dx2[i] + yz;
+          if (r2 >= rc2) continue;
+          const PetscReal q = 1 - r2 * irc2, w = (q * q) * (q * q);
+          if (w <= 0) continue;
+          const bool onWall = rowWall || (loc == 0 && (i == wallAt[0] || i == wallAt[1]));
+          off[m]            = base + i;
+          raw[m]            = w;
+          wall[m]           = onWall;
+          ++m;
+          sumAll += w;
+          if (!onWall) sumInner += w;
+        }
+        continue;
+      }
       for (PetscInt i = i0; i <= i1; ++i) {
-        const PetscReal dx = (i - s[0]) * h[0];
-        PetscReal       w  = 1;
+        PetscReal w = 1;
         if (linear) w = std::max(1 - std::fabs(i - s[0]), 0.0) * std::max(1 - std::fabs(j - s[1]), 0.0) * std::max(1 - std::fabs(k - s[2]), 0.0);
         else if (!unresolved) {
-          // kernel::Weight written out with its divisions hoisted: this loop is the coupling's cost.
-          const PetscReal r2 = dx * dx + yz;
+          const PetscReal r2 = dx2[i] + yz;
           if (r2 >= rc2) continue;
-          if (smooth) {
-            const PetscReal q = 1 - r2 * irc2;
-            w                 = (q * q) * (q * q);
-          } else w = std::exp(-r2 * i2H2);
+          w = std::exp(-r2 * i2H2);
         }
         if (w <= 0) continue;
         const bool onWall = rowWall || (loc == 0 && (i == wallAt[0] || i == wallAt[1]));
@@ -158,12 +178,14 @@ bool KernelAverager::Gather(int loc, const PetscReal x[3], PetscReal H, Points &
         raw[m]            = w;
         wall[m]           = onWall;
         ++m;
-        pts.sumAll += w;
-        if (!onWall) pts.sumInner += w;
+        sumAll += w;
+        if (!onWall) sumInner += w;
       }
-      pts.n = m;
     }
   }
+  pts.n        = m;
+  pts.sumAll   = sumAll;
+  pts.sumInner = sumInner;
   return true;
 }
 
@@ -231,14 +253,31 @@ PetscErrorCode KernelAverager::Deposit(int loc, PetscInt n, const PetscReal *x, 
     PetscCall(VecSet(pool_[loc][f], 0));
     PetscCall(VecGetArray(pool_[loc][f], &arrays_[f]));
   }
+  values_.resize(nf);
   for (PetscInt p = 0; p < n; ++p) {
-    if (!Gather(loc, &x[3 * p], H[p], points_) || !Normalise(loc, &x[3 * p], points_, true, offsets_, weights_)) {
+    if (!Gather(loc, &x[3 * p], H[p], points_)) {
+      ++bad;
+      continue;
+    }
+    for (PetscInt f = 0; f < nf; ++f) values_[f] = value[f][p * stride];
+    const Points &pts = points_;
+    if (pts.sumInner > 0) {  // straight from the gather, all fields in one pass (the same sums as through Normalise)
+      const PetscReal sum = pts.sumInner;
+      for (size_t k = 0; k < pts.n; ++k) {
+        if (pts.wall[k]) continue;
+        const PetscReal w = pts.raw[k] / sum;
+        const PetscInt  o = pts.offsets[k];
+        for (PetscInt f = 0; f < nf; ++f) arrays_[f][o] += values_[f] * w;
+      }
+      continue;
+    }
+    if (!Normalise(loc, &x[3 * p], pts, true, offsets_, weights_)) {  // the kernel missed every point: the nearest
       ++bad;
       continue;
     }
     for (PetscInt f = 0; f < nf; ++f) {
       PetscScalar    *a = arrays_[f];
-      const PetscReal v = value[f][p * stride];
+      const PetscReal v = values_[f];
       for (size_t k = 0; k < offsets_.size(); ++k) a[offsets_[k]] += v * weights_[k];
     }
   }
@@ -273,8 +312,30 @@ PetscErrorCode KernelAverager::Average(int loc, PetscInt nf, const Vec field[], 
     }
     (walls[f] ? needAll : needInner) = true;
   }
+  num_.resize(nf), den_.resize(nf);
   for (PetscInt p = 0; p < n; ++p) {
     bool ok = Gather(loc, &x[3 * p], H[p], points_);
+    const Points &pts = points_;
+    if (ok && (!needAll || pts.sumAll > 0) && (!needInner || pts.sumInner > 0)) {
+      // Straight from the gather, all fields in one pass over the support: each field's sums take the
+      // same terms in the same order as through Normalise (bitwise the same result).
+      const PetscReal sumAll = needAll ? pts.sumAll : 1, sumInner = needInner ? pts.sumInner : 1;
+      for (PetscInt f = 0; f < nf; ++f) num_[f] = den_[f] = 0;
+      for (size_t k = 0; k < pts.n; ++k) {
+        const PetscInt  o = pts.offsets[k];
+        const bool      onWall = pts.wall[k];
+        const PetscReal wAll = pts.raw[k] / sumAll, wInner = onWall ? 0 : pts.raw[k] / sumInner;
+        for (PetscInt f = 0; f < nf; ++f) {
+          if (onWall && !walls[f]) continue;
+          const PetscScalar *g = arrays_[f], *c = arrays_[nf + f];
+          const PetscReal    w = walls[f] ? wAll : wInner, wk = c ? w * PetscRealPart(c[o]) : w;
+          num_[f] += wk * PetscRealPart(g[o]);
+          den_[f] += wk;
+        }
+      }
+      for (PetscInt f = 0; f < nf; ++f) out[f][p * stride] = den_[f] > 0 ? num_[f] / den_[f] : 0;
+      continue;
+    }
     if (ok && needAll) ok = Normalise(loc, &x[3 * p], points_, false, offsets_, weights_);
     if (ok && needInner) ok = Normalise(loc, &x[3 * p], points_, true, offsetsInner_, weightsInner_);
     if (!ok) {

@@ -23,6 +23,7 @@
 // so that deposit and average are adjoint to round-off) takes options from the prefix.
 #pragma once
 
+#include "vofdem/coupling/DiffusionOperator.hpp"
 #include "vofdem/coupling/KernelAverager.hpp"
 #include "vofdem/flow/StaggeredGrid.hpp"
 
@@ -71,7 +72,9 @@ private:
   PetscInt             steps_ = 1, iterations_ = 0;
   std::string          prefix_;
   DM                   dm_[4]   = {nullptr, nullptr, nullptr, nullptr};  // stencil width 1, the location's layout
-  Mat                  A_[4]    = {nullptr, nullptr, nullptr, nullptr};
+  Mat                  A_[4]    = {nullptr, nullptr, nullptr, nullptr};  // assembled (the preconditioner's)
+  Mat                  S_[4]    = {nullptr, nullptr, nullptr, nullptr};  // the same by the stencil (the products)
+  DiffusionOperator    op_[4];
   KSP                  ksp_[4]  = {nullptr, nullptr, nullptr, nullptr};
   Vec                  mask_[4] = {nullptr, nullptr, nullptr, nullptr};  // 1 where the smoothing acts, 0 on wall faces
   PetscReal            count_[4] = {0, 0, 0, 0};                         // points where mask is 1

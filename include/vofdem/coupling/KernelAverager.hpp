@@ -57,6 +57,7 @@ private:
     std::vector<PetscInt>  offsets;  // sized for the largest index box seen, n in use
     std::vector<PetscReal> raw;
     std::vector<char>      wall;
+    std::vector<PetscReal> dx2;  // (x index - particle)^2 h^2 along the box's x range
     size_t                 n      = 0;
     PetscReal              sumAll = 0, sumInner = 0;
   };
@@ -76,6 +77,7 @@ private:
   std::vector<PetscInt>      offsets_, offsetsInner_;
   std::vector<PetscReal>     weights_, weightsInner_;
   std::vector<PetscScalar *> arrays_;
+  std::vector<PetscReal>     values_, num_, den_;  // per field, reused
 };
 
 }  // namespace vofdem

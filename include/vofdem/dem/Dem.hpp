@@ -99,6 +99,7 @@ public:
   const ParticleSwarm &Particles() const { return swarm_; }
   // The fluid coupling (Coupling.hpp) sets the swarm's fluid_* fields; the integrator then applies them.
   void               SetFluidCoupled(bool on) { fluidCoupled_ = on; }
+  bool               Balancing() const { return balance_; }  // -dem_balance histogram
   // The particles' wettability (-coupling_contact_angle): every kick adds Princen's capillary force at the
   // particle's current height above its fluid_surface_plane (Capillary.hpp), sigma in N/m, theta in rad.
   void               SetCapillary(PetscReal sigma, PetscReal theta) { capSigma_ = sigma, capTheta_ = theta; }
