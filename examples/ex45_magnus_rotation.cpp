@@ -240,7 +240,6 @@ PetscErrorCode Lubrication(bool vof, PetscInt *failures) {
     PetscCall(SetReal("-vof_density", kRhoF));
     PetscCall(SetReal("-vof_viscosity", mu));
     PetscCall(Set("-vof_boxes", "0,0,0,0.016,0.008,0.008"));
-    PetscCall(Set("-dt_force", "1"));  // the viscosity jump's explicit limit: there is no jump, the box is all liquid
   }
   vofdem::Simulation sim;
   PetscCall(SetUp(sim));

@@ -172,10 +172,13 @@ PetscErrorCode Simulation::ChooseTimeStep() {
     limit        = dem_->StableTimeStep();
     dtLimitName_ = dem_->TimeStepBasis();
   }
+  // With mass-consistent momentum (Step) the VOF sweeps move the momentum: their own Courant limit
+  // (-vof_cfl per direction) replaces the flow's AB2 one (-flow_cfl over the sum of directions).
+  const bool ownAdvection = !(physics_.vof && !coupling_ && vof_->ConsistentMomentum());
   if (physics_.flow) {
     PetscReal   f;
     std::string basis;
-    PetscCall(flow_->StableTimeStep(&f, &basis));
+    PetscCall(flow_->StableTimeStep(&f, &basis, ownAdvection));
     if (f < limit) {
       limit        = f;
       dtLimitName_ = basis;
@@ -194,11 +197,6 @@ PetscErrorCode Simulation::ChooseTimeStep() {
     if (cap < limit) {
       limit        = cap;
       dtLimitName_ = "capillary sqrt(rho_mean h^3/(2 pi sigma))";
-    }
-    const PetscReal vis = vof_->ViscosityJumpTimeStep(flow_->ReferenceDensity(), flow_->ReferenceViscosity());
-    if (vis < limit) {
-      limit        = vis;
-      dtLimitName_ = "viscosity jump (explicit div(mu grad U^T): min(rho)/(4 |mu_1 - mu_0| sum 1/h^2))";
     }
   }
   if (!(limit < PETSC_MAX_REAL) && step_ > 0) PetscFunctionReturn(0);  // came to rest: keep the step
@@ -443,18 +441,12 @@ PetscErrorCode Simulation::View(PetscViewer viewer) const {
   if (physics_.flow) {
     PetscReal   f;
     std::string basis;
-    PetscCall(flow_->StableTimeStep(&f, &basis));
+    PetscCall(flow_->StableTimeStep(&f, &basis, !(physics_.vof && !coupling_ && vof_->ConsistentMomentum())));
     PetscCall(PetscViewerASCIIPrintf(viewer, "time step limits: flow %g s (%s)%s\n", (double)f, basis.c_str(), dtUser_ > 0 ? "" : "; adapted every step"));
   }
-  if (physics_.vof) {  // the interface's fixed limits (PETSC_MAX_REAL: none)
-    const PetscReal cap = vof_->CapillaryTimeStep(flow_->ReferenceDensity()), vis = vof_->ViscosityJumpTimeStep(flow_->ReferenceDensity(), flow_->ReferenceViscosity());
-    if (cap < PETSC_MAX_REAL || vis < PETSC_MAX_REAL) {
-      std::string line = "time step limits: vof";
-      char        b[160];
-      if (cap < PETSC_MAX_REAL) std::snprintf(b, sizeof b, " capillary %g s", (double)cap), line += b;
-      if (vis < PETSC_MAX_REAL) std::snprintf(b, sizeof b, "%s viscosity jump %g s (explicit div(mu grad U^T))", cap < PETSC_MAX_REAL ? ";" : "", (double)vis), line += b;
-      PetscCall(PetscViewerASCIIPrintf(viewer, "%s\n", line.c_str()));
-    }
+  if (physics_.vof) {  // the interface's fixed limit (PETSC_MAX_REAL: none)
+    const PetscReal cap = vof_->CapillaryTimeStep(flow_->ReferenceDensity());
+    if (cap < PETSC_MAX_REAL) PetscCall(PetscViewerASCIIPrintf(viewer, "time step limits: vof capillary %g s\n", (double)cap));
   }
   PetscCall(PetscViewerASCIIPrintf(viewer, "time step: %g s (set by %s); gravity (%g, %g, %g) m/s^2; seed %" PetscInt_FMT "\n", (double)dt_,
                                    dtLimitName_.c_str(), (double)gravity_[0], (double)gravity_[1], (double)gravity_[2], seed_));

@@ -219,12 +219,27 @@ PetscErrorCode Flow::PropertiesChanged() {
 // the pressure operator and (next assembly) the viscous matrix.
 PetscErrorCode Flow::UpdateLocals(bool properties) {
   PetscFunctionBeginUser;
-  if (properties) {
+  if (properties) PetscCall(UpdatePropertyLocals());
+  for (int d = 0; d < 3; ++d) {
+    PetscCall(DMGlobalToLocal(sg_.Face(d), u_[d], INSERT_VALUES, uLocal_[d]));
+    PetscCall(bc_.FillVelocityGhosts(sg_, d, uLocal_[d]));
+  }
+  PetscCall(DMGlobalToLocal(sg_.Cells(), p_, INSERT_VALUES, pLocal_));
+  PetscCall(bc_.FillCellGhosts(sg_, pLocal_));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode Flow::UpdatePropertyLocals() {
+  PetscFunctionBeginUser;
+  {
     PetscReal lo;
     PetscCall(VecMin(rho_, nullptr, &lo));
     if (!(lo > 0)) VofdemInputError(grid_->Comm(), "flow: the density must be positive everywhere (found %g kg/m^3)", (double)lo);
     PetscCall(VecMin(mu_, nullptr, &lo));
     if (!(lo > 0)) VofdemInputError(grid_->Comm(), "flow: the viscosity must be positive everywhere (found %g Pa s)", (double)lo);
+    PetscReal hi;
+    PetscCall(VecMax(mu_, nullptr, &hi));
+    viscosityJump_ = hi > lo;
     PetscCall(VecMin(eps_, nullptr, &lo));
     if (!(lo > 0)) VofdemInputError(grid_->Comm(), "flow: the fluid fraction eps must be positive everywhere (found %g)", (double)lo);
     PetscCall(VecPointwiseDivide(beta_, eps_, rho_));
@@ -241,12 +256,6 @@ PetscErrorCode Flow::UpdateLocals(bool properties) {
     propertiesDirty_ = false;
     viscousStale_ = PETSC_TRUE;  // the viscous matrix must be rebuilt, not only its diagonal
   }
-  for (int d = 0; d < 3; ++d) {
-    PetscCall(DMGlobalToLocal(sg_.Face(d), u_[d], INSERT_VALUES, uLocal_[d]));
-    PetscCall(bc_.FillVelocityGhosts(sg_, d, uLocal_[d]));
-  }
-  PetscCall(DMGlobalToLocal(sg_.Cells(), p_, INSERT_VALUES, pLocal_));
-  PetscCall(bc_.FillCellGhosts(sg_, pLocal_));
   PetscFunctionReturn(0);
 }
 
@@ -300,19 +309,19 @@ PetscErrorCode Flow::ProjectInitialVelocity() {
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode Flow::StableTimeStep(PetscReal *dt, std::string *basis) const {
+PetscErrorCode Flow::StableTimeStep(PetscReal *dt, std::string *basis, bool ownAdvection) {
   PetscReal rate = 0;
 
   PetscFunctionBeginUser;
   const PetscReal *h = grid_->Spacing();
-  for (int d = 0; d < 3; ++d) {
+  for (int d = 0; d < 3 && ownAdvection; ++d) {
     PetscReal m, boundary = 0;  // a moving wall or an inflow moves the fluid next to it
     for (int f = 0; f < 6; ++f) boundary = std::fmax(boundary, std::fabs(bc_.Face(f).velocity[d]));
     PetscCall(VecNorm(u_[d], NORM_INFINITY, &m));
     rate += std::fmax(m, boundary) / h[d];
   }
   *dt    = rate > 0 ? cfl_ / rate : PETSC_MAX_REAL;
-  *basis = "flow convective CFL " + std::to_string((double)cfl_);
+  *basis = ownAdvection ? "flow convective CFL " + std::to_string((double)cfl_) : "none of the flow's (momentum moved by the VOF sweeps)";
   const PetscReal g = std::sqrt(gravity_[0] * gravity_[0] + gravity_[1] * gravity_[1] + gravity_[2] * gravity_[2]);
   const PetscReal hmin = std::fmin(h[0], std::fmin(h[1], h[2]));
   if (g > 0 && std::sqrt(cfl_ * hmin / g) < *dt) {
@@ -320,19 +329,11 @@ PetscErrorCode Flow::StableTimeStep(PetscReal *dt, std::string *basis) const {
     *dt    = std::sqrt(cfl_ * hmin / g);
     *basis = "flow gravity (sqrt(cfl h/|g|))";
   }
-  if (!implicitViscosity_) {
-    // AB2 is stable for diffusion while nu dt sum(4/h^2) <= 1.
-    Vec       nu;
-    PetscReal numax;
-    PetscCall(VecDuplicate(mu_, &nu));
-    PetscCall(VecPointwiseDivide(nu, mu_, rho_));
-    PetscCall(VecMax(nu, nullptr, &numax));
-    PetscCall(VecDestroy(&nu));
-    const PetscReal lim = 1 / (numax * 4 * (1 / (h[0] * h[0]) + 1 / (h[1] * h[1]) + 1 / (h[2] * h[2])));
-    if (lim < *dt) {
-      *dt    = lim;
-      *basis = "flow explicit viscosity";
-    }
+  PetscReal viscous;  // AB2 is stable while dt times the explicit viscous terms' largest rate is <= 1
+  PetscCall(ViscousRate(&viscous));
+  if (viscous > 0 && 1 / viscous < *dt) {
+    *dt    = 1 / viscous;
+    *basis = implicitViscosity_ ? "flow explicit transpose viscous term (FlowViscousLimit.cpp)" : "flow explicit viscosity (FlowViscousLimit.cpp)";
   }
   PetscFunctionReturn(0);
 }

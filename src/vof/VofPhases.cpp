@@ -65,21 +65,4 @@ PetscErrorCode Vof::UpdateProperties(Flow &flow) const {
   PetscFunctionReturn(0);
 }
 
-// The flow keeps div(mu (grad U)^T) explicit (AB2, Flow.hpp). Where mu is uniform it vanishes with
-// div U = 0; across the interface the viscosity jump |mu_1 - mu_0| acts like an explicit diffusion
-// coefficient, and a face's density (the mean of its two cells) can be as low as the lighter phase's.
-// AB2 is stable for diffusion while nu dt sum(4/h^2) <= 1 (the flow's explicit-viscosity limit), with
-// nu = |mu_1 - mu_0| / min(rho_0, rho_1) here: dt <= min(rho) / (4 |mu_1 - mu_0| sum 1/h^2), i.e. about
-// h^2 rho/mu. A bound from the phases (like the capillary limit), not from the current field. It is
-// safe but not sharp: the dam break at a/h = 8 (ratio 1000, mu_1 = 5 Pa s, bound 8.5e-7 s) ran stably
-// with -dt 1e-4 forced (117 times the bound) and blew up at 2e-4 (mu_1 = 0.05: stable at 7 times).
-// A sharper estimate (the face densities actually next to the jump) or an implicit treatment of the
-// term would lift it.
-PetscReal Vof::ViscosityJumpTimeStep(PetscReal otherDensity, PetscReal otherViscosity) const {
-  const PetscReal jump = std::fabs(viscosity_ - otherViscosity);
-  if (!(jump > 0)) return PETSC_MAX_REAL;
-  const PetscReal *h = grid_->Spacing(), sum = 1 / (h[0] * h[0]) + 1 / (h[1] * h[1]) + 1 / (h[2] * h[2]);
-  return std::fmin(density_, otherDensity) / (4 * jump * sum);
-}
-
 }  // namespace vofdem

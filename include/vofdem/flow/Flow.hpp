@@ -45,9 +45,12 @@ public:
   PetscErrorCode SetUp(const PetscReal gravity[3]);
   const PetscReal *Gravity() const { return gravity_; }  // m/s^2, as given to SetUp
   PetscErrorCode Step(PetscReal t, PetscReal dt);  // advances from t to t + dt
-  // Stable time step at the current velocity: convective -flow_cfl, and with explicit viscosity the
-  // viscous limit; collective.
-  PetscErrorCode StableTimeStep(PetscReal *dt, std::string *basis) const;
+  // Stable time step at the current velocity and properties: convective -flow_cfl, gravity's
+  // start-up limit, and the explicit viscous terms' limit (FlowViscousLimit.cpp: the transpose term
+  // always, the whole viscous term with -flow_viscous explicit); collective. ownAdvection false:
+  // another module transports the momentum (the VOF's mass-consistent sweeps, which limit the step
+  // themselves), so the AB2 advection's Courant limit does not apply.
+  PetscErrorCode StableTimeStep(PetscReal *dt, std::string *basis, bool ownAdvection = true);
   PetscErrorCode Summarize(FlowSummary *s);  // collective; also measures div(eps U)
   PetscErrorCode View(PetscViewer viewer) const;
   PetscErrorCode Save(PetscViewer viewer) const;
@@ -121,7 +124,9 @@ public:
   PetscErrorCode SampleVelocity(const PetscReal x[3], PetscReal u[3]) const;
 
 private:
-  PetscErrorCode UpdateLocals(bool properties);
+  PetscErrorCode UpdateLocals(bool properties);  // ghosted velocities and pressure, and the properties' if asked
+  PetscErrorCode UpdatePropertyLocals();         // eps mu, eps/rho, eps ghosted; the pressure coefficient
+  PetscErrorCode ViscousRate(PetscReal *rate);  // 1/s: the explicit viscous terms' bound (FlowViscousLimit.cpp)
   PetscErrorCode ComputeExplicitTerms();  // H_ (and L u^n) at time level n
   PetscErrorCode Predict(PetscReal t, PetscReal dt);
   PetscErrorCode Project(PetscReal dt, Vec *uField);
@@ -181,6 +186,7 @@ private:
   FlowSummary last_;
   PetscBool   viscousStale_ = PETSC_TRUE;  // properties changed since the viscous matrix was assembled
   bool        propertiesDirty_ = true;
+  bool        viscosityJump_ = false;  // mu not uniform (two phases): the transpose term's limit applies (FlowViscousLimit.cpp)
   PetscLogEvent evExplicit_ = 0, evPredict_ = 0, evProject_ = 0, evGhosts_ = 0, evViscousAssemble_ = 0;
 };
 

@@ -102,9 +102,6 @@ public:
   PetscReal      SurfaceTensionCoefficient() const { return sigma_; }
   // The capillary time-step limit sqrt(rho_mean h^3 / (2 pi sigma)) (PETSC_MAX_REAL without sigma).
   PetscReal CapillaryTimeStep(PetscReal otherDensity) const;
-  // The limit of the flow's explicit div(mu (grad U)^T) across the viscosity jump (VofPhases.cpp):
-  // min(rho) / (4 |mu_1 - mu_0| sum 1/h^2) (PETSC_MAX_REAL with equal viscosities).
-  PetscReal ViscosityJumpTimeStep(PetscReal otherDensity, PetscReal otherViscosity) const;
   Vec       Curvature() const { return kappa_; }  // 1/m, 1e300 where none (after SurfaceTension)
   Vec Fraction() const { return alpha_; }  // global vector of FractionDM()
   DM  FractionDM() const { return da_; }
