@@ -224,11 +224,11 @@ PetscErrorCode Run() {
                           (double)ratio, (double)drop0[0], (double)drop0[1], (double)drop1[0], (double)drop1[1], (double)dvol, volOk ? "ok" : "FAIL"));
     pass = momOk && dropOk && volOk;
   } else {
-    const bool velOk = !blown && worst < velTol, shapeOk = !blown && shape < shapeTol;
+    const bool velOk = !blown && worst < velTol, shapeOk = !blown && shape < shapeTol, boundOk = !blown && vs.boundViolation <= 1e-12;
     PetscCall(PetscPrintf(PETSC_COMM_WORLD, "%s momentum, ratio %g: max|u - U|/|U| over the run %.3e (tolerance %.0e) %s\n", scheme, (double)ratio, (double)worst, (double)velTol, velOk ? "ok" : "FAIL"));
-    PetscCall(PetscPrintf(PETSC_COMM_WORLD, "%s momentum, ratio %g: shape error %.4e (tolerance %g) %s, volume change %.1e (tolerance 1e-12) %s, bounds %.1e\n", scheme, (double)ratio,
-                          (double)shape, (double)shapeTol, shapeOk ? "ok" : "FAIL", (double)dvol, volOk ? "ok" : "FAIL", (double)vs.boundViolation));
-    pass = velOk && shapeOk && volOk;
+    PetscCall(PetscPrintf(PETSC_COMM_WORLD, "%s momentum, ratio %g: shape error %.4e (tolerance %g) %s, volume change %.1e (tolerance 1e-12) %s, bounds %.1e (tolerance 1e-12) %s\n", scheme,
+                          (double)ratio, (double)shape, (double)shapeTol, shapeOk ? "ok" : "FAIL", (double)dvol, volOk ? "ok" : "FAIL", (double)vs.boundViolation, boundOk ? "ok" : "FAIL"));
+    pass = velOk && shapeOk && volOk && boundOk;
   }
   if (expectFail) PetscCall(PetscPrintf(PETSC_COMM_WORLD, "expected to miss a tolerance: %s\n", pass ? "it did not (FAIL)" : "it did (ok)"));
   PetscCall(sim.Destroy());
@@ -242,6 +242,9 @@ int main(int argc, char **argv) {
   return vofdem::Finalize(Run());
 }
 
+// surface_tension_1000: with sigma = 1 N/m (We 800) the consistent transport's capillary currents reach about
+// 1e-2 of U (README, "Not yet"), so that test holds them under 2e-2 only as a regression bound; what it guards is the
+// interface staying bounded (1e-12) and its volume exact at the step the time-step control allows.
 /*TEST
   rtol: 1e-4
   test:
@@ -264,4 +267,12 @@ int main(int argc, char **argv) {
     suffix: still_gas_advective
     nsize: 2
     args: -ratio 1000 -still_gas -vof_momentum advective -expect_fail 1
+  test:
+    suffix: surface_tension_1000
+    nsize: 2
+    args: -ratio 1000 -vof_surface_tension 1 -velocity_tol 2e-2
+  test:
+    suffix: surface_tension_1000_serial
+    nsize: 1
+    args: -ratio 1000 -vof_surface_tension 1 -velocity_tol 2e-2
 TEST*/

@@ -172,8 +172,8 @@ PetscErrorCode Simulation::ChooseTimeStep() {
     limit        = dem_->StableTimeStep();
     dtLimitName_ = dem_->TimeStepBasis();
   }
-  // With mass-consistent momentum (Step) the VOF sweeps move the momentum: their own Courant limit
-  // (-vof_cfl per direction) replaces the flow's AB2 one (-flow_cfl over the sum of directions).
+  // With mass-consistent momentum (Step) the VOF sweeps move the momentum: the flow's AB2 limit over the
+  // sum of directions becomes -flow_cfl per direction (Flow::StableTimeStep).
   const bool ownAdvection = !(physics_.vof && !coupling_ && vof_->ConsistentMomentum());
   if (physics_.flow) {
     PetscReal   f;

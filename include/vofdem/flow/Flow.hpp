@@ -48,8 +48,8 @@ public:
   // Stable time step at the current velocity and properties: convective -flow_cfl, gravity's
   // start-up limit, and the explicit viscous terms' limit (FlowViscousLimit.cpp: the transpose term
   // always, the whole viscous term with -flow_viscous explicit); collective. ownAdvection false:
-  // another module transports the momentum (the VOF's mass-consistent sweeps, which limit the step
-  // themselves), so the AB2 advection's Courant limit does not apply.
+  // another module transports the momentum (the VOF's mass-consistent sweeps), so the AB2 advection's
+  // limit over the sum of directions does not apply; -flow_cfl then bounds each direction's Courant number.
   PetscErrorCode StableTimeStep(PetscReal *dt, std::string *basis, bool ownAdvection = true);
   PetscErrorCode Summarize(FlowSummary *s);  // collective; also measures div(eps U)
   PetscErrorCode View(PetscViewer viewer) const;
