@@ -30,7 +30,7 @@ PetscErrorCode Flow::SetFromOptions(const Grid &grid) {
     PetscCall(opt.Real("-density", "Fluid density (uniform; the VOF module makes it a field)", "kg/m^3", &density_, RealRange::Positive()));
     PetscCall(opt.Real("-viscosity", "Dynamic viscosity (uniform)", "Pa s", &viscosity_, RealRange::Positive()));
     PetscCall(opt.RealVector("-initial_velocity", "Uniform initial velocity x,y,z", "m/s", velocity0_, 3));
-    PetscCall(opt.Real("-cfl", "Convective Courant number of the time step: dt = cfl / max(|u|/hx + |v|/hy + |w|/hz); AB2 advection (upwind at extrema) is neutral at 0.5 and unstable above", "-", &cfl_, RealRange::LeftOpen(0, 0.5)));
+    PetscCall(opt.Real("-cfl", "Convective Courant number of the time step: dt = cfl / max(|u|/hx + |v|/hy + |w|/hz); AB2 advection (upwind at extrema) is neutral at 0.5 and unstable above. With the VOF's mass-consistent momentum: dt = cfl / max over directions of max|u_d|/h_d", "-", &cfl_, RealRange::LeftOpen(0, 0.5)));
     std::vector<std::string> lim = {limiterName_};
     PetscCall(opt.NameList("-advection", "Advection scheme: TVD limiter minmod, vanleer, mc, superbee, koren (bounded, second order), central (unbounded), upwind (first order)",
                            LimiterNames(), &lim));
