@@ -5,15 +5,15 @@
 // mass-weighted inner product), and Gershgorin's theorem bounds their size by each face row's sum of
 // absolute coefficients divided by the face's (eps rho)_f. Per d-face of MomentumTerms (FlowMomentum.cpp):
 //   L (explicit only):  2 (em_C + em_M)/h_d^2 + sum_e 2 (em_P,e + em_N,e)/h_e^2
-//   T (always):         2 (|em_C - m| + |em_M - m|)/h_d^2 + sum_e 2 (|em_P,e - m| + |em_N,e - m|)/(h_d h_e)
+//   T (mu not uniform): 2 (|em_C - m| + |em_M - m|)/h_d^2 + sum_e 2 (|em_P,e - m| + |em_N,e - m|)/(h_d h_e)
 // with em = eps mu at the two cells (C, M) and on the four edges (P, N per tangential e). T is the
 // transpose term div(eps mu grad U^T): with a uniform em it is em grad(div U), zero on the projected
 // velocity, so only the deviation from a reference m (the middle of the row's em values) acts. This
 // replaces a bound from the phases alone (min(rho)/(4 |mu_1 - mu_0| sum 1/h^2)), which assumed the whole
 // viscosity jump at a face of the lighter phase; here a face of pure gas sees at most half of it (the
 // edge values average four cells) and faces inside the denser phase are weighted by their own density.
-// Like the phase bound it is a sufficient estimate, not a proof: the operator with the shifted T is not
-// symmetric, and the properties are those at the start of the step (the interface moves at most half a
+// Like the phase bound it is an estimate, not a proof: the operator with the shifted T is not
+// symmetric, and the properties are those at the start of the step (the interface moves less than half a
 // cell in it). In a uniform fluid with explicit viscosity it is the classical nu dt sum(4/h^2) <= 1.
 // T is bounded only where the viscosity itself is not uniform (two phases): with one fluid and particles
 // (eps varying, div U not zero) the term was never limited and runs such as ex34's packed bed are stable
