@@ -174,7 +174,7 @@ PetscErrorCode Simulation::ChooseTimeStep() {
   }
   // With mass-consistent momentum (Step) the VOF sweeps move the momentum: the flow's AB2 limit over the
   // sum of directions becomes -flow_cfl per direction (Flow::StableTimeStep).
-  const bool ownAdvection = !(physics_.vof && !coupling_ && vof_->ConsistentMomentum());
+  const bool ownAdvection = !ConsistentVofMomentum();
   if (physics_.flow) {
     PetscReal   f;
     std::string basis;
@@ -263,7 +263,7 @@ PetscErrorCode Simulation::Step() {
   }
   // With particles the coupled step above moves the interface after the flow step, with the
   // flow's own (advective) momentum transport: the mass-consistent sweeps do not carry eps yet.
-  const bool consistent = physics_.vof && !coupling_ && vof_->ConsistentMomentum();
+  const bool consistent = ConsistentVofMomentum();
   if (consistent) {
     // Mass-consistent momentum (PHYSICS.md F2, VofMomentum.cpp): alpha and rho u move together with
     // u^n and the same geometric fluxes; the flow's step then works with rho^{n+1} and the surface
@@ -441,7 +441,7 @@ PetscErrorCode Simulation::View(PetscViewer viewer) const {
   if (physics_.flow) {
     PetscReal   f;
     std::string basis;
-    PetscCall(flow_->StableTimeStep(&f, &basis, !(physics_.vof && !coupling_ && vof_->ConsistentMomentum())));
+    PetscCall(flow_->StableTimeStep(&f, &basis, !ConsistentVofMomentum()));
     PetscCall(PetscViewerASCIIPrintf(viewer, "time step limits: flow %g s (%s)%s\n", (double)f, basis.c_str(), dtUser_ > 0 ? "" : "; adapted every step"));
   }
   if (physics_.vof) {  // the interface's fixed limit (PETSC_MAX_REAL: none)

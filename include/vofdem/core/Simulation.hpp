@@ -50,6 +50,8 @@ public:
   const Grid &GetGrid() const { return grid_; }
 
 private:
+  // The VOF sweeps move the momentum (mass-consistent transport, not with particles): Step, ChooseTimeStep.
+  bool ConsistentVofMomentum() const { return physics_.vof && !coupling_ && vof_->ConsistentMomentum(); }
   PetscErrorCode Monitor();
 
   MPI_Comm   comm_ = MPI_COMM_NULL;
