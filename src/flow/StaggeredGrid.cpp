@@ -17,11 +17,17 @@ PetscErrorCode StaggeredGrid::Create(const Grid &grid) {
   std::vector<PetscInt> own[3];
   for (int d = 0; d < 3; ++d) {
     own[d].assign(l[d], l[d] + m[d]);
-    // The 2-wide ghost layer (TVD stencil) needs 2 owned cells per rank per direction; say so here
-    // instead of PETSc's message about stencil widths.
+    // The 2-wide ghost layer (TVD stencil) needs 2 owned cells per rank per direction, unless the
+    // direction is one cell across on one rank and not periodic: a quasi-2-D case, whose ghosts the
+    // boundary conditions fill without neighbours (with slip walls on both sides it is the 2-D problem:
+    // ex30 gives the same fronts as with two layers). Say so here instead of PETSc's message about
+    // stencil widths.
+    const bool single = m[d] == 1 && grid.Cells()[d] == 1 && !grid.Periodic(d);
     for (PetscInt r = 0; r < m[d]; ++r)
-      if (own[d][r] < 2)
-        VofdemInputError(grid.Comm(), "option -grid_cells: the flow solver needs at least 2 cells per rank in each direction, but %c has %" PetscInt_FMT " cells on %" PetscInt_FMT " ranks (fewer ranks, more cells, or -grid_ranks)",
+      if (own[d][r] < 2 && !single)
+        VofdemInputError(grid.Comm(),
+                         "option -grid_cells: the flow solver needs at least 2 cells per rank in each direction (or one cell across a non-periodic direction on one rank), but %c has %" PetscInt_FMT
+                         " cells on %" PetscInt_FMT " ranks (fewer ranks, more cells, or -grid_ranks)",
                          "xyz"[d], grid.Cells()[d], m[d]);
   }
   DMBoundaryType bt[3];
