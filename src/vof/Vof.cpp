@@ -107,7 +107,7 @@ PetscErrorCode Vof::Destroy() {
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode Vof::SetFraction(Shape shape, void *ctx, const PetscInt samples[3]) {
+PetscErrorCode Vof::SetFraction(Shape shape, void *ctx, const PetscInt samples[3], CellClass classify) {
   PetscScalar ***a;
   PetscInt       s[3], n[3];
 
@@ -121,6 +121,18 @@ PetscErrorCode Vof::SetFraction(Shape shape, void *ctx, const PetscInt samples[3
       for (PetscInt i = s[0]; i < s[0] + n[0]; ++i) {
         const PetscInt q[3] = {i, j, k};
         PetscInt       inside = 0;
+        if (classify) {
+          PetscReal cl[3], ch[3];
+          for (int d = 0; d < 3; ++d) {
+            cl[d] = lo[d] + q[d] * h[d];
+            ch[d] = lo[d] + (q[d] + 1) * h[d];
+          }
+          const int c = classify(ctx, cl, ch);
+          if (c >= 0) {
+            a[k][j][i] = c;
+            continue;
+          }
+        }
         for (PetscInt c = 0; c < samples[2]; ++c)
           for (PetscInt b = 0; b < samples[1]; ++b)
             for (PetscInt e = 0; e < samples[0]; ++e) {

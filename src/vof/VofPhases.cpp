@@ -28,13 +28,44 @@ PetscReal InsideShapes(void *ctx, const PetscReal x[3]) {
   return 1;
 }
 
+// InsideShapes' answer for a whole cell where it is certain (Vof::CellClass): outside every shape's
+// bounding box (the samples lie strictly inside the cell): 0; all 8 corners strictly inside one box or
+// sphere (convex: so is every point between them): 1. Otherwise -1 (sampled). Most cells of a scene
+// are one or the other; sampling them all was a tenth of the dam break's start-up.
+int ShapesCellClass(void *ctx, const PetscReal lo[3], const PetscReal hi[3]) {
+  const Shapes *s    = static_cast<const Shapes *>(ctx);
+  bool          near = false;
+  for (size_t b = 0; b + 6 <= s->boxes->size(); b += 6) {
+    const PetscReal *q = s->boxes->data() + b;
+    bool             apart = false, in = true;
+    for (int d = 0; d < 3; ++d) {
+      apart = apart || hi[d] <= q[d] || lo[d] >= q[d + 3];
+      in    = in && lo[d] > q[d] && hi[d] < q[d + 3];
+    }
+    if (in) return 1;
+    near = near || !apart;
+  }
+  for (size_t b = 0; b + 4 <= s->spheres->size(); b += 4) {
+    const PetscReal *q = s->spheres->data() + b;
+    bool             apart = false, in = true;
+    for (int d = 0; d < 3; ++d) apart = apart || hi[d] <= q[d] - q[3] || lo[d] >= q[d] + q[3];
+    for (int c = 0; c < 8 && in; ++c) {
+      const PetscReal x[3] = {c & 1 ? hi[0] : lo[0], c & 2 ? hi[1] : lo[1], c & 4 ? hi[2] : lo[2]};
+      in                   = std::hypot(x[0] - q[0], std::hypot(x[1] - q[1], x[2] - q[2])) < q[3];
+    }
+    if (in) return 1;
+    near = near || !apart;
+  }
+  return near ? -1 : 0;
+}
+
 }  // namespace
 
 PetscErrorCode Vof::SetInitialShapes() {
   PetscFunctionBeginUser;
   Shapes         s       = {&boxes_, &spheres_};
   const PetscInt n[3]    = {samples_, samples_, samples_};
-  PetscCall(SetFraction(InsideShapes, &s, n));
+  PetscCall(SetFraction(InsideShapes, &s, n, ShapesCellClass));
   PetscFunctionReturn(0);
 }
 

@@ -65,9 +65,15 @@ public:
   PetscErrorCode Load(PetscViewer viewer);
   PetscErrorCode Destroy();
 
+  // Optional with a Shape: for the cell [lo, hi], 0 if no point inside the cell is inside the shape,
+  // 1 if every point is, -1 if it cannot tell (the cell is then sampled).
+  using CellClass = int (*)(void *ctx, const PetscReal lo[3], const PetscReal hi[3]);
+
   // alpha from a shape function: the fraction of samples[d] points per direction (cell-centred
-  // sub-cells) where shape < 0; samples in a direction the shape does not depend on may be 1.
-  PetscErrorCode SetFraction(Shape shape, void *ctx, const PetscInt samples[3]);
+  // sub-cells) where shape < 0; samples in a direction the shape does not depend on may be 1. With
+  // `classify`, cells it decides are set without sampling (the same values, as it must only decide
+  // what every sample would say).
+  PetscErrorCode SetFraction(Shape shape, void *ctx, const PetscInt samples[3], CellClass classify = nullptr);
   // The scene's initial fraction: the heavy phase fills -vof_boxes and -vof_spheres.
   PetscErrorCode SetInitialShapes();
   // The flow's density and viscosity from alpha (phase 1: -vof_density, -vof_viscosity; phase 0: the
