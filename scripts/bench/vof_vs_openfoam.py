@@ -1,8 +1,8 @@
 """Runs the VOF benchmark of issue 8 in vofdem and OpenFOAM v1912 interIsoFoam (see vof-vs-openfoam).
 
 The case: the Martin & Moyce (1952) dam break of config/scenes/dam-break.yaml (V5), density ratio 1000,
-a/h = --resolution cells across the water column (grid 5N x 2.5N; vofdem 2 cells deep, OpenFOAM 1 cell
-deep with empty faces), to T = t sqrt(2 g / a) = 3. vofdem runs examples/ex30_dam_break (the program's
+a/h = --resolution cells across the water column (grid 5N x 2.5N x 1: vofdem between slip walls, OpenFOAM
+with empty faces), to T = t sqrt(2 g / a) = 3. vofdem runs examples/ex30_dam_break (the program's
 own coupled step; it prints the front at Martin & Moyce's times); OpenFOAM runs interIsoFoam at its
 tutorial settings (foam_dambreak.py), once for timing (no output) and once writing alpha every 0.05 in T
 for the front. Front: the wetted length sum(alpha h) of the floor row, in both codes.
@@ -66,12 +66,12 @@ def run_vofdem(ranks, n):
     wall = time.monotonic() - t0
     if p.returncode != 0:
         raise RuntimeError("ex30 failed: " + (p.stderr + p.stdout).strip().splitlines()[-1:][0] if (p.stderr + p.stdout).strip() else "ex30 failed")
-    m = re.search(r"V5 dam break, (\d+) x (\d+) cells .*?, (\d+) steps to T", p.stdout)
+    m = re.search(r"V5 dam break, (\d+) x (\d+) x (\d+) cells .*?, (\d+) steps to T", p.stdout)
     if not m:
         raise RuntimeError("ex30 printed no summary line")
-    cells = int(m.group(1)) * int(m.group(2)) * 2
+    cells = int(m.group(1)) * int(m.group(2)) * int(m.group(3))
     fronts = {float(t): float(z) for t, z in re.findall(r"T (\d+\.\d+): Z (\d+\.\d+), measured", p.stdout)}
-    return cells, int(m.group(3)), wall, fronts
+    return cells, int(m.group(4)), wall, fronts
 
 
 def run_openfoam(ranks, n, with_front):

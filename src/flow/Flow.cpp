@@ -517,7 +517,7 @@ PetscErrorCode Flow::Load(PetscViewer viewer) {
   PetscCall(pressure_.Load(viewer));
   if (pending) propertiesDirty_ = true;
   else {
-    PetscCall(pressure_.SetCoefficient(beta_, "flow: eps/rho"));
+    PetscCall(pressure_.SetOperatorAfterLoad(beta_, "flow: eps/rho"));
     PetscCall(pressure_.RestoreReuseFlag(s[2] > 0 ? PETSC_TRUE : PETSC_FALSE));
   }
   PetscFunctionReturn(0);

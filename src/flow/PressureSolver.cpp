@@ -1,5 +1,7 @@
 #include "vofdem/flow/PressureSolver.hpp"
 
+#include <petscviewerhdf5.h>
+
 #include "vofdem/core/Options.hpp"
 #include "vofdem/core/Runtime.hpp"
 
@@ -103,6 +105,8 @@ PetscErrorCode PressureSolver::SetFromOptions() {
     pc_ = pc[0] == "pfmg" ? PressurePreconditioner::PFMG : PressurePreconditioner::BoomerAMG;
     PetscCall(opt.Real("-reuse_threshold", "Keep the preconditioner while no cell's coefficient has changed by more than this fraction since it was built (0: rebuild every time)",
                        "-", &reuseThreshold_, RealRange::NonNegative()));
+    PetscCall(opt.Int("-reuse_steps", "Keep the preconditioner for this many solves after it was built whatever the coefficient did (0: only -flow_pressure_reuse_threshold decides)",
+                      &reuseSteps_, 0, 1000000));
     for (int f = 0; f < 6; ++f) {
       const std::string        bcName = std::string("-bc_") + FaceName(f), valueName = bcName + "_value";
       std::vector<std::string> chosen = {BoundaryName(bc_[f])};
@@ -335,13 +339,14 @@ PetscErrorCode PressureSolver::SetCoefficient(Vec beta, const char *what) {
     PetscCall(VecWAXPY(work_, -1, betaRef_, beta));
     PetscCall(VecPointwiseDivide(work_, work_, betaRef_));
     PetscCall(VecNorm(work_, NORM_INFINITY, &change));
-    reused_ = change <= reuseThreshold_ && reuseThreshold_ > 0 ? PETSC_TRUE : PETSC_FALSE;
+    reused_ = (change <= reuseThreshold_ && reuseThreshold_ > 0) || sinceBuild_ < reuseSteps_ ? PETSC_TRUE : PETSC_FALSE;
   }
   if (!reused_) {
     PetscCall(VecCopy(beta, betaRef_));
     hasRef_ = true;
     ++builds_;
-  }
+    sinceBuild_ = 0;
+  } else ++sinceBuild_;
   PetscCall(Assemble(beta));
   PetscCall(KSPSetReusePreconditioner(ksp_, reused_));
   PetscFunctionReturn(0);
@@ -402,6 +407,9 @@ PetscErrorCode PressureSolver::Save(PetscViewer viewer) const {
   PetscFunctionBeginUser;
   if (!hasRef_) PetscCall(VecSet(betaRef_, 0));
   PetscCall(VecView(betaRef_, viewer));
+  PetscBool hdf5;
+  PetscCall(PetscObjectTypeCompare((PetscObject)viewer, PETSCVIEWERHDF5, &hdf5));
+  if (hdf5) PetscCall(PetscViewerHDF5WriteAttribute(viewer, nullptr, "flow_pressure_solves_since_build", PETSC_INT, &sinceBuild_));
   PetscFunctionReturn(0);
 }
 
@@ -410,6 +418,10 @@ PetscErrorCode PressureSolver::Load(PetscViewer viewer) {
 
   PetscFunctionBeginUser;
   PetscCall(VecLoad(betaRef_, viewer));
+  PetscBool hdf5;
+  PetscInt  none = 0;  // checkpoints written before -flow_pressure_reuse_steps: no count
+  PetscCall(PetscObjectTypeCompare((PetscObject)viewer, PETSCVIEWERHDF5, &hdf5));
+  if (hdf5) PetscCall(PetscViewerHDF5ReadAttribute(viewer, nullptr, "flow_pressure_solves_since_build", PETSC_INT, &none, &sinceBuild_));
   PetscCall(VecMax(betaRef_, nullptr, &hi));
   hasRef_ = hi > 0;
   if (hasRef_) {
@@ -419,6 +431,13 @@ PetscErrorCode PressureSolver::Load(PetscViewer viewer) {
     PetscCall(KSPSetReusePreconditioner(ksp_, PETSC_FALSE));
     PetscCall(KSPSetUp(ksp_));
   }
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode PressureSolver::SetOperatorAfterLoad(Vec beta, const char *what) {
+  PetscFunctionBeginUser;
+  if (!hasRef_) PetscCall(SetCoefficient(beta, what));
+  else PetscCall(Assemble(beta));
   PetscFunctionReturn(0);
 }
 

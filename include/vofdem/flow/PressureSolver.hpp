@@ -70,6 +70,10 @@ public:
   // Flow::Load: the saved run's reuse decision, so that the monitor reports it (and the KSP's reuse
   // setting matches) until the next SetCoefficient decides anew.
   PetscErrorCode RestoreReuseFlag(PetscBool reused);
+  // Flow::Load: the operator from beta, with the saved run's preconditioner, reference and count of
+  // solves since the build left as Load restored them (SetCoefficient would decide reuse anew). Without
+  // a saved reference, SetCoefficient.
+  PetscErrorCode SetOperatorAfterLoad(Vec beta, const char *what);
   PetscInt  PreconditionerBuilds() const { return builds_; }
   // Solves whose CG broke down by round-off within kFloorFactor of the absolute tolerance, taken as converged (Solve).
   PetscInt  FloorStops() const { return floorStops_; }
@@ -94,6 +98,7 @@ private:
   PetscReal              bcValue_[6] = {0, 0, 0, 0, 0, 0};
   PressurePreconditioner pc_ = PressurePreconditioner::BoomerAMG;
   PetscReal              reuseThreshold_ = 0.05;
+  PetscInt               reuseSteps_ = 0, sinceBuild_ = 0;  // -flow_pressure_reuse_steps; solves since the last build
   Mat                    A_ = nullptr;
   KSP                    ksp_ = nullptr;
   MatNullSpace           nullSpace_ = nullptr;
