@@ -261,9 +261,9 @@ PetscErrorCode PressureSolver::Assemble(Vec beta) {
       for (PetscInt i = xs; i < xs + xm; ++i) {
         const PetscInt c[3] = {i, j, k};
         // A row whose coefficients (this cell's and its neighbours') are those of the last assembly is
-        // left as it is: a moving interface changes a few percent of the
-        // rows per step, and setting every row of a hyprestruct matrix was a tenth of the dam break's
-        // step (computing every row's entries, only to find most unchanged, was still 4 %).
+        // left as it is: a moving interface changes a few percent of the rows per step, and setting
+        // every row of a hyprestruct matrix was a tenth of the dam break's step (computing every row's
+        // entries, only to find most unchanged, was still 4 %).
         bool changed = !assembled_ || sol || b[k][j][i] != bOld[k][j][i];
         for (int d = 0; d < 3 && !changed; ++d)
           for (int s = 0; s < 2; ++s) {
