@@ -1,5 +1,6 @@
 #include "vofdem/core/Runtime.hpp"
 
+#include "vofdem/core/MpiStartupDefaults.hpp"
 #include "vofdem/core/SceneFile.hpp"
 
 #include <mpi.h>
@@ -89,6 +90,7 @@ int Initialize(int *argc, char ***argv, const char help[]) {
   int flag = 0;
   MPI_Initialized(&flag);
   if (!flag) {
+    ApplyMpiStartupDefaults();
     MPI_Init(argc, argv);
     g_mpiInitialisedHere = true;
   }

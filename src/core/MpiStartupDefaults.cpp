@@ -1,0 +1,31 @@
+#include "vofdem/core/MpiStartupDefaults.hpp"
+
+#include <cstdlib>
+#include <cstring>
+
+namespace vofdem {
+
+namespace {
+
+bool IsSet(const char *name) { return std::getenv(name) != nullptr; }
+
+}  // namespace
+
+void ApplyMpiStartupDefaults() {
+  const char *off = std::getenv("VOFDEM_MPI_DEFAULTS");
+  if (off && !std::strcmp(off, "0")) return;
+  const char *size  = std::getenv("OMPI_COMM_WORLD_SIZE");
+  const char *local = std::getenv("OMPI_COMM_WORLD_LOCAL_SIZE");
+  // Started by another launcher (Slurm's srun, a PMI/PMIx server): its transports are its business.
+  const bool otherLauncher = !size && (IsSet("PMIX_RANK") || IsSet("PMI_RANK") || IsSet("PMI_SIZE") || IsSet("SLURM_STEP_ID"));
+  if (otherLauncher) return;
+  const bool singleton = !size;
+  const bool oneNode   = singleton || (local && !std::strcmp(size, local));
+  if (!oneNode) return;
+  // One process, no daemon: a singleton never spawns processes (vofdem does not call MPI_Comm_spawn).
+  if (singleton) setenv("OMPI_MCA_ess_singleton_isolated", "1", 0);
+  // Shared memory between the ranks of one machine, without opening the network layers first.
+  if (!IsSet("OMPI_MCA_pml") && !IsSet("OMPI_MCA_mtl")) setenv("OMPI_MCA_pml", "ob1", 0);
+}
+
+}  // namespace vofdem
