@@ -9,7 +9,8 @@ static const char help[] = "Verification of the diffusion-based smoothing (Diffu
                            "deposit's first moment must be the particle's position and its second moment per direction b^2 + f(1 - f) h^2\n"
                            "(b^2 = sigma^2 - h^2/6 the diffusion's spread, f the particle's offset between points, sigma^2 = 8 H^2/13 the smooth\n"
                            "kernel's variance), to 1e-6 relative (solved to 1e-10 here; the walls 24 cells away cut tails below that); the kernel's own discrete\n"
-                           "second moment is printed beside it. Exits non-zero on failure.\n\n";
+                           "second moment is printed beside it. -method gaussian runs the same checks on the separable discrete Gaussian\n"
+                           "(GaussianFilter.hpp) instead of the diffusion (its variance is exact: the moments to round-off). Exits non-zero on failure.\n\n";
 
 #include "vofdem/core/Runtime.hpp"
 #include "vofdem/coupling/Smoothing.hpp"
@@ -18,11 +19,14 @@ static const char help[] = "Verification of the diffusion-based smoothing (Diffu
 
 #include <cmath>
 #include <cstdint>
+#include <string>
 #include <vector>
 
 namespace {
 
 const PetscReal kConserve = 1e-12, kAdjoint = 1e-12, kConstant = 1e-12, kMoment = 1e-6;
+// -method: the grid smoothing under test.
+vofdem::Smoothing::Method g_method = vofdem::Smoothing::Method::Diffusion;
 const char     *Verdict(bool ok) { return ok ? "ok" : "FAIL"; }
 
 struct Lcg {  // the same sequence on every rank
@@ -76,7 +80,7 @@ PetscErrorCode Conservation(const char *name, bool periodicX, PetscReal widthInC
   const PetscReal  H = widthInCells * h[0], margin = 0.4 * h[0];
   vofdem::KernelAverager::Settings k;
   vofdem::Smoothing::Settings      set;
-  set.method = vofdem::Smoothing::Method::Diffusion;
+  set.method = g_method;
   set.steps  = steps;
   PetscCall(sm.SetUp(sg, k, set, H, margin, 0));
 
@@ -162,7 +166,8 @@ PetscErrorCode Conservation(const char *name, bool periodicX, PetscReal widthInC
   const char *what[5] = {"volume", "force x", "force y", "force z", "heat"};
   PetscInt    total;
   PetscCallMPI(MPI_Allreduce(&n, &total, 1, MPIU_INT, MPI_SUM, PETSC_COMM_WORLD));
-  PetscCall(PetscPrintf(PETSC_COMM_WORLD, "%s: %d particles, spread b = %.4f cells in x, %d pseudo-steps\n", name, (int)total, (double)(std::sqrt(sm.Spread(0)) / h[0]), (int)steps));
+  PetscCall(PetscPrintf(PETSC_COMM_WORLD, "%s %s: %d particles, spread b = %.4f cells in x, %d %s\n", vofdem::Smoothing::Name(g_method), name, (int)total, (double)(std::sqrt(sm.Spread(0)) / h[0]),
+                        (int)(g_method == vofdem::Smoothing::Method::Gaussian ? sm.Smoother().FilterRadius(0) : steps), g_method == vofdem::Smoothing::Method::Gaussian ? "taps per side" : "pseudo-steps"));
   for (int q = 0; q < 5; ++q) {
     const PetscReal err = std::fabs(sum[q] - tot[q]) / mag[q];
     const bool      ok  = err < kConserve;
@@ -243,7 +248,7 @@ PetscErrorCode Gaussian(PetscReal widthInCells, PetscInt steps, PetscInt *failur
   const PetscReal  H = widthInCells * h[0];
   vofdem::KernelAverager::Settings k;
   vofdem::Smoothing::Settings      set;
-  set.method = vofdem::Smoothing::Method::Diffusion;
+  set.method = g_method;
   set.steps  = steps;
   // The operator's identity, so the solves are pinned to a tolerance of 1e-10 (the default 1e-6 only shapes the
   // smoothing). In a 32^3 box the zero-flux walls, 16 cells away, cut the 4-step kernel's tails by 2e-5 at
@@ -267,7 +272,7 @@ PetscErrorCode Gaussian(PetscReal widthInCells, PetscInt steps, PetscInt *failur
   PetscCall(kern.Deposit(3, n, xp, &H, &one, 1, c));
   PetscCall(Moments(sg, c, xp, k1, k2));
   const PetscReal sigma2 = vofdem::Smoothing::KernelVariance(k.shape, H, k.truncation);
-  PetscCall(PetscPrintf(PETSC_COMM_WORLD, "Gaussian test: H = %g cells, %d pseudo-steps: kernel variance sigma^2 = %.6f cells^2 (8 H^2/13 = %.6f)\n", (double)widthInCells, (int)steps,
+  PetscCall(PetscPrintf(PETSC_COMM_WORLD, "Gaussian test (%s): H = %g cells, %d pseudo-steps: kernel variance sigma^2 = %.6f cells^2 (8 H^2/13 = %.6f)\n", vofdem::Smoothing::Name(g_method), (double)widthInCells, (int)steps,
                         (double)(sigma2 / (h[0] * h[0])), (double)(8 * widthInCells * widthInCells / 13)));
   for (int e = 0; e < 3; ++e) {
     const PetscReal cell = (xp[e] - grid.Lower()[e]) / h[e] - 0.5, f = cell - std::floor(cell);
@@ -291,11 +296,20 @@ PetscErrorCode Run() {
   PetscInt failures = 0;
 
   PetscFunctionBeginUser;
-  PetscCall(Conservation("diffusion, H = 2 cells, walls", false, 2.0, 2, &failures));
-  PetscCall(Conservation("diffusion, H = 1.2 cells, periodic in x, 1 pseudo-step", true, 1.2, 1, &failures));
+  PetscBool gaussian = PETSC_FALSE;
+  {
+    char      method[32] = "diffusion";
+    PetscBool set;
+    PetscCall(PetscOptionsGetString(nullptr, nullptr, "-method", method, sizeof method, &set));
+    if (std::string(method) != "diffusion" && std::string(method) != "gaussian") VofdemInputError(PETSC_COMM_WORLD, "option -method: diffusion or gaussian, not '%s'", method);
+    gaussian = std::string(method) == "gaussian" ? PETSC_TRUE : PETSC_FALSE;
+  }
+  g_method = gaussian ? vofdem::Smoothing::Method::Gaussian : vofdem::Smoothing::Method::Diffusion;
+  PetscCall(Conservation("H = 2 cells, walls", false, 2.0, 2, &failures));
+  PetscCall(Conservation("H = 1.2 cells, periodic in x", true, 1.2, 1, &failures));
   PetscCall(Gaussian(2.0, 2, &failures));
   PetscCall(Gaussian(3.0, 4, &failures));
-  PetscCall(PetscPrintf(PETSC_COMM_WORLD, "diffusion smoothing: %s\n", failures ? "FAIL" : "ok"));
+  PetscCall(PetscPrintf(PETSC_COMM_WORLD, "%s smoothing: %s\n", vofdem::Smoothing::Name(g_method), failures ? "FAIL" : "ok"));
   PetscFunctionReturn(failures ? PETSC_ERR_NOT_CONVERGED : 0);
 }
 
@@ -314,4 +328,13 @@ int main(int argc, char **argv) {
     suffix: 2
     nsize: 2
     output_file: output/ex48_diffusion_smoothing_1.out
+  test:
+    suffix: gaussian_1
+    nsize: 1
+    args: -method gaussian
+  test:
+    suffix: gaussian_2
+    nsize: 2
+    args: -method gaussian
+    output_file: output/ex48_diffusion_smoothing_gaussian_1.out
 TEST*/

@@ -30,12 +30,12 @@ PetscErrorCode Coupling::SetFromOptions(MPI_Comm comm) {
       VofdemInputError(comm, "option -coupling_kernel_min_width: %g cells is below the cell size; a kernel narrower than half a cell cannot be sampled by the grid (use 0.5 or more, or -coupling_kernel unresolved)",
                        (double)minWidthCells_);
     std::vector<std::string> sm = {Smoothing::Name(smoothing_.method)};
-    PetscCall(opt.NameList("-smoothing", "How the kernel is applied (PHYSICS.md K1, K3): kernel (sums over each particle's support), diffusion (tent deposit, then backward-Euler diffusion in pseudo-time to the kernel's variance, Sun & Xiao 2015; KSP options -coupling_smoothing_ksp_*) or auto (the one measured faster for the grid and particle count, Smoothing.cpp)",
-                           {"kernel", "diffusion", "auto"}, &sm));
-    if (sm.size() != 1) VofdemInputError(comm, "option -coupling_smoothing: give one of kernel, diffusion, auto");
-    smoothing_.method = sm[0] == "kernel" ? Smoothing::Method::Kernel : sm[0] == "diffusion" ? Smoothing::Method::Diffusion : Smoothing::Method::Auto;
+    PetscCall(opt.NameList("-smoothing", "How the kernel is applied (PHYSICS.md K1, K3): kernel (sums over each particle's support), diffusion (tent deposit, then backward-Euler diffusion in pseudo-time to the kernel's variance, Sun & Xiao 2015; KSP options -coupling_smoothing_ksp_*), gaussian (tent deposit, then a separable discrete Gaussian of the same variance, GaussianFilter.hpp) or auto (kernel or gaussian, the one measured faster for the grid and particle count, Smoothing.cpp)",
+                           {"kernel", "diffusion", "gaussian", "auto"}, &sm));
+    if (sm.size() != 1) VofdemInputError(comm, "option -coupling_smoothing: give one of kernel, diffusion, gaussian, auto");
+    smoothing_.method = sm[0] == "kernel" ? Smoothing::Method::Kernel : sm[0] == "diffusion" ? Smoothing::Method::Diffusion : sm[0] == "gaussian" ? Smoothing::Method::Gaussian : Smoothing::Method::Auto;
     PetscCall(opt.Int("-smoothing_steps", "Backward-Euler pseudo-steps of the diffusion smoothing (the variance added is the same for any number; more steps: closer to a Gaussian)", &smoothing_.steps, 1));
-    PetscCall(opt.Real("-smoothing_crossover", "auto: diffusion when the kernel's points summed over all particles exceed this many times the grid's cells times the diffusion's sweeps (pseudo-steps x Chebyshev iterations; scripts/smoothing-cost)", "-", &smoothing_.crossover,
+    PetscCall(opt.Real("-smoothing_crossover", "auto: gaussian when the kernel's points summed over all particles exceed this many times the grid's cells times the Gaussian filter's taps (sum over directions of 2R + 1; break-even measured near 0.3-0.5 in the bubbling bed, Smoothing.cpp), else kernel", "-", &smoothing_.crossover,
                        RealRange::Positive()));
     PetscCall(opt.Real("-kernel_truncation", "Cut-off of the truncated Gaussian kernel, in widths H (seed 000: 1.2-1.5)", "-", &kernel_.truncation, RealRange::LeftOpen(0, 10)));
     std::vector<std::string> d = {drag::Name(law_)};
@@ -70,7 +70,7 @@ PetscErrorCode Coupling::SetFromOptions(MPI_Comm comm) {
     addedMassAccel_ = am[0] == "pressure" ? FluidAcceleration::Pressure : am[0] == "none" ? FluidAcceleration::None : FluidAcceleration::Velocity;
     PetscCall(opt.Real("-contact_angle", "Contact angle of the liquid (the VOF's phase 1) on every particle, measured through the liquid: the particles feel Princen's capillary force at the free surface (Capillary.hpp, P1; needs -physics dem,flow,vof and a kernel). Not given (the default): no capillary force",
                        "deg", &contactAngle_, RealRange::Closed(0, 180), &contactAngleSet_));
-    if (contactAngleSet_ && smoothing_.method == Smoothing::Method::Diffusion)
+    if (contactAngleSet_ && (smoothing_.method == Smoothing::Method::Diffusion || smoothing_.method == Smoothing::Method::Gaussian))
       VofdemInputError(comm, "option -coupling_contact_angle: the capillary force finds the interface through the kernel's marginal; use -coupling_smoothing kernel or auto");
     if (contactAngleSet_) smoothing_.method = Smoothing::Method::Kernel;  // auto: the capillary force needs the kernel
     if (contactAngleSet_ && kernel_.shape == kernel::Shape::Unresolved)
@@ -190,7 +190,10 @@ PetscErrorCode Coupling::View(PetscViewer viewer, PetscReal dt) const {
   PetscCall(PetscViewerASCIIPrintf(viewer, "coupling: Magnus lift %s, rotational drag torque %s, lubrication (P8) with the fluid's viscosity %s\n", rotation::LiftName(lift_),
                                    !rotationalDrag_ ? "off" : rotationalDragDennis_ ? "on (pi mu d^3, Dennis et al. Re_r factor; no reaction torque on the fluid)" : "on (pi mu d^3; no reaction torque on the fluid)",
                                    lubrication_ ? "on" : "off"));
-  if (avg_.Diffusion())
+  if (avg_.Diffusion() && avg_.Smoother().GetOperator() == DiffusionSmoother::Operator::Gaussian)
+    PetscCall(PetscViewerASCIIPrintf(viewer, "coupling: gaussian smoothing (-coupling_smoothing %s): tent deposit, separable discrete Gaussian to the kernel's variance (spread b = %.3g cells in x, %d taps per side)\n",
+                                     Smoothing::Name(smoothing_.method), (double)(std::sqrt(avg_.Spread(0)) / h[0]), (int)avg_.Smoother().FilterRadius(0)));
+  else if (avg_.Diffusion())
     PetscCall(PetscViewerASCIIPrintf(viewer, "coupling: diffusion smoothing (-coupling_smoothing %s): tent deposit, %d backward-Euler pseudo-steps to the kernel's variance (spread b = %.3g cells in x)\n",
                                      Smoothing::Name(smoothing_.method), (int)smoothing_.steps, (double)(std::sqrt(avg_.Spread(0)) / h[0])));
   if (contactAngleSet_)

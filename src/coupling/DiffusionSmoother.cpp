@@ -5,9 +5,10 @@
 
 namespace vofdem {
 
-PetscErrorCode DiffusionSmoother::SetUp(const StaggeredGrid &sg, const PetscReal spread[3], PetscInt steps, PetscReal margin, const char *prefix) {
+PetscErrorCode DiffusionSmoother::SetUp(const StaggeredGrid &sg, const PetscReal spread[3], PetscInt steps, PetscReal margin, const char *prefix, Operator op) {
   PetscFunctionBeginUser;
   sg_ = &sg;
+  op_ = op;
   for (int e = 0; e < 3; ++e) spread_[e] = spread[e];
   steps_  = steps;
   prefix_ = prefix ? prefix : "";
@@ -66,8 +67,11 @@ PetscErrorCode DiffusionSmoother::Assemble(int loc) {
   for (int e = 0; e < 3; ++e) bt[e] = grid.Periodic(e) ? DM_BOUNDARY_PERIODIC : DM_BOUNDARY_NONE;
   PetscCall(DMDACreate3d(grid.Comm(), bt[0], bt[1], bt[2], DMDA_STENCIL_STAR, N[0], N[1], N[2], m[0], m[1], m[2], 1, 1, l[0], l[1], l[2], &dm_[loc]));
   PetscCall(DMSetUp(dm_[loc]));
-  PetscCall(DMSetMatType(dm_[loc], MATAIJ));
-  PetscCall(DMCreateMatrix(dm_[loc], &A_[loc]));
+  const bool diffusion = op_ == Operator::Diffusion;
+  if (diffusion) {
+    PetscCall(DMSetMatType(dm_[loc], MATAIJ));
+    PetscCall(DMCreateMatrix(dm_[loc], &A_[loc]));
+  }
   PetscCall(DMCreateGlobalVector(dm_[loc], &mask_[loc]));
   PetscCall(VecDuplicate(mask_[loc], &rhs_[loc]));
   PetscCall(DMDAGetCorners(dm_[loc], &s[0], &s[1], &s[2], &n[0], &n[1], &n[2]));
@@ -109,12 +113,23 @@ PetscErrorCode DiffusionSmoother::Assemble(int loc) {
               v[0] += a[e];
             }
         }
-        PetscCall(MatSetValuesStencil(A_[loc], 1, &row, nc, col, v, ADD_VALUES));
+        if (diffusion) PetscCall(MatSetValuesStencil(A_[loc], 1, &row, nc, col, v, ADD_VALUES));
       }
   PetscCall(DMDAVecRestoreArray(dm_[loc], mask_[loc], &mk));
+  PetscCallMPI(MPI_Allreduce(&count, &count_[loc], 1, MPIU_REAL, MPIU_SUM, grid.Comm()));
+  if (!diffusion) {
+    PetscInt lo[3], hi[3];
+    bool     periodic[3];
+    for (int e = 0; e < 3; ++e) {
+      periodic[e] = grid.Periodic(e);
+      lo[e] = 0, hi[e] = N[e] - 1;
+      if (loc == e && !periodic[e]) lo[e] = 1, hi[e] = N[e] - 2;
+    }
+    PetscCall(filter_[loc].SetUp(dm_[loc], h, spread_, lo, hi, periodic));
+    PetscFunctionReturn(0);
+  }
   PetscCall(MatAssemblyBegin(A_[loc], MAT_FINAL_ASSEMBLY));
   PetscCall(MatAssemblyEnd(A_[loc], MAT_FINAL_ASSEMBLY));
-  PetscCallMPI(MPI_Allreduce(&count, &count_[loc], 1, MPIU_REAL, MPIU_SUM, grid.Comm()));
   PetscCall(CreateSolver(grid.Comm(), prefix_.c_str(), &ksp_[loc]));
   {  // the products by the stencil (DiffusionOperator.hpp); the assembled matrix stays for preconditioners
     PetscInt lo[3], hi[3];
@@ -124,7 +139,7 @@ PetscErrorCode DiffusionSmoother::Assemble(int loc) {
       lo[e] = 0, hi[e] = N[e] - 1;
       if (loc == e && !periodic[e]) lo[e] = 1, hi[e] = N[e] - 2;
     }
-    PetscCall(op_[loc].Create(dm_[loc], a, lo, hi, periodic, &S_[loc]));
+    PetscCall(stencil_[loc].Create(dm_[loc], a, lo, hi, periodic, &S_[loc]));
   }
   PetscCall(KSPSetOperators(ksp_[loc], S_[loc], A_[loc]));
   PetscBool chebyshev;
@@ -148,7 +163,8 @@ PetscErrorCode DiffusionSmoother::Destroy() {
     PetscCall(KSPDestroy(&ksp_[loc]));
     PetscCall(MatDestroy(&A_[loc]));
     PetscCall(MatDestroy(&S_[loc]));
-    PetscCall(op_[loc].Destroy());
+    PetscCall(stencil_[loc].Destroy());
+    PetscCall(filter_[loc].Destroy());
     PetscCall(VecDestroy(&mask_[loc]));
     PetscCall(VecDestroy(&rhs_[loc]));
     PetscCall(DMDestroy(&dm_[loc]));
@@ -169,6 +185,10 @@ PetscErrorCode DiffusionSmoother::Work(int loc, size_t count) {
 
 PetscErrorCode DiffusionSmoother::Smooth(int loc, Vec v) {
   PetscFunctionBeginUser;
+  if (op_ == Operator::Gaussian) {
+    PetscCall(filter_[loc].Apply(v));
+    PetscFunctionReturn(0);
+  }
   for (PetscInt step = 0; step < steps_; ++step) {
     PetscScalar before, after;
     PetscInt    its;

@@ -17,6 +17,9 @@
 // flux), so the total changes only by the sum of the KSP residual; after each solve that defect is
 // added back spread evenly over the location's points (not the wall faces), so totals hold to
 // round-off whatever the solver tolerance (-<prefix>ksp_rtol, default 1e-6).
+// The operator S can also be a separable discrete Gaussian with the same variance (GaussianFilter.hpp:
+// explicit, 3 (2R + 1) multiply-adds per point, exact variance; Operator::Gaussian), with the same tent
+// deposit and read, the same conservation and adjointness.
 // The matrix lives on a DMDA of stencil width 1 with the location's ownership ranges (so its vectors
 // are the location's), assembled once; the KSP (by default Chebyshev with the known spectrum bounds and a
 // fixed iteration count from the tolerance: no reductions, and S a fixed symmetric polynomial of the matrix,
@@ -24,6 +27,7 @@
 #pragma once
 
 #include "vofdem/coupling/DiffusionOperator.hpp"
+#include "vofdem/coupling/GaussianFilter.hpp"
 #include "vofdem/coupling/KernelAverager.hpp"
 #include "vofdem/flow/StaggeredGrid.hpp"
 
@@ -36,9 +40,12 @@ namespace vofdem {
 
 class DiffusionSmoother {
 public:
-  // spread[e]: b_e^2 (m^2) added per direction; steps >= 1; margin as KernelAverager::SetUp; prefix:
-  // the KSP options prefix. Collective.
-  PetscErrorCode SetUp(const StaggeredGrid &sg, const PetscReal spread[3], PetscInt steps, PetscReal margin, const char *prefix);
+  enum class Operator { Diffusion, Gaussian };
+  // spread[e]: b_e^2 (m^2) added per direction; steps >= 1 (diffusion); margin as KernelAverager::SetUp;
+  // prefix: the KSP options prefix (diffusion). Collective.
+  PetscErrorCode SetUp(const StaggeredGrid &sg, const PetscReal spread[3], PetscInt steps, PetscReal margin, const char *prefix, Operator op = Operator::Diffusion);
+  Operator       GetOperator() const { return op_; }
+  PetscInt       FilterRadius(int e) const { return filter_[3].Radius(e); }  // Gaussian: taps per side along e (cells)
   PetscErrorCode Destroy();
   PetscInt       GhostWidth() const { return compact_.GhostWidth(); }
   PetscInt       Steps() const { return steps_; }
@@ -68,13 +75,15 @@ private:
 
   const StaggeredGrid *sg_ = nullptr;
   KernelAverager       compact_;  // the tent weight
+  Operator             op_ = Operator::Diffusion;
+  GaussianFilter       filter_[4];  // Operator::Gaussian, per location
   PetscReal            spread_[3] = {0, 0, 0};
   PetscInt             steps_ = 1, iterations_ = 0;
   std::string          prefix_;
   DM                   dm_[4]   = {nullptr, nullptr, nullptr, nullptr};  // stencil width 1, the location's layout
   Mat                  A_[4]    = {nullptr, nullptr, nullptr, nullptr};  // assembled (the preconditioner's)
   Mat                  S_[4]    = {nullptr, nullptr, nullptr, nullptr};  // the same by the stencil (the products)
-  DiffusionOperator    op_[4];
+  DiffusionOperator    stencil_[4];
   KSP                  ksp_[4]  = {nullptr, nullptr, nullptr, nullptr};
   Vec                  mask_[4] = {nullptr, nullptr, nullptr, nullptr};  // 1 where the smoothing acts, 0 on wall faces
   PetscReal            count_[4] = {0, 0, 0, 0};                         // points where mask is 1

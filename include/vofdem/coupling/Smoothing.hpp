@@ -1,7 +1,7 @@
-// The particle-grid maps of the coupling (PHYSICS.md K1-K3) by one of two methods
+// The particle-grid maps of the coupling (PHYSICS.md K1-K3) by one of three methods
 // (-coupling_smoothing): kernel sums over the cells of each particle's support (KernelAverager.hpp), or
-// a compact deposit followed by diffusion in pseudo-time (DiffusionSmoother.hpp) with the kernel's
-// variance. The kernel's cost per particle grows as (cut-off/cell)^3, the diffusion's is per cell and
+// a compact deposit followed by a grid smoothing with the kernel's variance (DiffusionSmoother.hpp):
+// diffusion in pseudo-time, or a separable discrete Gaussian (GaussianFilter.hpp). The kernel's cost per particle grows as (cut-off/cell)^3, the diffusion's is per cell and
 // the same for any width: `auto` picks by the estimate in Smoothing.cpp (scripts/smoothing-cost).
 #pragma once
 
@@ -12,18 +12,19 @@ namespace vofdem {
 
 class Smoothing {
 public:
-  enum class Method { Kernel, Diffusion, Auto };
+  enum class Method { Kernel, Diffusion, Gaussian, Auto };
   struct Settings {
     Method   method = Method::Auto;
     PetscInt steps  = 2;    // backward-Euler pseudo-steps of the diffusion
-    // auto: diffusion when the kernel's points summed over the particles exceed this many times the
-    // grid's points times the diffusion's sweeps (steps x Chebyshev iterations); scripts/smoothing-cost
-    // measured 1.8 (kernel faster on 2 ranks, slower on 1), 3.6 and 40 (diffusion faster) in the bubbling bed
-    PetscReal crossover = 2.5;
+    // auto: the Gaussian filter when the kernel's points summed over the particles exceed this many times
+    // the grid's points times the filter's taps (sum over directions of 2R + 1), else the kernel sums. In the
+    // bubbling bed the kernel took 5.8x the filter's time at a ratio of 1.7 and 6.6x at 3.3 (Smoothing.cpp).
+    // The diffusion is not chosen by auto: the filter was cheaper at cell/d 0.5, 1 and 3.
+    PetscReal crossover = 0.4;
   };
   // The kernel's variance per direction (m^2) for width H (quadrature of kernel::Weight; 8 H^2/13 smooth).
   static PetscReal KernelVariance(kernel::Shape s, PetscReal H, PetscReal truncation);
-  static const char *Name(Method m) { return m == Method::Kernel ? "kernel" : m == Method::Diffusion ? "diffusion" : "auto"; }
+  static const char *Name(Method m) { return m == Method::Kernel ? "kernel" : m == Method::Diffusion ? "diffusion" : m == Method::Gaussian ? "gaussian" : "auto"; }
 
   // Reads the diffusion's KSP options (-coupling_smoothing_ksp_*, -coupling_smoothing_pc_*) with a
   // throw-away solver, so that they count as used at the options check before the particles are made.
