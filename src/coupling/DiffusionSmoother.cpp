@@ -78,6 +78,15 @@ PetscErrorCode DiffusionSmoother::Assemble(int loc) {
   const PetscReal *h = grid.Spacing();
   PetscReal        a[3];
   for (int e = 0; e < 3; ++e) a[e] = spread_[e] / (2.0 * steps_ * h[e] * h[e]);
+  // The points the smoothing acts on along each direction: faces 1..N-2 along their own (walled)
+  // direction, all points otherwise.
+  PetscInt lo[3], hi[3];
+  bool     periodic[3];
+  for (int e = 0; e < 3; ++e) {
+    periodic[e] = grid.Periodic(e);
+    lo[e] = 0, hi[e] = N[e] - 1;
+    if (loc == e && !periodic[e]) lo[e] = 1, hi[e] = N[e] - 2;
+  }
   PetscScalar ***mk;
   PetscReal      count = 0;
   PetscCall(DMDAVecGetArray(dm_[loc], mask_[loc], &mk));
@@ -87,15 +96,9 @@ PetscErrorCode DiffusionSmoother::Assemble(int loc) {
         const PetscInt q[3] = {i, j, k};
         MatStencil     row  = {k, j, i, 0}, col[7];
         PetscScalar    v[7];
-        // The points the smoothing acts on along each direction: faces 1..N-2 along their own (walled)
-        // direction, all points otherwise.
-        PetscInt lo[3], hi[3];
-        bool     wallFace = false;
-        for (int e = 0; e < 3; ++e) {
-          lo[e] = 0, hi[e] = N[e] - 1;
-          if (loc == e && !grid.Periodic(e)) lo[e] = 1, hi[e] = N[e] - 2;
+        bool           wallFace = false;
+        for (int e = 0; e < 3; ++e)
           if (q[e] < lo[e] || q[e] > hi[e]) wallFace = true;
-        }
         mk[k][j][i] = wallFace ? 0 : 1;
         col[0]      = row;
         v[0]        = 1;
@@ -118,29 +121,14 @@ PetscErrorCode DiffusionSmoother::Assemble(int loc) {
   PetscCall(DMDAVecRestoreArray(dm_[loc], mask_[loc], &mk));
   PetscCallMPI(MPI_Allreduce(&count, &count_[loc], 1, MPIU_REAL, MPIU_SUM, grid.Comm()));
   if (!diffusion) {
-    PetscInt lo[3], hi[3];
-    bool     periodic[3];
-    for (int e = 0; e < 3; ++e) {
-      periodic[e] = grid.Periodic(e);
-      lo[e] = 0, hi[e] = N[e] - 1;
-      if (loc == e && !periodic[e]) lo[e] = 1, hi[e] = N[e] - 2;
-    }
     PetscCall(filter_[loc].SetUp(dm_[loc], h, spread_, lo, hi, periodic));
     PetscFunctionReturn(0);
   }
   PetscCall(MatAssemblyBegin(A_[loc], MAT_FINAL_ASSEMBLY));
   PetscCall(MatAssemblyEnd(A_[loc], MAT_FINAL_ASSEMBLY));
   PetscCall(CreateSolver(grid.Comm(), prefix_.c_str(), &ksp_[loc]));
-  {  // the products by the stencil (DiffusionOperator.hpp); the assembled matrix stays for preconditioners
-    PetscInt lo[3], hi[3];
-    bool     periodic[3];
-    for (int e = 0; e < 3; ++e) {
-      periodic[e] = grid.Periodic(e);
-      lo[e] = 0, hi[e] = N[e] - 1;
-      if (loc == e && !periodic[e]) lo[e] = 1, hi[e] = N[e] - 2;
-    }
-    PetscCall(stencil_[loc].Create(dm_[loc], a, lo, hi, periodic, &S_[loc]));
-  }
+  // The products by the stencil (DiffusionOperator.hpp); the assembled matrix stays for preconditioners.
+  PetscCall(stencil_[loc].Create(dm_[loc], a, lo, hi, periodic, &S_[loc]));
   PetscCall(KSPSetOperators(ksp_[loc], S_[loc], A_[loc]));
   PetscBool chebyshev;
   PetscCall(PetscObjectTypeCompare((PetscObject)ksp_[loc], KSPCHEBYSHEV, &chebyshev));
