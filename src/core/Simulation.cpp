@@ -33,6 +33,10 @@ PetscErrorCode Simulation::SetFromOptions() {
     PetscCall(opt.Real("-final_time", "Simulated time to stop at (default: none)", "s", &finalTime_, RealRange::Positive(), &finalSet));
     PetscCall(opt.Real("-dt", "Time step (0: the smallest stable limit of the modules)", "s", &dtUser_, RealRange::NonNegative()));
     PetscCall(opt.Bool("-dt_force", "Accept a -dt above a module's stable limit", &dtForce_));
+    PetscCall(opt.Real("-dt_initial", "First step of an adaptive run (0: the stable limit); it grows by at most 20 percent per step from there, so an impulsive start (an inflow switched on through a packed bed) is resolved", "s", &dtInitial_, RealRange::NonNegative()));
+    PetscCall(opt.Real("-dt_max", "Largest step of an adaptive run (0: no bound but the modules' limits), e.g. a fraction of the particles' drag response time m/K in a dense bed: fluid and particles exchange momentum once per step", "s", &dtMax_, RealRange::NonNegative()));
+    if (dtInitial_ > 0 && dtUser_ > 0) VofdemInputError(comm_, "option -dt_initial: a fixed -dt is given; -dt_initial is the first step of an adaptive run (leave one out)");
+    if (dtMax_ > 0 && dtUser_ > 0) VofdemInputError(comm_, "option -dt_max: a fixed -dt is given; -dt_max bounds an adaptive run (leave one out)");
     PetscCall(opt.Int("-monitor_every", "Print a monitor line every this many steps", &monitorEvery_, 1));
     PetscCall(opt.Bool("-monitor_timing", "Show wall time and ETA in monitor lines (off for reproducible output)", &monitorTiming_));
     PetscCall(opt.RealVector("-gravity", "Gravitational acceleration x,y,z", "m/s^2", gravity_, 3));
@@ -120,6 +124,7 @@ PetscErrorCode Simulation::SetUp() {
     if (couplingStage_ < 0) PetscCall(PetscLogStageRegister("Coupling", &couplingStage_));
     PetscCall(PetscLogStagePush(couplingStage_));
     PetscCall(coupling_->SetUp(*flow_, *dem_));
+    flow_->AddOutputField(flow_->FluidFraction());  // eps in flow_<step>.h5 / flow.xmf: where the bed is, its bubbles
     if (physics_.vof) {  // particles with a free surface: eps in the interface's transport (F1b), its forces on them (P1)
       vof_->SetFluidFraction(flow_->FluidFraction(), coupling_->FluidFractionChange());
       coupling_->SetInterfaceForces(vof_->SurfaceTensionCoefficient() > 0);
@@ -199,6 +204,10 @@ PetscErrorCode Simulation::ChooseTimeStep() {
       dtLimitName_ = "capillary sqrt(rho_mean h^3/(2 pi sigma))";
     }
   }
+  if (dtMax_ > 0 && dtMax_ < limit) {
+    limit        = dtMax_;
+    dtLimitName_ = "-dt_max";
+  }
   if (!(limit < PETSC_MAX_REAL) && step_ > 0) PetscFunctionReturn(0);  // came to rest: keep the step
   if (!(limit < PETSC_MAX_REAL) && !(dtUser_ > 0))
     VofdemInputError(comm_, "option -dt: nothing moves at the start (no velocity, no gravity): give a time step");
@@ -207,7 +216,7 @@ PetscErrorCode Simulation::ChooseTimeStep() {
   // constant-step accuracy) only once it is 15 percent under the limit: in between it is kept, so that
   // what depends on dt (the implicit viscous matrix) is not rebuilt every step. A constant limit (DEM)
   // is used as it is.
-  if (step_ == 0 || !(dt_ > 0)) dt_ = limit;
+  if (step_ == 0 || !(dt_ > 0)) dt_ = dtInitial_ > 0 ? std::min(dtInitial_, limit) : limit;
   else if (dt_ > limit) dt_ = 0.95 * limit;
   else if (dt_ < 0.85 * limit) dt_ = std::min((PetscReal)0.95 * limit, (PetscReal)1.2 * dt_);
   if (dtUser_ > 0 && step_ == 0) {

@@ -104,6 +104,7 @@ PetscErrorCode Flow::SetUp(const PetscReal gravity[3]) {
   PetscCall(VecSet(rho_, density_));
   PetscCall(VecSet(mu_, viscosity_));
   PetscCall(VecSet(eps_, 1));
+  bc_.SetFluidFraction(eps_);  // inflows are superficial velocities (FlowBoundary::ApplyNormal)
   PetscCall(VecSet(p_, 0));
   PetscCall(VecSet(phi_, 0));
   for (int f = 0; f < 6; ++f)

@@ -56,7 +56,7 @@ PetscErrorCode FlowBoundary::SetFromOptions(const Grid &grid) {
         VofdemInputError(comm, "option -flow_%s: '%s' on a face of the periodic direction %c (-grid_periodic): leave the option out", name, t.c_str(), "xyz"[d]);
       if (!periodic && F.type == FlowBoundaryType::Periodic)
         VofdemInputError(comm, "option -flow_%s: 'periodic' needs %c in -grid_periodic (the grid makes a direction periodic)", name, "xyz"[d]);
-      PetscCall(opt.RealVector((base + "_velocity").c_str(), "Velocity of a wall (tangential only) or of an inflow", "m/s", F.velocity, 3, RealRange::Any(), &vGiven));
+      PetscCall(opt.RealVector((base + "_velocity").c_str(), "Velocity of a wall (tangential only) or of an inflow (superficial: the volume flux per area; next to particles the fluid enters at U/eps)", "m/s", F.velocity, 3, RealRange::Any(), &vGiven));
       std::vector<std::string> profile = {"uniform"};
       PetscCall(opt.NameList((base + "_profile").c_str(), "Inflow profile: uniform, or parabolic (the velocity given is the centre value; zero at the face's edges)",
                              {"uniform", "parabolic"}, &profile, &prGiven));
@@ -230,6 +230,9 @@ PetscErrorCode FlowBoundary::ApplyNormal(const StaggeredGrid &sg, int d, Vec glo
   const PetscInt   last = sg.Points(d, d) - 1;
   const PetscReal *lo = grid_->Lower(), *h = grid_->Spacing();
   PetscCall(sg.GetGlobal(d, global, &u));
+  LocalField ec;  // the cells next to the faces: a rank owning boundary face b owns its cell too
+  const bool divide = eps_ && (face_[2 * d].type == FlowBoundaryType::Inflow || face_[2 * d + 1].type == FlowBoundaryType::Inflow);
+  if (divide) PetscCall(sg.GetGlobal(3, eps_, &ec));
   for (int side = 0; side < 2; ++side) {
     const PetscInt b = side ? last : 0;
     if (b < s[d] || b >= s[d] + n[d]) continue;
@@ -249,9 +252,15 @@ PetscErrorCode FlowBoundary::ApplyNormal(const StaggeredGrid &sg, int d, Vec glo
           PetscReal x[3];
           for (int c = 0; c < 3; ++c) x[c] = lo[c] + (c == d ? q[c] : q[c] + 0.5) * h[c];
           u.at(q) = Prescribed(2 * d + side, d, x);
+          if (divide && F.type == FlowBoundaryType::Inflow) {
+            PetscInt c[3] = {q[0], q[1], q[2]};
+            c[d]          = side ? last - 1 : 0;  // faces 0..N, cells 0..N-1
+            u.at(q) /= PetscRealPart(ec.at(c));
+          }
         }
       }
   }
+  if (divide) PetscCall(sg.RestoreGlobal(3, eps_, &ec));
   PetscCall(sg.RestoreGlobal(d, global, &u));
   PetscFunctionReturn(0);
 }

@@ -110,7 +110,9 @@ PetscInt ViscousSolver::Row(int d, const PetscInt q[3], PetscReal dt, const Loca
         if (F.type == FlowBoundaryType::Outflow) continue;
         x[d] = side ? g.Upper()[d] : lo[d];
         diag += a;
-        *rhs += a * bc_->Prescribed(f, d, x);
+        // an inflow's face value is superficial / eps of its cell (FlowBoundary::ApplyNormal): cm or q
+        const PetscReal epsB = F.type == FlowBoundaryType::Inflow ? PetscRealPart(side ? eps.at(q) : eps.at(cm)) : 1;
+        *rhs += a * bc_->Prescribed(f, d, x) / epsB;
       } else if (F.type == FlowBoundaryType::Wall || F.type == FlowBoundaryType::Inflow) {
         // ghost = 2 U_b - u: the face value U_b is half a cell away
         x[e] = side ? g.Upper()[e] : lo[e];

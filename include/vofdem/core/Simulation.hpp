@@ -65,7 +65,7 @@ private:
   std::unique_ptr<Coupling> coupling_;  // -physics dem,flow
   Checkpoint checkpoint_;
 
-  PetscReal time_ = 0, dt_ = 0, dtUser_ = 0, finalTime_ = PETSC_MAX_REAL;
+  PetscReal time_ = 0, dt_ = 0, dtUser_ = 0, dtInitial_ = 0, dtMax_ = 0, finalTime_ = PETSC_MAX_REAL;
   PetscBool dtForce_ = PETSC_FALSE, monitorTiming_ = PETSC_TRUE;
   PetscInt  step_ = 0, maxSteps_ = 100, monitorEvery_ = 10;
   PetscReal gravity_[3] = {0, 0, -9.81};
