@@ -303,4 +303,9 @@ int main(int argc, char **argv) {
     suffix: 3d_60
     nsize: 2
     args: -dim 3 -resolution 16 -vof_contact_angle 60
+  test:
+    suffix: 3d_60_1
+    nsize: 1
+    args: -dim 3 -resolution 16 -vof_contact_angle 60
+    output_file: output/ex37_sessile_drop_3d_60.out
 TEST*/
