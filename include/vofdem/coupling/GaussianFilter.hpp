@@ -48,7 +48,8 @@ private:
   Vec                    local_ = nullptr;  // ghosted (directions split across ranks or periodic)
   Vec                    copy_  = nullptr;  // a plain copy (the others)
   bool                   needGhosts_[3] = {false, false, false};
-  std::vector<PetscScalar> acc_;             // one row of the y and z passes
+  std::vector<const PetscScalar *> rows_;    // the 2R + 1 source rows of one output row
+  std::vector<PetscScalar> ext_;             // one row and R images or ghosts each side (x pass)
   std::vector<PetscReal> taps_[3];
   PetscInt               R_[3] = {0, 0, 0}, lo_[3] = {0, 0, 0}, hi_[3] = {0, 0, 0};
   bool                   periodic_[3] = {false, false, false};
