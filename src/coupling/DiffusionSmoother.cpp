@@ -230,12 +230,21 @@ PetscErrorCode DiffusionSmoother::Average(int loc, PetscInt nf, const Vec field[
   PetscCall(Work(loc, 2 * nf));
   std::vector<Vec>  g(nf), c(nf, nullptr), source, smoothed;
   size_t            next = 0;
-  auto constant = [](Vec v, bool *is) -> PetscErrorCode {
-    PetscReal lo, hi;
+  auto constant = [](Vec v, bool *is) -> PetscErrorCode {  // min == max: one pass, one reduction
+    const PetscScalar *a;
+    PetscInt           m;
+    PetscReal          range[2] = {-PETSC_MAX_REAL, -PETSC_MAX_REAL};  // -min, max
     PetscFunctionBeginUser;
-    PetscCall(VecMin(v, nullptr, &lo));
-    PetscCall(VecMax(v, nullptr, &hi));
-    *is = lo == hi;
+    PetscCall(VecGetLocalSize(v, &m));
+    PetscCall(VecGetArrayRead(v, &a));
+    for (PetscInt k = 0; k < m; ++k) {
+      const PetscReal x = PetscRealPart(a[k]);
+      range[0]          = std::max(range[0], -x);
+      range[1]          = std::max(range[1], x);
+    }
+    PetscCall(VecRestoreArrayRead(v, &a));
+    PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, range, 2, MPIU_REAL, MPIU_MAX, PetscObjectComm((PetscObject)v)));
+    *is = -range[0] == range[1];
     PetscFunctionReturn(0);
   };
   auto smooth = [&](Vec v, Vec *s) -> PetscErrorCode {  // S(v), once per vector

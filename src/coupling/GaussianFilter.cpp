@@ -141,14 +141,18 @@ PetscErrorCode GaussianFilter::Apply(Vec v) {
     const PetscScalar ***in;
     PetscScalar       ***out;
     const bool          ghosts = needGhosts_[e];
+    // The x pass without ghosts reads v itself: each row is laid out in ext_ before it is overwritten.
+    const bool inPlace = !ghosts && e == 0;
+    PetscCall(DMDAVecGetArray(dm_, v, &out));
     if (ghosts) {
       PetscCall(DMGlobalToLocal(dm_, v, INSERT_VALUES, local_));
       PetscCall(DMDAVecGetArrayRead(dm_, local_, &in));
+    } else if (inPlace) {
+      in = const_cast<const PetscScalar ***>(out);
     } else {
       PetscCall(VecCopy(v, copy_));
       PetscCall(DMDAVecGetArrayRead(dm_, copy_, &in));
     }
-    PetscCall(DMDAVecGetArray(dm_, v, &out));
     const PetscInt   R = R_[e];
     const PetscReal *g = taps_[e].data() + R;  // g[t], t in [-R, R]
     // The points written: the active range (wall faces keep their value).
@@ -178,8 +182,8 @@ PetscErrorCode GaussianFilter::Apply(Vec v) {
         }
         SumShiftedRows(&out[k][j][a[0]], rows_.data(), g - R, 2 * R + 1, nx);
       }
+    if (!inPlace) PetscCall(DMDAVecRestoreArrayRead(dm_, ghosts ? local_ : copy_, &in));
     PetscCall(DMDAVecRestoreArray(dm_, v, &out));
-    PetscCall(DMDAVecRestoreArrayRead(dm_, ghosts ? local_ : copy_, &in));
   }
   PetscCall(PetscLogEventEnd(evApply, 0, 0, 0, 0));
   PetscFunctionReturn(0);
