@@ -4,6 +4,44 @@
 
 namespace vofdem {
 
+namespace {
+
+// ViscousSolver::Row for a face whose six neighbours all lie inside the box and no solid is present: the
+// same arithmetic in the same order (the same matrix to the bit), without Row's boundary and solid branches.
+// A full assembly runs it for nearly every face, every step in a coupled run (eps changes): Row was 13.5 %
+// of a bubbling-bed step at cell/d 0.5. h2[e] = h_e^2.
+PetscInt InteriorRow(int d, const PetscInt q[3], PetscReal dt, const PetscReal h2[3], const LocalField &eps, const LocalField &beta, const LocalField &em, MatStencil col[7],
+                     PetscScalar val[7], PetscReal *K) {
+  const PetscScalar *eq = &em.at(q);
+  const PetscInt     sd = em.stride[d];
+  const PetscReal    bL = PetscRealPart((&beta.at(q))[-beta.stride[d]]), bR = PetscRealPart(beta.at(q));
+  const PetscScalar *epq = &eps.at(q);
+  const PetscReal    eF = 0.5 * PetscRealPart(epq[-eps.stride[d]] + epq[0]), bF = 2 * bL * bR / (bL + bR);
+  PetscReal          diag = 0;
+  PetscInt           nc   = 1;
+  col[0]                  = {q[2], q[1], q[0], 0};
+  for (int e = 0; e < 3; ++e)
+    for (int side = 0; side < 2; ++side) {
+      PetscReal a;
+      if (e == d) a = PetscRealPart(side ? eq[0] : eq[-sd]) / h2[e];
+      else {
+        const PetscInt o = side ? em.stride[e] : -em.stride[e];  // c1 = q + o, c3 = c1 - e_d
+        a                = 0.25 * PetscRealPart(eq[0] + eq[-sd] + eq[o] + eq[o - sd]) / h2[e];
+      }
+      a *= 0.5;  // Crank-Nicolson half
+      PetscInt nb[3] = {q[0], q[1], q[2]};
+      nb[e] += side ? 1 : -1;
+      col[nc]   = {nb[2], nb[1], nb[0], 0};
+      val[nc++] = -a;
+      diag += a;
+    }
+  *K     = diag;
+  val[0] = ViscousSolver::MassOverDt(eF, bF, dt) + diag;
+  return nc;
+}
+
+}  // namespace
+
 PetscErrorCode ViscousSolver::Create(const StaggeredGrid &sg, const FlowBoundary &bc) {
   PetscFunctionBeginUser;
   sg_ = &sg;
@@ -152,11 +190,26 @@ PetscErrorCode ViscousSolver::Assemble(PetscReal dt, Vec epsLocal, Vec betaLocal
       PetscCall(MatZeroEntries(A_[d]));
       PetscCall(sg_->GetGlobal(d, bcRhs_[d], &rb));
       PetscCall(sg_->GetGlobal(d, K_[d], &out));
+      // The faces whose neighbours are all inside (Row's boundary cases need a neighbour outside or a
+      // boundary face of the component): along a walled e, faces 2..N-2 (e = d) or cells 1..N-2.
+      const Grid &g = sg_->Base();
+      PetscInt    inLo[3], inHi[3];
+      PetscReal   h2[3];
+      for (int e = 0; e < 3; ++e) {
+        h2[e]   = g.Spacing()[e] * g.Spacing()[e];
+        inLo[e] = g.Periodic(e) ? PETSC_MIN_INT : e == d ? 2 : 1;
+        inHi[e] = g.Periodic(e) ? PETSC_MAX_INT : e == d ? sg_->Points(d, d) - 3 : g.Cells()[e] - 2;
+      }
       for (q[2] = s[2]; q[2] < s[2] + n[2]; ++q[2])
         for (q[1] = s[1]; q[1] < s[1] + n[1]; ++q[1])
           for (q[0] = s[0]; q[0] < s[0] + n[0]; ++q[0]) {
-            const PetscInt nc = Row(d, q, dt, eps, beta, em, sp, col, val, &rhs, &out.at(q));
-            rb.at(q)          = rhs;
+            const bool interior = !sp && q[0] >= inLo[0] && q[0] <= inHi[0] && q[1] >= inLo[1] && q[1] <= inHi[1] && q[2] >= inLo[2] && q[2] <= inHi[2];
+            PetscInt   nc;
+            if (interior) {
+              nc  = InteriorRow(d, q, dt, h2, eps, beta, em, col, val, &out.at(q));
+              rhs = 0;
+            } else nc = Row(d, q, dt, eps, beta, em, sp, col, val, &rhs, &out.at(q));
+            rb.at(q) = rhs;
             PetscCall(MatSetValuesStencil(A_[d], 1, col, nc, col, val, INSERT_VALUES));
           }
       PetscCall(sg_->RestoreGlobal(d, K_[d], &out));

@@ -29,12 +29,12 @@ public:
   PetscReal      AssembledDt() const { return dt_; }
   PetscErrorCode View(PetscViewer viewer) const;
   PetscErrorCode Destroy();
+  // (eps rho)_f / dt from the face means eps_f and b_f = (eps/rho)_f (harmonic), as in the rhs.
+  static PetscReal MassOverDt(PetscReal eF, PetscReal bF, PetscReal dt) { return eF * eF / bF / dt; }
 
 private:
   PetscInt Row(int d, const PetscInt q[3], PetscReal dt, const LocalField &eps, const LocalField &beta, const LocalField &em, const LocalField *solid,
                MatStencil col[7], PetscScalar val[7], PetscReal *rhs, PetscReal *K) const;
-  // (eps rho)_f / dt from the face means eps_f and b_f = (eps/rho)_f (harmonic), as in the rhs.
-  static PetscReal MassOverDt(PetscReal eF, PetscReal bF, PetscReal dt) { return eF * eF / bF / dt; }
 
   const StaggeredGrid *sg_ = nullptr;
   const FlowBoundary  *bc_ = nullptr;
