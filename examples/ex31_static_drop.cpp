@@ -103,9 +103,9 @@ PetscErrorCode Run() {
   char setup[16] = "quarter";
   PetscCall(PetscOptionsGetString(nullptr, nullptr, "-setup", setup, sizeof setup, nullptr));
   const std::string setupName = setup;
-  PetscCheck(setupName == "quarter" || setupName == "full", PETSC_COMM_WORLD, PETSC_ERR_ARG_OUTOFRANGE, "-setup %s: must be quarter or full", setup);
+  if (setupName != "quarter" && setupName != "full") VofdemInputError(PETSC_COMM_WORLD, "option -setup: '%s' is neither quarter nor full", setup);
   const bool quarter = setupName == "quarter";
-  PetscCheck(!quarter || N % 2 == 0, PETSC_COMM_WORLD, PETSC_ERR_ARG_OUTOFRANGE, "-resolution %d: the quarter set-up needs an even number of cells across the unit box", (int)N);
+  if (quarter && N % 2) VofdemInputError(PETSC_COMM_WORLD, "option -resolution: the quarter set-up needs an even number of cells across the unit box, got %d", (int)N);
   caMax = ratio == 1 ? 1e-10 : 1e-8;
   PetscCall(PetscOptionsGetReal(nullptr, nullptr, "-ca_max", &caMax, nullptr));
   const PetscReal rho = ratio, mu = std::sqrt(rho * sigma * D / La), tnu = D * D * rho / mu, h = 1.0 / N;
