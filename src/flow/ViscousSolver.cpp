@@ -82,6 +82,7 @@ PetscErrorCode ViscousSolver::SetFromOptions() {
 // With solid cells (SolidMask.hpp): a blocked face gets an identity row (its rhs 0); a blocked
 // neighbour contributes its known value 0, at the neighbour's distance, or half of it (a wall face:
 // the neighbour lies inside the solid, the wall is at the shared cell face, ghost = -u).
+// InteriorRow (above) repeats the interior case of this function for speed: change both together.
 PetscInt ViscousSolver::Row(int d, const PetscInt q[3], PetscReal dt, const LocalField &eps, const LocalField &beta, const LocalField &em, const LocalField *solid,
                             MatStencil col[7], PetscScalar val[7], PetscReal *rhs, PetscReal *K) const {
   const Grid      &g = sg_->Base();
