@@ -166,22 +166,68 @@ PetscErrorCode GaussianFilter::Apply(Vec v) {
     // folded images (or periodic ghosts) each side, so that no folding happens inside the tap loop; along y
     // and z whole rows of the neighbouring lines, folded at walls.
     const PetscInt nx = b[0] - a[0];
-    for (PetscInt k = a[2]; k < b[2]; ++k)
-      for (PetscInt j = a[1]; j < b[1]; ++j) {
-        if (e == 0) {
+    if (nx <= 0 || b[1] <= a[1] || b[2] <= a[2]) {  // nothing active on this rank
+    } else if (e == 0) {
+      // ext[i], i in [a[0] - R, b[0] + R): the row, its images beyond the active range (walls), else the
+      // row itself or its ghosts; only the ends are folded.
+      PetscScalar   *ext = ext_.data() + R - a[0];
+      const PetscInt m0 = foldAll ? std::max(a[0] - R, lo_[0]) : a[0] - R, m1 = foldAll ? std::min(b[0] + R, hi_[0] + 1) : b[0] + R;
+      for (PetscInt t = -R; t <= R; ++t) rows_[t + R] = ext + a[0] + t;
+      for (PetscInt k = a[2]; k < b[2]; ++k)
+        for (PetscInt j = a[1]; j < b[1]; ++j) {
           const PetscScalar *src = &in[k][j][0];
-          PetscScalar       *ext = ext_.data() + R - a[0];  // ext[i], i in [a[0] - R, b[0] + R)
-          for (PetscInt i = a[0] - R; i < b[0] + R; ++i) ext[i] = src[foldAll ? Fold(0, i) : i];
-          for (PetscInt t = -R; t <= R; ++t) rows_[t + R] = ext + a[0] + t;
-        } else {
+          for (PetscInt i = a[0] - R; i < m0; ++i) ext[i] = src[Fold(0, i)];
+          std::copy(src + m0, src + m1, ext + m0);
+          for (PetscInt i = m1; i < b[0] + R; ++i) ext[i] = src[Fold(0, i)];
+          SumShiftedRows(&out[k][j][a[0]], rows_.data(), g - R, 2 * R + 1, nx);
+        }
+    } else if (!ghosts) {
+      // The source is the plain copy, laid out as v: consecutive rows are contiguous, so lines that need no
+      // folding are summed as one long row, whole x rows including any wall faces, which then get their
+      // value back from the copy (each point's sum is the same as row by row).
+      const PetscInt  sy = n[0], sz = n[0] * n[1];
+      PetscScalar    *o  = &out[s[2]][s[1]][s[0]];
+      const PetscScalar *c = &in[s[2]][s[1]][s[0]];
+      auto line = [&](PetscInt j, PetscInt k) { return (j - s[1]) * sy + (k - s[2]) * sz; };
+      auto restoreWalls = [&](PetscInt j0, PetscInt j1, PetscInt k) {
+        for (PetscInt j = j0; j < j1; ++j) {
+          const PetscInt at = line(j, k);
+          for (PetscInt i = s[0]; i < a[0]; ++i) o[at + i - s[0]] = c[at + i - s[0]];
+          for (PetscInt i = b[0]; i < s[0] + n[0]; ++i) o[at + i - s[0]] = c[at + i - s[0]];
+        }
+      };
+      for (PetscInt k = a[2]; k < b[2]; ++k) {
+        if (e == 2) {  // the whole plane of lines j in [a1, b1) at once
+          for (PetscInt t = -R; t <= R; ++t) rows_[t + R] = c + line(a[1], foldAll ? Fold(2, k + t) : k + t);
+          SumShiftedRows(o + line(a[1], k), rows_.data(), g - R, 2 * R + 1, (b[1] - a[1]) * sy);
+          restoreWalls(a[1], b[1], k);
+          continue;
+        }
+        // y: the lines whose taps all stay in the active range at once, the others one by one
+        PetscInt j0 = a[1], j1 = b[1];
+        if (foldAll) j0 = std::max(a[1], lo_[1] + R), j1 = std::min(b[1], hi_[1] - R + 1);
+        if (j1 > j0) {
+          for (PetscInt t = -R; t <= R; ++t) rows_[t + R] = c + line(j0 + t, k);
+          SumShiftedRows(o + line(j0, k), rows_.data(), g - R, 2 * R + 1, (j1 - j0) * sy);
+          restoreWalls(j0, j1, k);
+        } else j0 = j1 = b[1];
+        for (PetscInt j = a[1]; j < b[1]; ++j) {
+          if (j >= j0 && j < j1) continue;
+          for (PetscInt t = -R; t <= R; ++t) rows_[t + R] = &in[k][foldAll ? Fold(1, j + t) : j + t][a[0]];
+          SumShiftedRows(&out[k][j][a[0]], rows_.data(), g - R, 2 * R + 1, nx);
+        }
+      }
+    } else {
+      for (PetscInt k = a[2]; k < b[2]; ++k)
+        for (PetscInt j = a[1]; j < b[1]; ++j) {
           const PetscInt q = e == 1 ? j : k;
           for (PetscInt t = -R; t <= R; ++t) {
             const PetscInt r = foldAll ? Fold(e, q + t) : q + t;
             rows_[t + R]     = (e == 1 ? &in[k][r][0] : &in[r][j][0]) + a[0];
           }
+          SumShiftedRows(&out[k][j][a[0]], rows_.data(), g - R, 2 * R + 1, nx);
         }
-        SumShiftedRows(&out[k][j][a[0]], rows_.data(), g - R, 2 * R + 1, nx);
-      }
+    }
     if (!inPlace) PetscCall(DMDAVecRestoreArrayRead(dm_, ghosts ? local_ : copy_, &in));
     PetscCall(DMDAVecRestoreArray(dm_, v, &out));
   }
