@@ -117,6 +117,44 @@ PetscErrorCode GaussianFilter::SetUp(DM location, const PetscReal h[3], const Pe
   PetscCall(DMDAGetCorners(dm_, &cs[0], &cs[1], &cs[2], &cn[0], &cn[1], &cn[2]));
   rows_.assign((size_t)(2 * width + 1), nullptr);
   ext_.assign((size_t)(std::max(cn[0], (PetscInt)1) + 2 * width), 0.0);
+  if (needGhosts_[0] && R_[0]) {
+    const PetscMPIInt *nb;
+    PetscCall(DMDAGetNeighbors(dm_, &nb));  // 3-D: [9 (dz + 1) + 3 (dy + 1) + dx + 1]
+    for (int side = 0; side < 2; ++side) {
+      const PetscMPIInt r = nb[side ? 14 : 12];
+      xNeighbour_[side]   = r < 0 ? MPI_PROC_NULL : r;
+      haloSend_[side].assign((size_t)(R_[0] * cn[1] * cn[2]), 0.0);
+      haloRecv_[side].assign((size_t)(R_[0] * cn[1] * cn[2]), 0.0);
+    }
+  }
+  PetscFunctionReturn(0);
+}
+
+// The first and last R_x values of every owned row to the left and right neighbours, their last and first
+// into haloRecv_[0] and [1] (no neighbour: MPI_PROC_NULL, nothing received; the pass folds there).
+PetscErrorCode GaussianFilter::ExchangeXHalo(Vec v, const PetscInt s[3], const PetscInt n[3]) {
+  const PetscScalar ***a;
+  MPI_Comm            comm;
+  MPI_Request         req[4];
+  const PetscInt      R = R_[0];
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscObjectGetComm((PetscObject)dm_, &comm));
+  PetscCall(DMDAVecGetArrayRead(dm_, v, &a));
+  for (PetscInt k = 0; k < n[2]; ++k)
+    for (PetscInt j = 0; j < n[1]; ++j) {
+      const PetscScalar *row = &a[s[2] + k][s[1] + j][s[0]];
+      const size_t       at  = (size_t)((k * n[1] + j) * R);
+      std::copy(row, row + R, haloSend_[0].data() + at);
+      std::copy(row + n[0] - R, row + n[0], haloSend_[1].data() + at);
+    }
+  PetscCall(DMDAVecRestoreArrayRead(dm_, v, &a));
+  const PetscMPIInt count = (PetscMPIInt)haloSend_[0].size(), toLeft = 71, toRight = 72;
+  PetscCallMPI(MPI_Irecv(haloRecv_[0].data(), count, MPIU_SCALAR, xNeighbour_[0], toRight, comm, &req[0]));
+  PetscCallMPI(MPI_Irecv(haloRecv_[1].data(), count, MPIU_SCALAR, xNeighbour_[1], toLeft, comm, &req[1]));
+  PetscCallMPI(MPI_Isend(haloSend_[0].data(), count, MPIU_SCALAR, xNeighbour_[0], toLeft, comm, &req[2]));
+  PetscCallMPI(MPI_Isend(haloSend_[1].data(), count, MPIU_SCALAR, xNeighbour_[1], toRight, comm, &req[3]));
+  PetscCallMPI(MPI_Waitall(4, req, MPI_STATUSES_IGNORE));
   PetscFunctionReturn(0);
 }
 
@@ -141,14 +179,15 @@ PetscErrorCode GaussianFilter::Apply(Vec v) {
     const PetscScalar ***in;
     PetscScalar       ***out;
     const bool          ghosts = needGhosts_[e];
-    // The x pass without ghosts reads v itself: each row is laid out in ext_ before it is overwritten.
-    const bool inPlace = !ghosts && e == 0;
+    // The x pass reads v itself (and its exchanged ends): each row is laid out in ext_ before it is overwritten.
+    const bool inPlace = e == 0;
+    if (e == 0 && ghosts) PetscCall(ExchangeXHalo(v, s, n));
     PetscCall(DMDAVecGetArray(dm_, v, &out));
-    if (ghosts) {
+    if (inPlace) {
+      in = const_cast<const PetscScalar ***>(out);
+    } else if (ghosts) {
       PetscCall(DMGlobalToLocal(dm_, v, INSERT_VALUES, local_));
       PetscCall(DMDAVecGetArrayRead(dm_, local_, &in));
-    } else if (inPlace) {
-      in = const_cast<const PetscScalar ***>(out);
     } else {
       PetscCall(VecCopy(v, copy_));
       PetscCall(DMDAVecGetArrayRead(dm_, copy_, &in));
@@ -170,15 +209,23 @@ PetscErrorCode GaussianFilter::Apply(Vec v) {
     } else if (e == 0) {
       // ext[i], i in [a[0] - R, b[0] + R): the row, its images beyond the active range (walls), else the
       // row itself or its ghosts; only the ends are folded.
+      // Points of the row beyond this rank's share come from the exchanged ends (ghosts only).
       PetscScalar   *ext = ext_.data() + R - a[0];
       const PetscInt m0 = foldAll ? std::max(a[0] - R, lo_[0]) : a[0] - R, m1 = foldAll ? std::min(b[0] + R, hi_[0] + 1) : b[0] + R;
+      const PetscInt o0 = std::max(m0, s[0]), o1 = std::min(m1, s[0] + n[0]);  // the owned part of [m0, m1)
       for (PetscInt t = -R; t <= R; ++t) rows_[t + R] = ext + a[0] + t;
       for (PetscInt k = a[2]; k < b[2]; ++k)
         for (PetscInt j = a[1]; j < b[1]; ++j) {
-          const PetscScalar *src = &in[k][j][0];
-          for (PetscInt i = a[0] - R; i < m0; ++i) ext[i] = src[Fold(0, i)];
-          std::copy(src + m0, src + m1, ext + m0);
-          for (PetscInt i = m1; i < b[0] + R; ++i) ext[i] = src[Fold(0, i)];
+          const PetscScalar *src   = &in[k][j][0];
+          const size_t       row   = (size_t)(((k - s[2]) * n[1] + (j - s[1])) * R);
+          auto               at    = [&](PetscInt i) {  // ends: i in [s0 - R, s0) and [s0 + n0, s0 + n0 + R)
+            return i < s[0] ? haloRecv_[0][row + (size_t)(i - (s[0] - R))] : i >= s[0] + n[0] ? haloRecv_[1][row + (size_t)(i - s[0] - n[0])] : src[i];
+          };
+          for (PetscInt i = a[0] - R; i < m0; ++i) ext[i] = at(Fold(0, i));
+          for (PetscInt i = m0; i < o0; ++i) ext[i] = at(i);
+          std::copy(src + o0, src + o1, ext + o0);
+          for (PetscInt i = std::max(o1, m0); i < m1; ++i) ext[i] = at(i);
+          for (PetscInt i = m1; i < b[0] + R; ++i) ext[i] = at(Fold(0, i));
           SumShiftedRows(&out[k][j][a[0]], rows_.data(), g - R, 2 * R + 1, nx);
         }
     } else if (!ghosts) {

@@ -50,6 +50,11 @@ private:
   bool                   needGhosts_[3] = {false, false, false};
   std::vector<const PetscScalar *> rows_;    // the 2R + 1 source rows of one output row
   std::vector<PetscScalar> ext_;             // one row and R images or ghosts each side (x pass)
+  // The x pass's ghosts when x is split or periodic: R_x values at each end of every owned row, exchanged
+  // with the x neighbours directly (a ghost update of the DMDA would also copy the whole vector).
+  PetscMPIInt              xNeighbour_[2] = {MPI_PROC_NULL, MPI_PROC_NULL};  // left, right
+  std::vector<PetscScalar> haloSend_[2], haloRecv_[2];                      // [row * R_x + t]
+  PetscErrorCode           ExchangeXHalo(Vec v, const PetscInt s[3], const PetscInt n[3]);
   std::vector<PetscReal> taps_[3];
   PetscInt               R_[3] = {0, 0, 0}, lo_[3] = {0, 0, 0}, hi_[3] = {0, 0, 0};
   bool                   periodic_[3] = {false, false, false};
