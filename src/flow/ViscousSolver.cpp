@@ -188,7 +188,6 @@ PetscErrorCode ViscousSolver::Assemble(PetscReal dt, Vec epsLocal, Vec betaLocal
     sg_->Owned(d, s, n);
     if (coefficientsChanged || !assembled_) {
       LocalField rb;
-      PetscCall(MatZeroEntries(A_[d]));
       PetscCall(sg_->GetGlobal(d, bcRhs_[d], &rb));
       PetscCall(sg_->GetGlobal(d, K_[d], &out));
       // The faces whose neighbours are all inside (Row's boundary cases need a neighbour outside or a
@@ -201,22 +200,45 @@ PetscErrorCode ViscousSolver::Assemble(PetscReal dt, Vec epsLocal, Vec betaLocal
         inLo[e] = g.Periodic(e) ? PETSC_MIN_INT : e == d ? 2 : 1;
         inHi[e] = g.Periodic(e) ? PETSC_MAX_INT : e == d ? sg_->Points(d, d) - 3 : g.Cells()[e] - 2;
       }
-      for (q[2] = s[2]; q[2] < s[2] + n[2]; ++q[2])
-        for (q[1] = s[1]; q[1] < s[1] + n[1]; ++q[1])
-          for (q[0] = s[0]; q[0] < s[0] + n[0]; ++q[0]) {
-            const bool interior = !sp && q[0] >= inLo[0] && q[0] <= inHi[0] && q[1] >= inLo[1] && q[1] <= inHi[1] && q[2] >= inLo[2] && q[2] <= inHi[2];
-            PetscInt   nc;
-            if (interior) {
-              nc  = InteriorRow(d, q, dt, h2, eps, beta, em, col, val, &out.at(q));
-              rhs = 0;
-            } else nc = Row(d, q, dt, eps, beta, em, sp, col, val, &rhs, &out.at(q));
-            rb.at(q) = rhs;
-            PetscCall(MatSetValuesStencil(A_[d], 1, col, nc, col, val, INSERT_VALUES));
-          }
+      // Every row, in place if the writer has this matrix's rows (AijRowWriter.hpp), else through
+      // MatSetValuesStencil, recording them for the next time; a row of another shape (a solid moved)
+      // sends the whole matrix the slow way again.
+      bool inPlace = writer_[d].Ready();
+      for (int pass = inPlace ? 0 : 1; pass < 2; ++pass) {
+        if (pass == 0) PetscCall(writer_[d].Begin(A_[d]));
+        else {
+          PetscCall(MatZeroEntries(A_[d]));
+          writer_[d].Reset();
+        }
+        bool fits = true;
+        for (q[2] = s[2]; q[2] < s[2] + n[2]; ++q[2])
+          for (q[1] = s[1]; q[1] < s[1] + n[1]; ++q[1])
+            for (q[0] = s[0]; q[0] < s[0] + n[0]; ++q[0]) {
+              const bool interior = !sp && q[0] >= inLo[0] && q[0] <= inHi[0] && q[1] >= inLo[1] && q[1] <= inHi[1] && q[2] >= inLo[2] && q[2] <= inHi[2];
+              PetscInt   nc;
+              if (interior) {
+                nc  = InteriorRow(d, q, dt, h2, eps, beta, em, col, val, &out.at(q));
+                rhs = 0;
+              } else nc = Row(d, q, dt, eps, beta, em, sp, col, val, &rhs, &out.at(q));
+              rb.at(q) = rhs;
+              if (pass == 0) fits = fits && writer_[d].Put(nc, col, val);
+              else {
+                PetscCall(MatSetValuesStencil(A_[d], 1, col, nc, col, val, INSERT_VALUES));
+                PetscCall(writer_[d].Note(A_[d], sg_->FaceMatrixDM(d), col[0], nc, col));
+              }
+            }
+        if (pass == 0) {
+          bool complete;
+          PetscCall(writer_[d].End(A_[d], &complete));
+          if (fits && complete) break;
+          continue;
+        }
+        PetscCall(MatAssemblyBegin(A_[d], MAT_FINAL_ASSEMBLY));
+        PetscCall(MatAssemblyEnd(A_[d], MAT_FINAL_ASSEMBLY));
+        PetscCall(writer_[d].Finish(A_[d]));
+      }
       PetscCall(sg_->RestoreGlobal(d, K_[d], &out));
       PetscCall(sg_->RestoreGlobal(d, bcRhs_[d], &rb));
-      PetscCall(MatAssemblyBegin(A_[d], MAT_FINAL_ASSEMBLY));
-      PetscCall(MatAssemblyEnd(A_[d], MAT_FINAL_ASSEMBLY));
     } else {
       LocalField K;
       PetscCall(sg_->GetGlobal(d, diag_[d], &out));

@@ -7,6 +7,7 @@
 // the matrix is diagonally dominant by (eps rho)/dt), one KSP per component.
 #pragma once
 
+#include "vofdem/flow/AijRowWriter.hpp"
 #include "vofdem/flow/FlowBoundary.hpp"
 #include "vofdem/flow/SolidMask.hpp"
 #include "vofdem/flow/StaggeredGrid.hpp"
@@ -44,6 +45,7 @@ private:
   Vec                  bcRhs_[3] = {nullptr, nullptr, nullptr};
   Vec                  diag_[3] = {nullptr, nullptr, nullptr};  // scratch of the diagonal-only update
   Vec                  K_[3] = {nullptr, nullptr, nullptr};     // viscous part of the diagonal (identity rows: 1)
+  AijRowWriter         writer_[3];  // full assemblies after the first write the values in place
   PetscBool            assembled_ = PETSC_FALSE;
   PetscReal            dt_ = -1;
   PetscInt             iterations_ = 0;
