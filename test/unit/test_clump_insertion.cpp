@@ -5,30 +5,14 @@
 #include "vofdem/dem/ClumpLibrary.hpp"
 #include "vofdem/dem/Clumps.hpp"
 
+#include "PetscTestEnvironment.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
 
 namespace {
 
-class PetscForClumpInsertion : public ::testing::Environment {
-public:
-  void SetUp() override {
-    PetscBool started;
-    PetscInitialized(&started);
-    if (!started) {
-      ASSERT_EQ(PetscInitializeNoArguments(), 0);
-      mine_ = true;
-    }
-  }
-  void TearDown() override {
-    if (mine_) PetscFinalize();
-  }
-
-private:
-  bool mine_ = false;
-};
-[[maybe_unused]] ::testing::Environment *const petscForClumpInsertion = ::testing::AddGlobalTestEnvironment(new PetscForClumpInsertion);
 
 // The placed clump's union, computed from its world spheres, has the placed mass, centroid and moments.
 void CheckPlaced(vofdem::ClumpLibrary &lib, int t, double rEq) {

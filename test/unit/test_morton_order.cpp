@@ -3,36 +3,14 @@
 #include "vofdem/dem/MortonOrder.hpp"
 #include "vofdem/dem/ParticleSwarm.hpp"
 
+#include "PetscTestEnvironment.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cstdint>
 #include <vector>
 
 using namespace vofdem;
-
-namespace {
-
-// PETSc for the swarm test, started on first use and finalised once after all tests.
-class PetscOnce : public ::testing::Environment {
-public:
-  static void Start() {
-    PetscBool started;
-    PetscInitialized(&started);
-    if (!started) {
-      ASSERT_EQ(PetscInitializeNoArguments(), 0);
-      mine_ = true;
-    }
-  }
-  void TearDown() override {
-    if (mine_) PetscFinalize();
-  }
-
-private:
-  static inline bool mine_ = false;
-};
-[[maybe_unused]] ::testing::Environment *const petscOnce = ::testing::AddGlobalTestEnvironment(new PetscOnce);
-
-}  // namespace
 
 TEST(MortonOrder, KeyInterleavesCellBits) {
   const PetscReal lo[3] = {0, 0, 0}, inv[3] = {1, 1, 1}, cell = 1.0 / (1 << 21);
@@ -52,7 +30,6 @@ TEST(MortonOrder, KeyInterleavesCellBits) {
 }
 
 TEST(MortonOrder, SortMovesWholePointsIntoKeyOrder) {
-  PetscOnce::Start();
   DM             swarm;
   const PetscInt n = 200;
   ASSERT_EQ(DMCreate(PETSC_COMM_SELF, &swarm), 0);
