@@ -141,19 +141,26 @@ PetscErrorCode Coupling::Project() {
     PetscCall(avg_.Deposit(d, a.n, a.x, H_.data(), lastForce_.data() + d, 3, accel_[d]));
     PetscCall(sg.GetGlobal(d, accel_[d], &A));
     sg.Owned(d, s, n);
-    const PetscInt last = sg.Points(d, d) - 1;
+    const PetscInt last = sg.Points(d, d) - 1, sd = eps.stride[d];  // sd: from a face's cell q to cm = q - e_d
+    const bool     wall = !sg.Base().Periodic(d);
+    // Row by row with unit stride along x; the wall faces (nothing deposited there) skipped; the source
+    // summed in the same order as point by point.
     for (PetscInt k = s[2]; k < s[2] + n[2]; ++k)
-      for (PetscInt j = s[1]; j < s[1] + n[1]; ++j)
-        for (PetscInt i = s[0]; i < s[0] + n[0]; ++i) {
-          PetscInt q[3] = {i, j, k}, cm[3] = {i, j, k};
-          if (!sg.Base().Periodic(d) && (q[d] == 0 || q[d] == last)) continue;  // nothing deposited there
-          cm[d] -= 1;
-          const PetscReal eL = PetscRealPart(eps.at(cm)), eR = PetscRealPart(eps.at(q));
-          const PetscReal bL = eL / PetscRealPart(rho.at(cm)), bR = eR / PetscRealPart(rho.at(q));
+      for (PetscInt j = s[1]; j < s[1] + n[1]; ++j) {
+        const PetscInt qd = d == 1 ? j : k;
+        if (wall && d != 0 && (qd == 0 || qd == last)) continue;
+        PetscScalar       *Ar = &A.at(s[0], j, k);
+        const PetscScalar *er = &eps.at(s[0], j, k), *rr = &rho.at(s[0], j, k);
+        PetscInt           i0 = 0, i1 = n[0];
+        if (wall && d == 0) i0 = s[0] == 0 ? 1 : 0, i1 = s[0] + n[0] - 1 == last ? n[0] - 1 : n[0];
+        for (PetscInt i = i0; i < i1; ++i) {
+          const PetscReal eL = PetscRealPart(er[i - sd]), eR = PetscRealPart(er[i]);
+          const PetscReal bL = eL / PetscRealPart(rr[i - sd]), bR = eR / PetscRealPart(rr[i]);
           const PetscReal eF = 0.5 * (eL + eR), bF = 2 * bL * bR / (bL + bR);
-          source[d] -= PetscRealPart(A.at(q));
-          A.at(q) = -PetscRealPart(A.at(q)) / (Vc * eF * eF / bF);
+          source[d] -= PetscRealPart(Ar[i]);
+          Ar[i] = -PetscRealPart(Ar[i]) / (Vc * eF * eF / bF);
         }
+      }
     PetscCall(sg.RestoreGlobal(d, accel_[d], &A));
     if (byMass) PetscCall(DepositByFaceMass(d, a, eps, rho, &source[d]));  // after the conversion above
   }
@@ -181,20 +188,28 @@ PetscErrorCode Coupling::FaceFields() {
     PetscCall(sg.GetGlobal(d, faceEps_[d], &E));
     PetscCall(sg.GetGlobal(d, gradP_[d], &G));
     sg.Owned(d, s, n);
-    const PetscInt last = sg.Points(d, d) - 1;
+    const PetscInt last = sg.Points(d, d) - 1, sd = eps.stride[d];  // sd: from a face's cell q to cm = q - e_d
     const bool     wall = !sg.Base().Periodic(d);
+    // Row by row with unit stride along x (the x walls' faces, if any, at the row's ends).
     for (PetscInt k = s[2]; k < s[2] + n[2]; ++k)
-      for (PetscInt j = s[1]; j < s[1] + n[1]; ++j)
-        for (PetscInt i = s[0]; i < s[0] + n[0]; ++i) {
-          PetscInt q[3] = {i, j, k}, cm[3] = {i, j, k};
-          cm[d] -= 1;
-          if (wall && q[d] == 0) E.at(q) = eps.at(q), G.at(q) = 0;
-          else if (wall && q[d] == last) E.at(q) = eps.at(cm), G.at(q) = 0;
-          else {
-            E.at(q) = 0.5 * (eps.at(q) + eps.at(cm));
-            G.at(q) = (p.at(q) - p.at(cm)) / h[d];
-          }
+      for (PetscInt j = s[1]; j < s[1] + n[1]; ++j) {
+        PetscScalar       *Er = &E.at(s[0], j, k), *Gr = &G.at(s[0], j, k);
+        const PetscScalar *er = &eps.at(s[0], j, k), *pr = &p.at(s[0], j, k);
+        const PetscInt     qd = d == 1 ? j : k;
+        PetscInt           i0 = 0, i1 = n[0];
+        if (wall && d != 0 && (qd == 0 || qd == last)) {  // a wall row: all its faces on the wall
+          for (PetscInt i = 0; i < n[0]; ++i) Er[i] = qd == 0 ? er[i] : er[i - sd], Gr[i] = 0;
+          continue;
         }
+        if (wall && d == 0) {
+          if (s[0] == 0) Er[0] = er[0], Gr[0] = 0, i0 = 1;
+          if (s[0] + n[0] - 1 == last) Er[n[0] - 1] = er[n[0] - 1 - sd], Gr[n[0] - 1] = 0, i1 = n[0] - 1;
+        }
+        for (PetscInt i = i0; i < i1; ++i) {
+          Er[i] = 0.5 * (er[i] + er[i - sd]);
+          Gr[i] = (pr[i] - pr[i - sd]) / h[d];
+        }
+      }
     PetscCall(sg.RestoreGlobal(d, gradP_[d], &G));
     PetscCall(sg.RestoreGlobal(d, faceEps_[d], &E));
   }

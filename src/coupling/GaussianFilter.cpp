@@ -166,10 +166,13 @@ PetscErrorCode GaussianFilter::Destroy() {
   PetscFunctionReturn(0);
 }
 
-// Row by row (x fastest), each output row a sum of shifted source rows (SumShiftedRows). A direction that is
-// neither split nor periodic needs no ghosts: the pass reads a plain copy instead of a ghost update.
+// Row by row (x fastest), each output row a sum of shifted source rows (SumShiftedRows). The x pass works in
+// place (each row is laid out in ext_ before it is overwritten); a y or z pass that needs no ghosts reads the
+// current values and writes the other buffer (v or copy_), so that no pass copies the vector; one that needs
+// ghosts reads a ghost update and writes in place. The result ends in v (one copy if the last pass wrote copy_).
 PetscErrorCode GaussianFilter::Apply(Vec v) {
   PetscInt s[3], n[3];
+  Vec      cur = v;  // where the values are now
 
   PetscFunctionBeginUser;
   PetscCall(PetscLogEventBegin(evApply, 0, 0, 0, 0));
@@ -179,19 +182,15 @@ PetscErrorCode GaussianFilter::Apply(Vec v) {
     const PetscScalar ***in;
     PetscScalar       ***out;
     const bool          ghosts = needGhosts_[e];
-    // The x pass reads v itself (and its exchanged ends): each row is laid out in ext_ before it is overwritten.
-    const bool inPlace = e == 0;
-    if (e == 0 && ghosts) PetscCall(ExchangeXHalo(v, s, n));
-    PetscCall(DMDAVecGetArray(dm_, v, &out));
-    if (inPlace) {
-      in = const_cast<const PetscScalar ***>(out);
-    } else if (ghosts) {
-      PetscCall(DMGlobalToLocal(dm_, v, INSERT_VALUES, local_));
+    const bool          inPlace = e == 0, swap = e > 0 && !ghosts;
+    const Vec           dst = swap ? (cur == v ? copy_ : v) : cur;
+    if (e == 0 && ghosts) PetscCall(ExchangeXHalo(cur, s, n));
+    PetscCall(DMDAVecGetArray(dm_, dst, &out));
+    if (inPlace) in = const_cast<const PetscScalar ***>(out);
+    else if (ghosts) {
+      PetscCall(DMGlobalToLocal(dm_, cur, INSERT_VALUES, local_));
       PetscCall(DMDAVecGetArrayRead(dm_, local_, &in));
-    } else {
-      PetscCall(VecCopy(v, copy_));
-      PetscCall(DMDAVecGetArrayRead(dm_, copy_, &in));
-    }
+    } else PetscCall(DMDAVecGetArrayRead(dm_, cur, &in));
     const PetscInt   R = R_[e];
     const PetscReal *g = taps_[e].data() + R;  // g[t], t in [-R, R]
     // The points written: the active range (wall faces keep their value).
@@ -208,17 +207,17 @@ PetscErrorCode GaussianFilter::Apply(Vec v) {
     if (nx <= 0 || b[1] <= a[1] || b[2] <= a[2]) {  // nothing active on this rank
     } else if (e == 0) {
       // ext[i], i in [a[0] - R, b[0] + R): the row, its images beyond the active range (walls), else the
-      // row itself or its ghosts; only the ends are folded.
-      // Points of the row beyond this rank's share come from the exchanged ends (ghosts only).
+      // row itself or its ghosts; only the ends are folded. Points of the row beyond this rank's share come
+      // from the exchanged ends (ghosts only).
       PetscScalar   *ext = ext_.data() + R - a[0];
       const PetscInt m0 = foldAll ? std::max(a[0] - R, lo_[0]) : a[0] - R, m1 = foldAll ? std::min(b[0] + R, hi_[0] + 1) : b[0] + R;
       const PetscInt o0 = std::max(m0, s[0]), o1 = std::min(m1, s[0] + n[0]);  // the owned part of [m0, m1)
       for (PetscInt t = -R; t <= R; ++t) rows_[t + R] = ext + a[0] + t;
       for (PetscInt k = a[2]; k < b[2]; ++k)
         for (PetscInt j = a[1]; j < b[1]; ++j) {
-          const PetscScalar *src   = &in[k][j][0];
-          const size_t       row   = (size_t)(((k - s[2]) * n[1] + (j - s[1])) * R);
-          auto               at    = [&](PetscInt i) {  // ends: i in [s0 - R, s0) and [s0 + n0, s0 + n0 + R)
+          const PetscScalar *src = &in[k][j][0];
+          const size_t       row = (size_t)(((k - s[2]) * n[1] + (j - s[1])) * R);
+          auto               at  = [&](PetscInt i) {  // ends: i in [s0 - R, s0) and [s0 + n0, s0 + n0 + R)
             return i < s[0] ? haloRecv_[0][row + (size_t)(i - (s[0] - R))] : i >= s[0] + n[0] ? haloRecv_[1][row + (size_t)(i - s[0] - n[0])] : src[i];
           };
           for (PetscInt i = a[0] - R; i < m0; ++i) ext[i] = at(Fold(0, i));
@@ -228,26 +227,17 @@ PetscErrorCode GaussianFilter::Apply(Vec v) {
           for (PetscInt i = m1; i < b[0] + R; ++i) ext[i] = at(Fold(0, i));
           SumShiftedRows(&out[k][j][a[0]], rows_.data(), g - R, 2 * R + 1, nx);
         }
-    } else if (!ghosts) {
-      // The source is the plain copy, laid out as v: consecutive rows are contiguous, so lines that need no
-      // folding are summed as one long row, whole x rows including any wall faces, which then get their
-      // value back from the copy (each point's sum is the same as row by row).
-      const PetscInt  sy = n[0], sz = n[0] * n[1];
-      PetscScalar    *o  = &out[s[2]][s[1]][s[0]];
+    } else if (swap) {
+      // The source is laid out as v: consecutive rows are contiguous, so lines that need no folding are summed
+      // as one long row, whole x rows (the x wall faces among them are put right below).
+      const PetscInt     sy = n[0], sz = n[0] * n[1];
+      PetscScalar       *o = &out[s[2]][s[1]][s[0]];
       const PetscScalar *c = &in[s[2]][s[1]][s[0]];
       auto line = [&](PetscInt j, PetscInt k) { return (j - s[1]) * sy + (k - s[2]) * sz; };
-      auto restoreWalls = [&](PetscInt j0, PetscInt j1, PetscInt k) {
-        for (PetscInt j = j0; j < j1; ++j) {
-          const PetscInt at = line(j, k);
-          for (PetscInt i = s[0]; i < a[0]; ++i) o[at + i - s[0]] = c[at + i - s[0]];
-          for (PetscInt i = b[0]; i < s[0] + n[0]; ++i) o[at + i - s[0]] = c[at + i - s[0]];
-        }
-      };
       for (PetscInt k = a[2]; k < b[2]; ++k) {
         if (e == 2) {  // the whole plane of lines j in [a1, b1) at once
           for (PetscInt t = -R; t <= R; ++t) rows_[t + R] = c + line(a[1], foldAll ? Fold(2, k + t) : k + t);
           SumShiftedRows(o + line(a[1], k), rows_.data(), g - R, 2 * R + 1, (b[1] - a[1]) * sy);
-          restoreWalls(a[1], b[1], k);
           continue;
         }
         // y: the lines whose taps all stay in the active range at once, the others one by one
@@ -256,7 +246,6 @@ PetscErrorCode GaussianFilter::Apply(Vec v) {
         if (j1 > j0) {
           for (PetscInt t = -R; t <= R; ++t) rows_[t + R] = c + line(j0 + t, k);
           SumShiftedRows(o + line(j0, k), rows_.data(), g - R, 2 * R + 1, (j1 - j0) * sy);
-          restoreWalls(j0, j1, k);
         } else j0 = j1 = b[1];
         for (PetscInt j = a[1]; j < b[1]; ++j) {
           if (j >= j0 && j < j1) continue;
@@ -275,9 +264,24 @@ PetscErrorCode GaussianFilter::Apply(Vec v) {
           SumShiftedRows(&out[k][j][a[0]], rows_.data(), g - R, 2 * R + 1, nx);
         }
     }
-    if (!inPlace) PetscCall(DMDAVecRestoreArrayRead(dm_, ghosts ? local_ : copy_, &in));
-    PetscCall(DMDAVecRestoreArray(dm_, v, &out));
+    if (swap) {
+      // The points the pass does not take (wall faces: whole planes, lines, the x ends of rows) keep their value.
+      for (PetscInt k = s[2]; k < s[2] + n[2]; ++k)
+        for (PetscInt j = s[1]; j < s[1] + n[1]; ++j) {
+          const PetscScalar *src = &in[k][j][0];
+          PetscScalar       *dst = &out[k][j][0];
+          if (k < a[2] || k >= b[2] || j < a[1] || j >= b[1] || nx <= 0) std::copy(src + s[0], src + s[0] + n[0], dst + s[0]);
+          else {
+            std::copy(src + s[0], src + a[0], dst + s[0]);
+            std::copy(src + b[0], src + s[0] + n[0], dst + b[0]);
+          }
+        }
+    }
+    if (!inPlace) PetscCall(DMDAVecRestoreArrayRead(dm_, ghosts ? local_ : cur, &in));
+    PetscCall(DMDAVecRestoreArray(dm_, dst, &out));
+    cur = dst;
   }
+  if (cur != v) PetscCall(VecCopy(cur, v));
   PetscCall(PetscLogEventEnd(evApply, 0, 0, 0, 0));
   PetscFunctionReturn(0);
 }
