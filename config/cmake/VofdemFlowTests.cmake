@@ -39,7 +39,7 @@ vofdem_bad_input(flow_pressure_bc     "option -flow_pressure_bc_xlo: with -physi
 # -physics dem,flow: the coupling's input (issue 7)
 set(_coupled -physics dem,flow -grid_cells 8,8,8 -grid_upper 0.01,0.01,0.01 -dem_radius 2e-4 -dem_fill_count 1 -max_steps 1)
 vofdem_bad_input(coupling_drag_unknown "option -coupling_drag: unknown name 'stokes'" ${_coupled} -coupling_drag stokes)
-vofdem_bad_input(coupling_gaussian_too_wide "option -coupling_smoothing gaussian: its taps reach 7 points, more than the 4 a rank holds along z" ${_coupled} -coupling_smoothing gaussian -coupling_kernel_min_width 2)
+vofdem_bad_input(coupling_gaussian_too_wide "option -coupling_smoothing gaussian: its taps reach 5 points, more than the 4 a rank holds along z" ${_coupled} -coupling_smoothing gaussian -coupling_kernel_min_width 2)
 vofdem_bad_input(coupling_kernel_narrow "option -coupling_kernel_min_width: 0.2 cells is below the cell size" ${_coupled} -coupling_kernel_min_width 0.2)
 vofdem_bad_input(coupling_fraction_average_unknown "option -coupling_fraction_average: unknown name 'harmonic'" ${_coupled} -coupling_fraction_average harmonic)
 vofdem_bad_input(coupling_lift_unknown "option -coupling_lift: unknown name 'saffman'" ${_coupled} -coupling_lift saffman)

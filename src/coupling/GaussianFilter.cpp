@@ -44,7 +44,10 @@ void SumShiftedRows(PetscScalar *out, const PetscScalar *const *rows, const Pets
 
 std::vector<PetscReal> GaussianFilter::Taps(PetscReal h, PetscReal spread) {
   if (!(spread > 0)) return {1.0};
-  const PetscInt         R = std::max((PetscInt)1, (PetscInt)std::ceil(4 * std::sqrt(spread) / h));
+  // Taps to 3 b: with the tent's h the deposit reaches about as far as the smooth kernel itself, whose weight ends at
+  // its cut-off rc = sqrt(13) sigma = 3.6 sigma (PHYSICS.md K1); 4 b (as before 2026-11-26) kept tails beyond that,
+  // at a third more taps. The variance is matched exactly either way.
+  const PetscInt         R = std::max((PetscInt)1, (PetscInt)std::ceil(3 * std::sqrt(spread) / h));
   std::vector<PetscReal> g(2 * R + 1);
   auto make = [&](PetscReal b) {
     PetscReal sum = 0;
@@ -57,7 +60,7 @@ std::vector<PetscReal> GaussianFilter::Taps(PetscReal h, PetscReal spread) {
     return v;
   };
   // The discrete variance grows monotonically with b, from 0 (b -> 0) to above `spread` at b = 4 sqrt(spread)
-  // (taps truncated at about one b: variance ~0.29 b^2 = 4.6 spread): bisection to round-off.
+  // (taps truncated at about 0.75 b, nearly flat: variance ~R^2 h^2/3 >= 3 spread): bisection to round-off.
   PetscReal a = 1e-6 * std::sqrt(spread), c = 4 * std::sqrt(spread);
   for (int it = 0; it < 200 && c - a > 1e-15 * c; ++it) {
     const PetscReal b = 0.5 * (a + c);

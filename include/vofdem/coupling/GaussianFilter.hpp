@@ -3,7 +3,7 @@
 // with 2 R_e + 1 taps g_t ~ exp(-(t h_e)^2 / (2 b^2)), normalised to sum 1, b chosen so that the taps'
 // discrete variance sum_t (t h_e)^2 g_t is exactly the spread asked for (variances add under
 // convolution, so tent deposit + filter has the kernel's variance to round-off, not only on average
-// over a long pseudo-time as backward Euler). R_e = ceil(4 sqrt(spread)/h_e).
+// over a long pseudo-time as backward Euler). R_e = ceil(3 sqrt(spread)/h_e) (GaussianFilter.cpp: why 3).
 // Why: at cell/d 0.5 the diffusion needs ~30 Chebyshev sweeps per pseudo-step (its spectrum grows as
 // (b/h)^2); the filter costs 3 (2R + 1) multiply-adds per point and three ghost updates, no reductions.
 // Walls: the active range of each direction (all points; for a velocity component along its own walled
