@@ -153,11 +153,13 @@ PetscErrorCode Coupling::Project() {
         const PetscScalar *er = &eps.at(s[0], j, k), *rr = &rho.at(s[0], j, k);
         PetscInt           i0 = 0, i1 = n[0];
         if (wall && d == 0) i0 = s[0] == 0 ? 1 : 0, i1 = s[0] + n[0] - 1 == last ? n[0] - 1 : n[0];
+        PetscReal sum = source[d];  // first the row's sum (same order), then the conversion, which vectorises
+        for (PetscInt i = i0; i < i1; ++i) sum -= PetscRealPart(Ar[i]);
+        source[d] = sum;
         for (PetscInt i = i0; i < i1; ++i) {
           const PetscReal eL = PetscRealPart(er[i - sd]), eR = PetscRealPart(er[i]);
           const PetscReal bL = eL / PetscRealPart(rr[i - sd]), bR = eR / PetscRealPart(rr[i]);
           const PetscReal eF = 0.5 * (eL + eR), bF = 2 * bL * bR / (bL + bR);
-          source[d] -= PetscRealPart(Ar[i]);
           Ar[i] = -PetscRealPart(Ar[i]) / (Vc * eF * eF / bF);
         }
       }

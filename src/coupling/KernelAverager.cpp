@@ -106,6 +106,42 @@ bool KernelAverager::Gather(int loc, const PetscReal x[3], PetscReal H, Points &
     q1[e] = std::min(q1[e], hi);
     if (q0[e] < gs_[loc][e] || q1[e] >= gs_[loc][e] + gm_[loc][e]) return false;
   }
+  if (linear) {
+    // The tent's 2 x 2 x 2 points (fewer at a wall): the loop below with the weights' factors computed once per
+    // direction, the same products in the same order (the tent deposit and read of the grid smoothings call
+    // this for every particle and location).
+    PetscReal f[3][2] = {{0, 0}, {0, 0}, {0, 0}};
+    for (int e = 0; e < 3; ++e)
+      for (PetscInt t = q0[e]; t <= q1[e]; ++t) f[e][t - q0[e]] = std::max(1 - std::fabs(t - s[e]), 0.0);
+    if (pts.raw.size() < 8) {
+      pts.offsets.resize(8);
+      pts.raw.resize(8);
+      pts.wall.resize(8);
+    }
+    const PetscInt sy = gm_[loc][0], sz = gm_[loc][0] * gm_[loc][1];
+    PetscReal      sumAll = 0, sumInner = 0;
+    size_t         m = 0;
+    for (PetscInt k = q0[2]; k <= q1[2]; ++k)
+      for (PetscInt j = q0[1]; j <= q1[1]; ++j) {
+        const bool     rowWall = (loc == 1 && (j == wallAt[0] || j == wallAt[1])) || (loc == 2 && (k == wallAt[0] || k == wallAt[1]));
+        const PetscInt base    = (j - gs_[loc][1]) * sy + (k - gs_[loc][2]) * sz - gs_[loc][0];
+        for (PetscInt i = q0[0]; i <= q1[0]; ++i) {
+          const PetscReal w = f[0][i - q0[0]] * f[1][j - q0[1]] * f[2][k - q0[2]];
+          if (w <= 0) continue;
+          const bool onWall = rowWall || (loc == 0 && (i == wallAt[0] || i == wallAt[1]));
+          pts.offsets[m]    = base + i;
+          pts.raw[m]        = w;
+          pts.wall[m]       = onWall;
+          ++m;
+          sumAll += w;
+          if (!onWall) sumInner += w;
+        }
+      }
+    pts.n        = m;
+    pts.sumAll   = sumAll;
+    pts.sumInner = sumInner;
+    return true;
+  }
   // Room for every point of the index box (grown once, reused: no allocation per particle).
   size_t box = 1;
   for (int e = 0; e < 3; ++e) box *= (size_t)std::max(q1[e] - q0[e] + 1, (PetscInt)0);
