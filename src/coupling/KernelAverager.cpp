@@ -45,6 +45,7 @@ PetscErrorCode KernelAverager::SetUp(const StaggeredGrid &sg, const Settings &s,
   const PetscReal reach = s.shape == kernel::Shape::Unresolved || s.shape == kernel::Shape::Linear ? hmin : maxCutoff;
   width_ = (PetscInt)std::ceil((reach + margin) / hmin) + 1;
   for (int loc = 0; loc < 4; ++loc) {
+    tent_[loc] = TentCache();  // offsets into the ghosted layout set up here
     PetscCall(Layout(loc, &dm_[loc]));
     PetscCall(DMCreateLocalVector(dm_[loc], &local_[loc]));
     PetscCall(DMDAGetGhostCorners(dm_[loc], &gs_[loc][0], &gs_[loc][1], &gs_[loc][2], &gm_[loc][0], &gm_[loc][1], &gm_[loc][2]));
@@ -225,6 +226,33 @@ bool KernelAverager::Gather(int loc, const PetscReal x[3], PetscReal H, Points &
   return true;
 }
 
+bool KernelAverager::GatherAt(int loc, PetscInt p, const PetscReal x[3], PetscReal H, Points &pts) {
+  if (settings_.shape != kernel::Shape::Linear) return Gather(loc, x, H, pts);
+  TentCache &c = tent_[loc];
+  if (c.state.size() <= (size_t)p) {
+    const size_t m = (size_t)p + 1;
+    c.key.resize(4 * m), c.state.resize(m, 0), c.n.resize(m), c.offsets.resize(8 * m), c.raw.resize(8 * m), c.wall.resize(8 * m), c.sums.resize(2 * m);
+  }
+  PetscReal *k = &c.key[4 * p];
+  if (c.state[p] && k[0] == x[0] && k[1] == x[1] && k[2] == x[2] && k[3] == H) {
+    if (c.state[p] == 2) return false;
+    if (pts.raw.size() < 8) pts.offsets.resize(8), pts.raw.resize(8), pts.wall.resize(8);
+    pts.n = (size_t)c.n[p];
+    for (size_t m = 0; m < pts.n; ++m) pts.offsets[m] = c.offsets[8 * p + m], pts.raw[m] = c.raw[8 * p + m], pts.wall[m] = c.wall[8 * p + m];
+    pts.sumAll = c.sums[2 * p], pts.sumInner = c.sums[2 * p + 1];
+    return true;
+  }
+  const bool ok = Gather(loc, x, H, pts);
+  k[0] = x[0], k[1] = x[1], k[2] = x[2], k[3] = H;
+  c.state[p] = ok ? 1 : 2;
+  if (ok) {
+    c.n[p] = (char)pts.n;
+    for (size_t m = 0; m < pts.n; ++m) c.offsets[8 * p + m] = pts.offsets[m], c.raw[8 * p + m] = pts.raw[m], c.wall[8 * p + m] = pts.wall[m];
+    c.sums[2 * p] = pts.sumAll, c.sums[2 * p + 1] = pts.sumInner;
+  }
+  return ok;
+}
+
 // The normalised weights of one use of a gather (wall faces left out when `inner`); the nearest
 // point if the kernel, narrower than the point spacing, missed every point. False if the support
 // leaves this rank's ghosted region.
@@ -291,7 +319,7 @@ PetscErrorCode KernelAverager::Deposit(int loc, PetscInt n, const PetscReal *x, 
   }
   values_.resize(nf);
   for (PetscInt p = 0; p < n; ++p) {
-    if (!Gather(loc, &x[3 * p], H[p], points_)) {
+    if (!GatherAt(loc, p, &x[3 * p], H[p], points_)) {
       ++bad;
       continue;
     }
@@ -350,7 +378,7 @@ PetscErrorCode KernelAverager::Average(int loc, PetscInt nf, const Vec field[], 
   }
   num_.resize(nf), den_.resize(nf);
   for (PetscInt p = 0; p < n; ++p) {
-    bool ok = Gather(loc, &x[3 * p], H[p], points_);
+    bool ok = GatherAt(loc, p, &x[3 * p], H[p], points_);
     const Points &pts = points_;
     if (ok && (!needAll || pts.sumAll > 0) && (!needInner || pts.sumInner > 0)) {
       // Straight from the gather, all fields in one pass over the support: each field's sums take the
