@@ -230,17 +230,19 @@ PetscErrorCode DiffusionSmoother::Average(int loc, PetscInt nf, const Vec field[
   PetscCall(Work(loc, 2 * nf));
   std::vector<Vec>  g(nf), c(nf, nullptr), source, smoothed;
   size_t            next = 0;
-  auto constant = [](Vec v, bool *is) -> PetscErrorCode {  // min == max: one pass, one reduction
+  auto constant = [](Vec v, bool *is) -> PetscErrorCode {  // min == max: one reduction; the local scan stops at the first value that differs
     const PetscScalar *a;
     PetscInt           m;
-    PetscReal          range[2] = {-PETSC_MAX_REAL, -PETSC_MAX_REAL};  // -min, max
+    PetscReal          range[2] = {-PETSC_MAX_REAL, -PETSC_MAX_REAL};  // -min, max (both MAX: not constant here)
     PetscFunctionBeginUser;
     PetscCall(VecGetLocalSize(v, &m));
     PetscCall(VecGetArrayRead(v, &a));
-    for (PetscInt k = 0; k < m; ++k) {
-      const PetscReal x = PetscRealPart(a[k]);
-      range[0]          = std::max(range[0], -x);
-      range[1]          = std::max(range[1], x);
+    if (m > 0) {
+      const PetscReal first = PetscRealPart(a[0]);
+      PetscInt        k     = 1;
+      while (k < m && PetscRealPart(a[k]) == first) ++k;
+      if (k == m) range[0] = -first, range[1] = first;
+      else range[0] = range[1] = PETSC_MAX_REAL;
     }
     PetscCall(VecRestoreArrayRead(v, &a));
     PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, range, 2, MPIU_REAL, MPIU_MAX, PetscObjectComm((PetscObject)v)));
