@@ -7,6 +7,20 @@
 
 namespace vofdem {
 
+namespace {
+
+// One point of a gather: local offset, raw weight, wall flag; the weight counted in the sums (wall faces apart).
+inline void Append(PetscInt at, PetscReal w, bool onWall, PetscInt *off, PetscReal *raw, char *wall, size_t &m, PetscReal &sumAll, PetscReal &sumInner) {
+  off[m]  = at;
+  raw[m]  = w;
+  wall[m] = onWall;
+  ++m;
+  sumAll += w;
+  if (!onWall) sumInner += w;
+}
+
+}  // namespace
+
 PetscErrorCode KernelAverager::Layout(int loc, DM *dm) const {
   const Grid     &grid = sg_->Base();
   const PetscInt *l[3];
@@ -129,13 +143,7 @@ bool KernelAverager::Gather(int loc, const PetscReal x[3], PetscReal H, Points &
         for (PetscInt i = q0[0]; i <= q1[0]; ++i) {
           const PetscReal w = f[0][i - q0[0]] * f[1][j - q0[1]] * f[2][k - q0[2]];
           if (w <= 0) continue;
-          const bool onWall = rowWall || (loc == 0 && (i == wallAt[0] || i == wallAt[1]));
-          pts.offsets[m]    = base + i;
-          pts.raw[m]        = w;
-          pts.wall[m]       = onWall;
-          ++m;
-          sumAll += w;
-          if (!onWall) sumInner += w;
+          Append(base + i, w, rowWall || (loc == 0 && (i == wallAt[0] || i == wallAt[1])), pts.offsets.data(), pts.raw.data(), pts.wall.data(), m, sumAll, sumInner);
         }
       }
     pts.n        = m;
@@ -191,13 +199,7 @@ bool KernelAverager::Gather(int loc, const PetscReal x[3], PetscReal H, Points &
           if (r2 >= rc2) continue;
           const PetscReal q = 1 - r2 * irc2, w = (q * q) * (q * q);
           if (w <= 0) continue;
-          const bool onWall = rowWall || (loc == 0 && (i == wallAt[0] || i == wallAt[1]));
-          off[m]            = base + i;
-          raw[m]            = w;
-          wall[m]           = onWall;
-          ++m;
-          sumAll += w;
-          if (!onWall) sumInner += w;
+          Append(base + i, w, rowWall || (loc == 0 && (i == wallAt[0] || i == wallAt[1])), off, raw, wall, m, sumAll, sumInner);
         }
         continue;
       }
@@ -210,13 +212,7 @@ bool KernelAverager::Gather(int loc, const PetscReal x[3], PetscReal H, Points &
           w = std::exp(-r2 * i2H2);
         }
         if (w <= 0) continue;
-        const bool onWall = rowWall || (loc == 0 && (i == wallAt[0] || i == wallAt[1]));
-        off[m]            = base + i;
-        raw[m]            = w;
-        wall[m]           = onWall;
-        ++m;
-        sumAll += w;
-        if (!onWall) sumInner += w;
+        Append(base + i, w, rowWall || (loc == 0 && (i == wallAt[0] || i == wallAt[1])), off, raw, wall, m, sumAll, sumInner);
       }
     }
   }
