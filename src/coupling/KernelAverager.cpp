@@ -222,13 +222,17 @@ bool KernelAverager::Gather(int loc, const PetscReal x[3], PetscReal H, Points &
   return true;
 }
 
+void KernelAverager::SizeTent(int loc, PetscInt n) {
+  TentCache &c = tent_[loc];
+  if (settings_.shape != kernel::Shape::Linear || c.state.size() >= (size_t)n) return;
+  const size_t m = (size_t)n;  // grown before the particle loop, not in it
+  c.key.resize(4 * m), c.state.resize(m, 0), c.n.resize(m), c.offsets.resize(8 * m), c.raw.resize(8 * m), c.wall.resize(8 * m), c.sums.resize(2 * m);
+}
+
 bool KernelAverager::GatherAt(int loc, PetscInt p, const PetscReal x[3], PetscReal H, Points &pts) {
   if (settings_.shape != kernel::Shape::Linear) return Gather(loc, x, H, pts);
   TentCache &c = tent_[loc];
-  if (c.state.size() <= (size_t)p) {
-    const size_t m = (size_t)p + 1;
-    c.key.resize(4 * m), c.state.resize(m, 0), c.n.resize(m), c.offsets.resize(8 * m), c.raw.resize(8 * m), c.wall.resize(8 * m), c.sums.resize(2 * m);
-  }
+  if (c.state.size() <= (size_t)p) SizeTent(loc, p + 1);  // callers size it first (SizeTent)
   PetscReal *k = &c.key[4 * p];
   if (c.state[p] && k[0] == x[0] && k[1] == x[1] && k[2] == x[2] && k[3] == H) {
     if (c.state[p] == 2) return false;
@@ -314,6 +318,7 @@ PetscErrorCode KernelAverager::Deposit(int loc, PetscInt n, const PetscReal *x, 
     PetscCall(VecGetArray(pool_[loc][f], &arrays_[f]));
   }
   values_.resize(nf);
+  SizeTent(loc, n);
   for (PetscInt p = 0; p < n; ++p) {
     if (!GatherAt(loc, p, &x[3 * p], H[p], points_)) {
       ++bad;
@@ -373,6 +378,7 @@ PetscErrorCode KernelAverager::Average(int loc, PetscInt nf, const Vec field[], 
     (walls[f] ? needAll : needInner) = true;
   }
   num_.resize(nf), den_.resize(nf);
+  SizeTent(loc, n);
   for (PetscInt p = 0; p < n; ++p) {
     bool ok = GatherAt(loc, p, &x[3 * p], H[p], points_);
     const Points &pts = points_;

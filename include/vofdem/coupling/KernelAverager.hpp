@@ -66,6 +66,7 @@ private:
   // the particle's x and H are those they were gathered for (a coupled step deposits and reads at the same
   // positions: one gather instead of two). Bitwise the same as Gather.
   bool           GatherAt(int loc, PetscInt p, const PetscReal x[3], PetscReal H, Points &pts);
+  void           SizeTent(int loc, PetscInt n);  // room for n particles in tent_[loc] (Linear only)
   struct TentCache {  // per particle: x, H; the gather's outcome (0 none, 1 ok, 2 failed); up to 8 points
     std::vector<PetscReal> key;     // 4 per particle
     std::vector<char>      state;
