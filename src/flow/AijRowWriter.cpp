@@ -30,6 +30,7 @@ PetscErrorCode AijRowWriter::Note(Mat A, DM da, const MatStencil &row, PetscInt 
   PetscInt               l, g;
 
   PetscFunctionBeginUser;
+  if (unsupported_) PetscFunctionReturn(0);  // the matrix type cannot be written in place: nothing to record
   if (start_.empty()) start_.assign(1, 0);
   PetscCall(MatGetLocalToGlobalMapping(A, &map, nullptr));
   PetscCall(Local(da, row, &l));
@@ -56,7 +57,7 @@ PetscErrorCode AijRowWriter::Finish(Mat A) {
   ready_ = false;
   PetscCall(PetscObjectBaseTypeCompare((PetscObject)A, MATSEQAIJ, &seq));
   PetscCall(PetscObjectBaseTypeCompare((PetscObject)A, MATMPIAIJ, &mpi));
-  if (!seq && !mpi) found = 0;
+  if (!seq && !mpi) found = 0, unsupported_ = true;
   else if (seq) blocks[0] = A;
   else PetscCall(MatMPIAIJGetSeqAIJ(A, &blocks[0], &blocks[1], &garray));
   PetscCall(MatGetOwnershipRange(A, &rstart, nullptr));

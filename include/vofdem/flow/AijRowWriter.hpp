@@ -53,6 +53,7 @@ private:
   PetscErrorCode Local(DM da, const MatStencil &s, PetscInt *local) const;
 
   bool                  ready_ = false;
+  bool                  unsupported_ = false;  // not SEQAIJ/MPIAIJ (found by Finish): Note records nothing
   std::vector<size_t>   start_;   // row r's entries: [start_[r], start_[r + 1])
   std::vector<uint64_t> shape_;   // per row
   std::vector<PetscInt> rows_;    // global row of each noted row (recording only)
