@@ -58,8 +58,8 @@ PetscErrorCode KernelAverager::SetUp(const StaggeredGrid &sg, const Settings &s,
   // linear: the two points either side.
   const PetscReal reach = s.shape == kernel::Shape::Unresolved || s.shape == kernel::Shape::Linear ? hmin : maxCutoff;
   width_ = (PetscInt)std::ceil((reach + margin) / hmin) + 1;
+  tentKey_.clear(), tentState_.clear(), tentAxes_.clear();  // the tents remembered were for another grid
   for (int loc = 0; loc < 4; ++loc) {
-    tent_[loc] = TentCache();  // offsets into the ghosted layout set up here
     PetscCall(Layout(loc, &dm_[loc]));
     PetscCall(DMCreateLocalVector(dm_[loc], &local_[loc]));
     PetscCall(DMDAGetGhostCorners(dm_[loc], &gs_[loc][0], &gs_[loc][1], &gs_[loc][2], &gm_[loc][0], &gm_[loc][1], &gm_[loc][2]));
@@ -78,19 +78,70 @@ PetscErrorCode KernelAverager::Destroy() {
   PetscFunctionReturn(0);
 }
 
+// The tent's points of location loc around x: for each direction the two points either side (clamped to
+// the box), weights the products of the directions' factors max(1 - |t - s|, 0), zero weights dropped.
+bool KernelAverager::GatherTent(int loc, const PetscReal x[3], PetscInt *off, PetscReal *raw, char *wall, size_t &m, PetscReal &sumAll, PetscReal &sumInner) const {
+  const Grid      &grid = sg_->Base();
+  const PetscReal *h = grid.Spacing();
+  PetscInt         q0[3], q1[3];
+  PetscReal        s[3], f[3][2] = {{0, 0}, {0, 0}, {0, 0}};
+  PetscInt         wallAt[2] = {-1, -1};  // the wall-face indices along loc (faces only, not periodic)
+  for (int e = 0; e < 3; ++e) {
+    const PetscInt N = sg_->Points(loc, e);
+    // Continuous index of x in the location's numbering (faces normal to e sit at integer indices).
+    s[e]        = (x[e] - grid.Lower()[e]) / h[e] - (loc == e ? 0 : 0.5);
+    PetscInt lo = 0, hi = N - 1;
+    if (grid.Periodic(e)) {
+      // A particle held by this rank may have been wrapped to the far side of the box since it last
+      // migrated: use its image nearest this rank's points.
+      const PetscReal mid = gs_[loc][e] + 0.5 * gm_[loc][e];
+      if (s[e] - mid > 0.5 * N) s[e] -= N;
+      else if (s[e] - mid < -0.5 * N) s[e] += N;
+      lo = PETSC_MIN_INT, hi = PETSC_MAX_INT;
+    } else if (loc == e) wallAt[0] = 0, wallAt[1] = N - 1;
+    const PetscInt below = (PetscInt)std::floor(s[e]);
+    q0[e] = std::max(below, lo);
+    q1[e] = std::min(below + 1, hi);
+    if (q0[e] < gs_[loc][e] || q1[e] >= gs_[loc][e] + gm_[loc][e]) return false;
+    for (PetscInt t = q0[e]; t <= q1[e]; ++t) f[e][t - q0[e]] = std::max(1 - std::fabs(t - s[e]), 0.0);
+  }
+  const PetscInt sy = gm_[loc][0], sz = gm_[loc][0] * gm_[loc][1];
+  PetscReal      all = 0, inner = 0;
+  size_t         count = 0;
+  for (PetscInt k = q0[2]; k <= q1[2]; ++k)
+    for (PetscInt j = q0[1]; j <= q1[1]; ++j) {
+      const bool     rowWall = (loc == 1 && (j == wallAt[0] || j == wallAt[1])) || (loc == 2 && (k == wallAt[0] || k == wallAt[1]));
+      const PetscInt base    = (j - gs_[loc][1]) * sy + (k - gs_[loc][2]) * sz - gs_[loc][0];
+      for (PetscInt i = q0[0]; i <= q1[0]; ++i) {
+        const PetscReal w = f[0][i - q0[0]] * f[1][j - q0[1]] * f[2][k - q0[2]];
+        if (w <= 0) continue;
+        Append(base + i, w, rowWall || (loc == 0 && (i == wallAt[0] || i == wallAt[1])), off, raw, wall, count, all, inner);
+      }
+    }
+  m = count, sumAll = all, sumInner = inner;
+  return true;
+}
+
 // The points of location loc around x with their raw kernel weights. The wall faces of the location's
 // own component are included and flagged in pts.wall (deposits and pressure-gradient averages leave
 // them out), so one gather serves both kinds of use. False if the support leaves this rank's
 // ghosted region.
 bool KernelAverager::Gather(int loc, const PetscReal x[3], PetscReal H, Points &pts) const {
+  pts.n      = 0;
+  pts.sumAll = pts.sumInner = 0;
+  if (settings_.shape == kernel::Shape::Linear) {
+    if (pts.raw.size() < 8) {
+      pts.offsets.resize(8);
+      pts.raw.resize(8);
+      pts.wall.resize(8);
+    }
+    return GatherTent(loc, x, pts.offsets.data(), pts.raw.data(), pts.wall.data(), pts.n, pts.sumAll, pts.sumInner);
+  }
   const Grid      &grid = sg_->Base();
   const PetscReal *h = grid.Spacing();
   PetscInt         q0[3], q1[3], N[3];
   PetscReal        s[3];
-  pts.n      = 0;
-  pts.sumAll = pts.sumInner = 0;
-  const bool      linear     = settings_.shape == kernel::Shape::Linear;
-  const bool      unresolved = settings_.shape == kernel::Shape::Unresolved || linear;  // no kernel of radius rc
+  const bool      unresolved = settings_.shape == kernel::Shape::Unresolved;  // no kernel of radius rc
   const PetscReal rc         = unresolved ? 0 : Cutoff(H);
   PetscInt        wallAt[2] = {-1, -1};  // the wall-face indices along loc (faces only, not periodic)
   for (int e = 0; e < 3; ++e) {
@@ -107,9 +158,7 @@ bool KernelAverager::Gather(int loc, const PetscReal x[3], PetscReal H, Points &
       else if (s[e] - mid < -0.5 * N[e]) s[e] += N[e], c += N[e];
       lo = PETSC_MIN_INT, hi = PETSC_MAX_INT;
     } else if (loc == e) wallAt[0] = 0, wallAt[1] = N[e] - 1;
-    if (linear) {
-      q0[e] = (PetscInt)std::floor(s[e]), q1[e] = q0[e] + 1;  // the two points either side
-    } else if (unresolved) {
+    if (unresolved) {
       const PetscInt cell = (PetscInt)std::floor(c);  // the containing cell
       const PetscInt cc = grid.Periodic(e) ? cell : std::min(std::max(cell, (PetscInt)0), grid.Cells()[e] - 1);
       q0[e] = cc, q1[e] = loc == e ? cc + 1 : cc;
@@ -120,36 +169,6 @@ bool KernelAverager::Gather(int loc, const PetscReal x[3], PetscReal H, Points &
     q0[e] = std::max(q0[e], lo);
     q1[e] = std::min(q1[e], hi);
     if (q0[e] < gs_[loc][e] || q1[e] >= gs_[loc][e] + gm_[loc][e]) return false;
-  }
-  if (linear) {
-    // The tent's 2 x 2 x 2 points (fewer at a wall): the loop below with the weights' factors computed once per
-    // direction, the same products in the same order (the tent deposit and read of the grid smoothings call
-    // this for every particle and location).
-    PetscReal f[3][2] = {{0, 0}, {0, 0}, {0, 0}};
-    for (int e = 0; e < 3; ++e)
-      for (PetscInt t = q0[e]; t <= q1[e]; ++t) f[e][t - q0[e]] = std::max(1 - std::fabs(t - s[e]), 0.0);
-    if (pts.raw.size() < 8) {
-      pts.offsets.resize(8);
-      pts.raw.resize(8);
-      pts.wall.resize(8);
-    }
-    const PetscInt sy = gm_[loc][0], sz = gm_[loc][0] * gm_[loc][1];
-    PetscReal      sumAll = 0, sumInner = 0;
-    size_t         m = 0;
-    for (PetscInt k = q0[2]; k <= q1[2]; ++k)
-      for (PetscInt j = q0[1]; j <= q1[1]; ++j) {
-        const bool     rowWall = (loc == 1 && (j == wallAt[0] || j == wallAt[1])) || (loc == 2 && (k == wallAt[0] || k == wallAt[1]));
-        const PetscInt base    = (j - gs_[loc][1]) * sy + (k - gs_[loc][2]) * sz - gs_[loc][0];
-        for (PetscInt i = q0[0]; i <= q1[0]; ++i) {
-          const PetscReal w = f[0][i - q0[0]] * f[1][j - q0[1]] * f[2][k - q0[2]];
-          if (w <= 0) continue;
-          Append(base + i, w, rowWall || (loc == 0 && (i == wallAt[0] || i == wallAt[1])), pts.offsets.data(), pts.raw.data(), pts.wall.data(), m, sumAll, sumInner);
-        }
-      }
-    pts.n        = m;
-    pts.sumAll   = sumAll;
-    pts.sumInner = sumInner;
-    return true;
   }
   // Room for every point of the index box (grown once, reused: no allocation per particle).
   size_t box = 1;
@@ -205,8 +224,7 @@ bool KernelAverager::Gather(int loc, const PetscReal x[3], PetscReal H, Points &
       }
       for (PetscInt i = i0; i <= i1; ++i) {
         PetscReal w = 1;
-        if (linear) w = std::max(1 - std::fabs(i - s[0]), 0.0) * std::max(1 - std::fabs(j - s[1]), 0.0) * std::max(1 - std::fabs(k - s[2]), 0.0);
-        else if (!unresolved) {
+        if (!unresolved) {
           const PetscReal r2 = dx2[i] + yz;
           if (r2 >= rc2) continue;
           w = std::exp(-r2 * i2H2);
@@ -222,49 +240,28 @@ bool KernelAverager::Gather(int loc, const PetscReal x[3], PetscReal H, Points &
   return true;
 }
 
-void KernelAverager::SizeTent(int loc, PetscInt n) {
-  TentCache &c = tent_[loc];
-  if (settings_.shape != kernel::Shape::Linear || c.state.size() >= (size_t)n) return;
-  const size_t m = (size_t)n;  // grown before the particle loop, not in it
-  c.key.resize(4 * m), c.state.resize(m, 0), c.n.resize(m), c.offsets.resize(8 * m), c.raw.resize(8 * m), c.wall.resize(8 * m), c.sums.resize(2 * m);
+bool KernelAverager::Support(int loc, const PetscReal x[3], PetscReal H, bool needAll, bool needInner, Span &span) {
+  if (!Gather(loc, x, H, points_)) return false;
+  const Points &pts = points_;
+  if (wAll_.size() < pts.n) wAll_.resize(pts.raw.size()), wInner_.resize(pts.raw.size());
+  if (needAll && pts.sumAll > 0)
+    for (size_t k = 0; k < pts.n; ++k) wAll_[k] = pts.raw[k] / pts.sumAll;
+  if (needInner && pts.sumInner > 0)
+    for (size_t k = 0; k < pts.n; ++k) wInner_[k] = pts.wall[k] ? 0 : pts.raw[k] / pts.sumInner;
+  span.offsets = pts.offsets.data(), span.wAll = wAll_.data(), span.wInner = wInner_.data(), span.wall = pts.wall.data();
+  span.n = pts.n, span.sumAll = pts.sumAll, span.sumInner = pts.sumInner;
+  return true;
 }
 
-bool KernelAverager::GatherAt(int loc, PetscInt p, const PetscReal x[3], PetscReal H, Points &pts) {
-  if (settings_.shape != kernel::Shape::Linear) return Gather(loc, x, H, pts);
-  TentCache &c = tent_[loc];
-  if (c.state.size() <= (size_t)p) SizeTent(loc, p + 1);  // callers size it first (SizeTent)
-  PetscReal *k = &c.key[4 * p];
-  if (c.state[p] && k[0] == x[0] && k[1] == x[1] && k[2] == x[2] && k[3] == H) {
-    if (c.state[p] == 2) return false;
-    if (pts.raw.size() < 8) pts.offsets.resize(8), pts.raw.resize(8), pts.wall.resize(8);
-    pts.n = (size_t)c.n[p];
-    for (size_t m = 0; m < pts.n; ++m) pts.offsets[m] = c.offsets[8 * p + m], pts.raw[m] = c.raw[8 * p + m], pts.wall[m] = c.wall[8 * p + m];
-    pts.sumAll = c.sums[2 * p], pts.sumInner = c.sums[2 * p + 1];
-    return true;
-  }
-  const bool ok = Gather(loc, x, H, pts);
-  k[0] = x[0], k[1] = x[1], k[2] = x[2], k[3] = H;
-  c.state[p] = ok ? 1 : 2;
-  if (ok) {
-    c.n[p] = (char)pts.n;
-    for (size_t m = 0; m < pts.n; ++m) c.offsets[8 * p + m] = pts.offsets[m], c.raw[8 * p + m] = pts.raw[m], c.wall[8 * p + m] = pts.wall[m];
-    c.sums[2 * p] = pts.sumAll, c.sums[2 * p + 1] = pts.sumInner;
-  }
-  return ok;
-}
-
-// The normalised weights of one use of a gather (wall faces left out when `inner`); the nearest
-// point if the kernel, narrower than the point spacing, missed every point. False if the support
-// leaves this rank's ghosted region.
-bool KernelAverager::Normalise(int loc, const PetscReal x[3], const Points &pts, bool inner, std::vector<PetscInt> &offsets, std::vector<PetscReal> &weights) const {
+bool KernelAverager::Normalise(int loc, const PetscReal x[3], const Span &span, bool inner, std::vector<PetscInt> &offsets, std::vector<PetscReal> &weights) const {
   offsets.clear();
   weights.clear();
-  const PetscReal sum = inner ? pts.sumInner : pts.sumAll;
+  const PetscReal sum = inner ? span.sumInner : span.sumAll;
   if (sum > 0) {
-    for (size_t k = 0; k < pts.n; ++k) {
-      if (inner && pts.wall[k]) continue;
-      offsets.push_back(pts.offsets[k]);
-      weights.push_back(pts.raw[k] / sum);
+    for (size_t k = 0; k < span.n; ++k) {
+      if (inner && span.wall[k]) continue;
+      offsets.push_back(span.offsets[k]);
+      weights.push_back(inner ? span.wInner[k] : span.wAll[k]);
     }
     return true;
   }
@@ -318,25 +315,46 @@ PetscErrorCode KernelAverager::Deposit(int loc, PetscInt n, const PetscReal *x, 
     PetscCall(VecGetArray(pool_[loc][f], &arrays_[f]));
   }
   values_.resize(nf);
-  SizeTent(loc, n);
+  const bool tent = settings_.shape == kernel::Shape::Linear;
+  if (tent) SizeTent(n);
   for (PetscInt p = 0; p < n; ++p) {
-    if (!GatherAt(loc, p, &x[3 * p], H[p], points_)) {
+    if (tent) {
+      TentSpan t;
+      if (!TentAt(loc, p, &x[3 * p], t)) {
+        ++bad;
+        continue;
+      }
+      if (t.okInner) {  // all fields in one pass over the tent's points, wall faces left out
+        for (PetscInt f = 0; f < nf; ++f) values_[f] = value[f][p * stride];
+        for (PetscInt c = 0; c < t.n[2]; ++c)
+          for (PetscInt b = 0; b < t.n[1]; ++b) {
+            const PetscReal wyz = t.gi[1][b] * t.gi[2][c];
+            const PetscInt  o   = t.base + b * t.stride[1] + c * t.stride[2];
+            for (PetscInt a = 0; a < t.n[0]; ++a) {
+              const PetscReal w = t.gi[0][a] * wyz;
+              if (w == 0) continue;
+              for (PetscInt f = 0; f < nf; ++f) arrays_[f][o + a] += values_[f] * w;
+            }
+          }
+        continue;
+      }
+    }
+    Span sp;
+    if (!Support(loc, &x[3 * p], H[p], false, true, sp)) {
       ++bad;
       continue;
     }
     for (PetscInt f = 0; f < nf; ++f) values_[f] = value[f][p * stride];
-    const Points &pts = points_;
-    if (pts.sumInner > 0) {  // straight from the gather, all fields in one pass (the same sums as through Normalise)
-      const PetscReal sum = pts.sumInner;
-      for (size_t k = 0; k < pts.n; ++k) {
-        if (pts.wall[k]) continue;
-        const PetscReal w = pts.raw[k] / sum;
-        const PetscInt  o = pts.offsets[k];
+    if (sp.sumInner > 0) {  // all fields in one pass over the support
+      for (size_t k = 0; k < sp.n; ++k) {
+        if (sp.wall[k]) continue;
+        const PetscReal w = sp.wInner[k];
+        const PetscInt  o = sp.offsets[k];
         for (PetscInt f = 0; f < nf; ++f) arrays_[f][o] += values_[f] * w;
       }
       continue;
     }
-    if (!Normalise(loc, &x[3 * p], pts, true, offsets_, weights_)) {  // the kernel missed every point: the nearest
+    if (!Normalise(loc, &x[3 * p], sp, true, offsets_, weights_)) {  // the kernel missed every point: the nearest
       ++bad;
       continue;
     }
@@ -377,33 +395,68 @@ PetscErrorCode KernelAverager::Average(int loc, PetscInt nf, const Vec field[], 
     }
     (walls[f] ? needAll : needInner) = true;
   }
-  num_.resize(nf), den_.resize(nf);
-  SizeTent(loc, n);
+  const bool tent = settings_.shape == kernel::Shape::Linear;
+  if (tent) SizeTent(n);
   for (PetscInt p = 0; p < n; ++p) {
-    bool ok = GatherAt(loc, p, &x[3 * p], H[p], points_);
-    const Points &pts = points_;
-    if (ok && (!needAll || pts.sumAll > 0) && (!needInner || pts.sumInner > 0)) {
-      // Straight from the gather, all fields in one pass over the support: each field's sums take the
-      // same terms in the same order as through Normalise (bitwise the same result).
-      const PetscReal sumAll = needAll ? pts.sumAll : 1, sumInner = needInner ? pts.sumInner : 1;
-      for (PetscInt f = 0; f < nf; ++f) num_[f] = den_[f] = 0;
-      for (size_t k = 0; k < pts.n; ++k) {
-        const PetscInt  o = pts.offsets[k];
-        const bool      onWall = pts.wall[k];
-        const PetscReal wAll = pts.raw[k] / sumAll, wInner = onWall ? 0 : pts.raw[k] / sumInner;
-        for (PetscInt f = 0; f < nf; ++f) {
-          if (onWall && !walls[f]) continue;
-          const PetscScalar *g = arrays_[f], *c = arrays_[nf + f];
-          const PetscReal    w = walls[f] ? wAll : wInner, wk = c ? w * PetscRealPart(c[o]) : w;
-          num_[f] += wk * PetscRealPart(g[o]);
-          den_[f] += wk;
-        }
+    if (tent) {
+      TentSpan t;
+      if (!TentAt(loc, p, &x[3 * p], t)) {
+        ++bad;
+        for (PetscInt f = 0; f < nf; ++f) out[f][p * stride] = 0;
+        continue;
       }
-      for (PetscInt f = 0; f < nf; ++f) out[f][p * stride] = den_[f] > 0 ? num_[f] / den_[f] : 0;
+      if ((!needAll || t.okAll) && (!needInner || t.okInner)) {  // field by field over the tent's points
+        for (PetscInt f = 0; f < nf; ++f) {
+          const PetscScalar *gv = arrays_[f], *c = arrays_[nf + f];
+          const PetscReal(*gw)[2] = walls[f] ? t.g : t.gi;
+          PetscReal num = 0, den = 0;
+          for (PetscInt k = 0; k < t.n[2]; ++k)
+            for (PetscInt j = 0; j < t.n[1]; ++j) {
+              const PetscReal wyz = gw[1][j] * gw[2][k];
+              const PetscInt  o   = t.base + j * t.stride[1] + k * t.stride[2];
+              for (PetscInt i = 0; i < t.n[0]; ++i) {
+                const PetscReal w = gw[0][i] * wyz;
+                if (w == 0) continue;
+                const PetscReal wk = c ? w * PetscRealPart(c[o + i]) : w;
+                num += wk * PetscRealPart(gv[o + i]);
+                den += wk;
+              }
+            }
+          out[f][p * stride] = den > 0 ? num / den : 0;
+        }
+        continue;
+      }
+    }
+    Span sp;
+    bool ok = Support(loc, &x[3 * p], H[p], needAll, needInner, sp);
+    if (ok && (!needAll || sp.sumAll > 0) && (!needInner || sp.sumInner > 0)) {
+      // Field by field, the sums in registers; each field's sums take the same terms in the same order as
+      // through Normalise below.
+      for (PetscInt f = 0; f < nf; ++f) {
+        const PetscScalar *g = arrays_[f], *c = arrays_[nf + f];
+        PetscReal          num = 0, den = 0;
+        if (walls[f]) {
+          for (size_t k = 0; k < sp.n; ++k) {
+            const PetscInt  o  = sp.offsets[k];
+            const PetscReal wk = c ? sp.wAll[k] * PetscRealPart(c[o]) : sp.wAll[k];
+            num += wk * PetscRealPart(g[o]);
+            den += wk;
+          }
+        } else {
+          for (size_t k = 0; k < sp.n; ++k) {
+            if (sp.wall[k]) continue;
+            const PetscInt  o  = sp.offsets[k];
+            const PetscReal wk = c ? sp.wInner[k] * PetscRealPart(c[o]) : sp.wInner[k];
+            num += wk * PetscRealPart(g[o]);
+            den += wk;
+          }
+        }
+        out[f][p * stride] = den > 0 ? num / den : 0;
+      }
       continue;
     }
-    if (ok && needAll) ok = Normalise(loc, &x[3 * p], points_, false, offsets_, weights_);
-    if (ok && needInner) ok = Normalise(loc, &x[3 * p], points_, true, offsetsInner_, weightsInner_);
+    if (ok && needAll) ok = Normalise(loc, &x[3 * p], sp, false, offsets_, weights_);
+    if (ok && needInner) ok = Normalise(loc, &x[3 * p], sp, true, offsetsInner_, weightsInner_);
     if (!ok) {
       ++bad;
       for (PetscInt f = 0; f < nf; ++f) out[f][p * stride] = 0;

@@ -61,23 +61,52 @@ private:
     size_t                 n      = 0;
     PetscReal              sumAll = 0, sumInner = 0;
   };
-  bool           Gather(int loc, const PetscReal x[3], PetscReal H, Points &pts) const;
-  // Gather for particle p; the tent's points (Linear) are remembered per location and particle and reused while
-  // the particle's x and H are those they were gathered for (a coupled step deposits and reads at the same
-  // positions: one gather instead of two). Bitwise the same as Gather.
-  bool           GatherAt(int loc, PetscInt p, const PetscReal x[3], PetscReal H, Points &pts);
-  void           SizeTent(int loc, PetscInt n);  // room for n particles in tent_[loc] (Linear only)
-  struct TentCache {  // per particle: x, H; the gather's outcome (0 none, 1 ok, 2 failed); up to 8 points
-    std::vector<PetscReal> key;     // 4 per particle
-    std::vector<char>      state;
-    std::vector<char>      n;
-    std::vector<PetscInt>  offsets;  // 8 per particle
-    std::vector<PetscReal> raw;      // 8 per particle
-    std::vector<char>      wall;     // 8 per particle
-    std::vector<PetscReal> sums;     // sumAll, sumInner
+  bool Gather(int loc, const PetscReal x[3], PetscReal H, Points &pts) const;
+  // The tent's (Linear) 2 x 2 x 2 points (fewer at the box's faces) with their raw weights, written to
+  // off/raw/wall; false if they leave this rank's ghosted region (the generic path, Gather).
+  bool GatherTent(int loc, const PetscReal x[3], PetscInt *off, PetscReal *raw, char *wall, size_t &m, PetscReal &sumAll, PetscReal &sumInner) const;
+  // A support as the generic Deposit and Average loops read it: local offsets, wall-face flags, and the
+  // weights normalised over all points (wAll = raw/sumAll) and over the points off the wall faces (wInner =
+  // raw/sumInner, 0 on a wall face).
+  struct Span {
+    const PetscInt  *offsets = nullptr;
+    const PetscReal *wAll = nullptr, *wInner = nullptr;
+    const char      *wall = nullptr;
+    size_t           n      = 0;
+    PetscReal        sumAll = 0, sumInner = 0;
   };
-  TentCache tent_[4];
-  bool           Normalise(int loc, const PetscReal x[3], const Points &pts, bool inner, std::vector<PetscInt> &offsets, std::vector<PetscReal> &weights) const;
+  // Gather into points_ and the weights asked for (needAll, needInner; with a sum of zero none) into wAll_, wInner_.
+  bool Support(int loc, const PetscReal x[3], PetscReal H, bool needAll, bool needInner, Span &span);
+  // The tent (Linear) of particle p on location loc, separable (KernelAveragerTent.cpp): per direction one or
+  // two points and their factors normalised per direction, so that the weights g_x g_y g_z sum to one over the
+  // points that take part (a tent's weight sum factorises: the same normalisation as the generic path's, K3,
+  // to round-off), and the same with the wall faces of the location's own direction left out (deposits,
+  // pressure-gradient reads). The directions' indices and factors are remembered per particle for all four
+  // locations while x is the same (a coupled step deposits and reads at the same positions). False if the tent
+  // leaves the ghosted region; okAll/okInner false when a normalisation has nothing to share (then the generic
+  // path's nearest-point rule applies).
+  struct TentSpan {
+    PetscInt  base;        // local offset of the lowest point
+    PetscInt  n[3];        // points per direction
+    PetscInt  stride[3];   // local offset steps per direction
+    PetscReal g[3][2];     // factors, all points
+    PetscReal gi[3][2];    // factors, the own direction's wall faces left out
+    bool      okAll, okInner;
+  };
+  struct TentAxes {  // per direction e and numbering v (0 cells, 1 faces normal to e)
+    PetscReal s[3][2];        // x's continuous index
+    PetscInt  below[3][2];    // the index below it
+    PetscReal g[3][2][2];     // the factors of the points below and above, normalised
+  };
+  void TentAxesAt(const PetscReal x[3], TentAxes &a) const;
+  bool TentAt(int loc, PetscInt p, const PetscReal x[3], TentSpan &t);
+  void SizeTent(PetscInt n);  // room for n particles in the tent cache (Linear only)
+  std::vector<PetscReal> tentKey_;    // x per particle, 3
+  std::vector<char>      tentState_;  // 0 none, 1 remembered
+  std::vector<TentAxes>  tentAxes_;
+  // The normalised weights of one use of a support (wall faces left out when `inner`); the nearest point if
+  // the kernel, narrower than the point spacing, missed every point. False if that leaves the ghosted region.
+  bool Normalise(int loc, const PetscReal x[3], const Span &span, bool inner, std::vector<PetscInt> &offsets, std::vector<PetscReal> &weights) const;
   PetscErrorCode LocalVectors(int loc, size_t count);
   PetscErrorCode Layout(int loc, DM *dm) const;
 
@@ -91,8 +120,9 @@ private:
   Points                     points_;  // scratch, reused: no allocation per particle
   std::vector<PetscInt>      offsets_, offsetsInner_;
   std::vector<PetscReal>     weights_, weightsInner_;
+  std::vector<PetscReal>     wAll_, wInner_;  // normalised weights of a non-tent support (Support)
   std::vector<PetscScalar *> arrays_;
-  std::vector<PetscReal>     values_, num_, den_;  // per field, reused
+  std::vector<PetscReal>     values_;  // per field, reused
 };
 
 }  // namespace vofdem
