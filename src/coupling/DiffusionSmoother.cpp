@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
 
 namespace vofdem {
 
@@ -230,7 +231,7 @@ PetscErrorCode DiffusionSmoother::Average(int loc, PetscInt nf, const Vec field[
   PetscCall(Work(loc, 2 * nf));
   std::vector<Vec>  g(nf), c(nf, nullptr), source, smoothed;
   size_t            next = 0;
-  auto constant = [](Vec v, bool *is) -> PetscErrorCode {  // min == max: one reduction; the local scan stops at the first value that differs
+  auto constant = [](Vec v, bool *is, PetscReal *value) -> PetscErrorCode {  // min == max: one reduction; the local scan stops at the first value that differs
     const PetscScalar *a;
     PetscInt           m;
     PetscReal          range[2] = {-PETSC_MAX_REAL, -PETSC_MAX_REAL};  // -min, max (both MAX: not constant here)
@@ -247,6 +248,7 @@ PetscErrorCode DiffusionSmoother::Average(int loc, PetscInt nf, const Vec field[
     PetscCall(VecRestoreArrayRead(v, &a));
     PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, range, 2, MPIU_REAL, MPIU_MAX, PetscObjectComm((PetscObject)v)));
     *is = -range[0] == range[1];
+    if (value) *value = range[1];
     PetscFunctionReturn(0);
   };
   auto smooth = [&](Vec v, Vec *s) -> PetscErrorCode {  // S(v), once per vector
@@ -262,16 +264,24 @@ PetscErrorCode DiffusionSmoother::Average(int loc, PetscInt nf, const Vec field[
     source.push_back(v), smoothed.push_back(*s);
     PetscFunctionReturn(0);
   };
+  // A constant field reads as its value at every particle (any weighted mean of a constant is the constant):
+  // no smoothing, no ghost update, no particle loop for it.
+  std::vector<Vec>         keepField, keepWeight;
+  std::vector<PetscReal *> keepOut;
+  std::vector<bool>        keepWalls;
   for (PetscInt f = 0; f < nf; ++f) {
-    bool fieldConstant = false, weightConstant = true;
-    PetscCall(constant(field[f], &fieldConstant));
-    if (weight[f] && !fieldConstant) PetscCall(constant(weight[f], &weightConstant));
+    bool      fieldConstant = false, weightConstant = true;
+    PetscReal value         = 0;
+    PetscCall(constant(field[f], &fieldConstant, &value));
     if (fieldConstant) {
-      g[f] = field[f];
+      for (PetscInt p = 0; p < n; ++p) out[f][p * stride] = value;
       continue;
     }
+    if (weight[f]) PetscCall(constant(weight[f], &weightConstant, nullptr));
+    keepOut.push_back(out[f]), keepWalls.push_back(walls[f]);
     if (weightConstant) {
       PetscCall(smooth(field[f], &g[f]));
+      keepField.push_back(g[f]), keepWeight.push_back(nullptr);
       continue;
     }
     PetscCall(smooth(weight[f], &c[f]));
@@ -287,8 +297,13 @@ PetscErrorCode DiffusionSmoother::Average(int loc, PetscInt nf, const Vec field[
     for (PetscInt k = 0; k < m; ++k) ga[k] = PetscRealPart(ca[k]) != 0 ? ga[k] / ca[k] : 0;
     PetscCall(VecRestoreArrayRead(c[f], &ca));
     PetscCall(VecRestoreArray(g[f], &ga));
+    keepField.push_back(g[f]), keepWeight.push_back(c[f]);
   }
-  PetscCall(compact_.Average(loc, nf, g.data(), c.data(), walls, n, x, H, out, stride));
+  if (keepField.empty()) PetscFunctionReturn(0);
+  const PetscInt          nk = (PetscInt)keepField.size();
+  std::unique_ptr<bool[]> w(new bool[nk]);
+  for (PetscInt f = 0; f < nk; ++f) w[f] = keepWalls[f];
+  PetscCall(compact_.Average(loc, nk, keepField.data(), keepWeight.data(), w.get(), n, x, H, keepOut.data(), stride));
   PetscFunctionReturn(0);
 }
 
