@@ -15,3 +15,6 @@ vofdem_bad_input(clump_spheres_not_4    "option -dem_clump_rock_spheres: 7 numbe
 vofdem_bad_input(clump_base_first       "option -dem_clump_rock_spheres: the first sphere is the base sphere, 0,0,0,1" ${_clumpsrc} -dem_clump_templates rock -dem_clump_rock_spheres 0.1,0,0,1,0.5,0,0,0.5 -dem_insert_a_clumps rock)
 vofdem_bad_input(clump_template_missing "option -dem_clump_rock_spheres: needed for the template 'rock'" ${_clumpsrc} -dem_clump_templates rock)
 vofdem_bad_input(clump_builtin_name     "option -dem_clump_templates: 'regolith2' is a built-in template" ${_clumpsrc} -dem_clump_templates regolith2 -dem_clump_regolith2_spheres 0,0,0,1,0.5,0,0,0.5)
+# Particles files across a periodic face: spheres wrapped in, a clump across the face read as one body.
+add_test(NAME clumps/periodic_file COMMAND ${VOFDEM_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/test/clumps/test_periodic_file.py $<TARGET_FILE:vofdem_app>)
+set_tests_properties(clumps/periodic_file PROPERTIES LABELS "quick;clumps" PROCESSORS 2 TIMEOUT 300)

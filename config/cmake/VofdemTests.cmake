@@ -67,6 +67,7 @@ vofdem_bad_input(output_dir         "option -output_dir: cannot create"         
 vofdem_bad_input(particles_missing  "option -dem_particles_file: cannot open"      ${_dem} -dem_particles_file ${_bad}/none.csv)
 vofdem_bad_input(particles_malformed "particles-malformed\\.csv:3: expected 6 comma-separated numbers, as the header names" ${_dem} -dem_radius 1e-3 -dem_particles_file ${_bad}/particles-malformed.csv)
 vofdem_bad_input(particle_outside   "particles-outside\\.csv:2: the particle at .* is not inside the box" ${_dem} -dem_radius 1e-3 -dem_particles_file ${_bad}/particles-outside.csv)
+vofdem_bad_input(particle_far_periodic "particles-periodic-far\\.csv:2: the particle at .* lies more than its radius outside the periodic box along x" ${_dem} -grid_periodic x -dem_radius 1e-3 -dem_particles_file ${_bad}/particles-periodic-far.csv)
 vofdem_bad_input(particles_column   "particles-unknown-column\\.csv:1: unknown column .colour." ${_dem} -dem_radius 1e-3 -dem_particles_file ${_bad}/particles-unknown-column.csv)
 vofdem_bad_input(fill_fractions     "option -dem_fill_mass_fractions: 1 fractions for 2 radii" ${_dem} -dem_fill_radii 1e-3,5e-4 -dem_fill_mass_fractions 1)
 vofdem_bad_input(jkr_without_energy "option -dem_cohesion jkr needs a surface energy > 0 for every type \\(-dem_surface_energy" ${_dem} -dem_cohesion jkr)

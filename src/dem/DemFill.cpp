@@ -185,6 +185,7 @@ PetscErrorCode Dem::ReadParticles() {
     if (std::find(column.begin(), column.end(), q) == column.end())
       VofdemInputError(comm_, "%s:1: the header must name the columns x, y and z", particlesFile_.c_str());
   std::vector<std::array<PetscReal, kCols>> rows;
+  std::vector<int>                          lines;  // the file's line of each row
   for (int lineNo = 2; std::getline(in, line); ++lineNo) {
     if (line.find_first_not_of(" \t\r") == std::string::npos) continue;
     std::array<PetscReal, kCols> r{};
@@ -202,20 +203,47 @@ PetscErrorCode Dem::ReadParticles() {
     if (!(r[11] >= -1 && r[11] == std::floor(r[11]))) VofdemInputError(comm_, "%s:%d: the clump must be an integer id >= 0 (or -1: none)", particlesFile_.c_str(), lineNo);
     if (!(r[10] >= 0 && r[10] < (PetscReal)types_.size() && r[10] == std::floor(r[10])))
       VofdemInputError(comm_, "%s:%d: the type must be an index into -dem_types, 0 to %d", particlesFile_.c_str(), lineNo, (int)types_.size() - 1);
-    // A settled particle rests with a small overlap on a wall: accept up to 5 % of the radius. Along a
-    // periodic direction there is no wall: the centre must lie in the box.
-    const PetscReal inside = 0.95 * r[9];
-    for (int d = 0; d < 3; ++d)
-      if (grid_->Periodic(d) ? (r[d] < grid_->Lower()[d] || r[d] >= grid_->Upper()[d]) : (r[d] - inside < grid_->Lower()[d] || r[d] + inside > grid_->Upper()[d]))
-        VofdemInputError(comm_, "%s:%d: the particle at (%g, %g, %g) m with radius %g m is not inside the box (or overlaps a wall by more than 5 %% of its radius)",
-                         particlesFile_.c_str(), lineNo, (double)r[0], (double)r[1], (double)r[2], (double)r[9]);
     rows.push_back(r);
+    lines.push_back(lineNo);
   }
-  PetscInt first, local = 0, start;
   // The spheres of a clump (P10) start on one rank: the owner of its first sphere (lowest id).
   std::map<PetscReal, size_t> firstOfClump;
   for (size_t k = 0; k < rows.size(); ++k)
     if (rows[k][11] >= 0) firstOfClump.emplace(rows[k][11], k);
+  // A settled particle rests with a small overlap on a wall: accept up to 5 % of the radius. Along a periodic
+  // direction there is no wall: a centre up to a radius outside the box (a particle that crossed the face since
+  // the run that wrote the file last wrapped it) is wrapped in; a clump's other spheres are placed at their
+  // image nearest its first sphere, so that the clump is one body (they may stick out of the box, as in a run).
+  for (size_t k = 0; k < rows.size(); ++k) {
+    auto          &r    = rows[k];
+    const bool     lead = r[11] < 0 || firstOfClump[r[11]] == k;
+    for (int d = 0; d < 3; ++d) {
+      const PetscReal lo = grid_->Lower()[d], hi = grid_->Upper()[d], L = hi - lo;
+      bool            ok = true;
+      if (!grid_->Periodic(d)) ok = r[d] - 0.95 * r[9] >= lo && r[d] + 0.95 * r[9] <= hi;
+      else if (lead) {
+        ok = r[d] >= lo - r[9] && r[d] <= hi + r[9];
+        if (r[d] < lo) r[d] += L;
+        else if (r[d] > hi) r[d] -= L;
+      }
+      if (!ok && grid_->Periodic(d))
+        VofdemInputError(comm_, "%s:%d: the particle at (%g, %g, %g) m with radius %g m lies more than its radius outside the periodic box along %c",
+                         particlesFile_.c_str(), lines[k], (double)r[0], (double)r[1], (double)r[2], (double)r[9], "xyz"[d]);
+      if (!ok)
+        VofdemInputError(comm_, "%s:%d: the particle at (%g, %g, %g) m with radius %g m is not inside the box (or overlaps a wall by more than 5 %% of its radius)",
+                         particlesFile_.c_str(), lines[k], (double)r[0], (double)r[1], (double)r[2], (double)r[9]);
+    }
+  }
+  for (size_t k = 0; k < rows.size(); ++k) {
+    if (rows[k][11] < 0 || firstOfClump[rows[k][11]] == k) continue;
+    const auto &lead = rows[firstOfClump[rows[k][11]]];
+    for (int d = 0; d < 3; ++d)
+      if (grid_->Periodic(d)) {
+        const PetscReal L = grid_->Upper()[d] - grid_->Lower()[d];
+        rows[k][d] -= L * std::round((rows[k][d] - lead[d]) / L);
+      }
+  }
+  PetscInt first, local = 0, start;
   auto owned = [&](const std::array<PetscReal, kCols> &r) { return grid_->OwnsPoint(r[11] >= 0 ? rows[firstOfClump[r[11]]].data() : r.data()); };
   for (const auto &r : rows) local += owned(r);
   PetscCall(swarm_.GlobalCount(&start));
@@ -259,6 +287,15 @@ PetscErrorCode Dem::SaveParticles(const std::string &path) const {
   for (PetscInt p = 0; p < a.n; ++p) {
     mine[W * p] = (PetscReal)a.id[p];
     for (int d = 0; d < 3; ++d) mine[W * p + 1 + d] = a.x[3 * p + d], mine[W * p + 4 + d] = a.v[3 * p + d], mine[W * p + 7 + d] = a.omega[3 * p + d];
+    // Along a periodic direction a particle may have crossed the face since the last wrap (Dem::Rebuild): the
+    // file holds its image in the box, as the run would after the next wrap (ReadParticles joins clumps again).
+    for (int d = 0; d < 3; ++d)
+      if (grid_->Periodic(d)) {
+        const PetscReal lo = grid_->Lower()[d], hi = grid_->Upper()[d];
+        PetscReal      &c  = mine[W * p + 1 + d];
+        if (c < lo) c += hi - lo;
+        else if (c > hi) c -= hi - lo;
+      }
     mine[W * p + 10] = a.radius[p];
     mine[W * p + 11] = (PetscReal)a.type[p];
     mine[W * p + 12] = (PetscReal)a.clump[p];
