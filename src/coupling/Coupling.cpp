@@ -142,6 +142,8 @@ PetscErrorCode Coupling::SetUp(Flow &flow, Dem &dem) {
     PetscCall(VecDuplicate(faceEps_[d], &gradP_[d]));
     PetscCall(VecDuplicate(faceEps_[d], &accel_[d]));
     PetscCall(VecSet(accel_[d], 0));
+    PetscCall(VecDuplicate(faceEps_[d], &wallForce_[d]));
+    PetscCall(VecSet(wallForce_[d], 0));
     if (Rotation()) {
       for (Vec &g : gradU_[d]) PetscCall(VecDuplicate(faceEps_[d], &g));
       PetscCall(DMCreateLocalVector(sg.Face(d), &faceLocal_[d]));
@@ -239,7 +241,7 @@ PetscErrorCode Coupling::Destroy() {
   if (flow_) flow_->SetFaceRelaxation(nullptr, nullptr);
   if (flow_) flow_->SetFluidFractionChange(nullptr);
   for (int d = 0; d < 3; ++d)
-    for (Vec *v : {&faceEps_[d], &gradP_[d], &accel_[d], &rate_[d], &target_[d], &gradAlpha_[d], &massWork_[d]}) PetscCall(VecDestroy(v));
+    for (Vec *v : {&faceEps_[d], &gradP_[d], &accel_[d], &rate_[d], &target_[d], &gradAlpha_[d], &massWork_[d], &wallForce_[d]}) PetscCall(VecDestroy(v));
   for (int d = 0; d < 3; ++d)
     for (Vec *v : {&gradU_[d][0], &gradU_[d][1], &faceLocal_[d]}) PetscCall(VecDestroy(v));
   for (Vec *v : {&cellLocal_, &rhoLocal_, &volume_, &epsChange_}) PetscCall(VecDestroy(v));

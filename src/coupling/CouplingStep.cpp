@@ -15,7 +15,7 @@ PetscInt Coupling::Substeps(PetscReal dt) const {
 // Step 1: eps from the particles' volume; the fluid's share of the drag impulse of the last step.
 PetscErrorCode Coupling::Project() {
   ParticleArrays a;
-  LocalField     eps, rho, A;
+  LocalField     eps, rho, A, Fw;
   PetscInt       s[3], n[3];
 
   PetscFunctionBeginUser;
@@ -98,24 +98,34 @@ PetscErrorCode Coupling::Project() {
   std::vector<PetscReal> kv(implicitFluid_ ? a.n : 0);
   for (int d = 0; d < 3; ++d) {
     PetscCall(VecSet(accel_[d], 0));
+    PetscCall(VecSet(wallForce_[d], 0));
     if (implicitFluid_) {  // K_p and K_p v_p to the faces: the rate and the target of the relaxation
-      LocalField C, W, U;
+      LocalField C, W, U, F;
       for (PetscInt p = 0; p < a.n; ++p) kv[p] = a.fluidDrag[p] * a.v[3 * p + d];
       PetscCall(VecSet(rate_[d], 0));
       PetscCall(VecSet(target_[d], 0));
       const PetscReal *values[2] = {a.fluidDrag, kv.data()};
       Vec              outs[2]   = {rate_[d], target_[d]};
-      PetscCall(avg_.Deposit(d, a.n, a.x, H_.data(), 2, values, 1, outs));
+      PetscCall(avg_.Deposit(d, a.n, a.x, H_.data(), 2, values, 1, outs, true));
       PetscCall(sg.GetGlobal(d, rate_[d], &C));
       PetscCall(sg.GetGlobal(d, target_[d], &W));
       PetscCall(sg.GetGlobal(d, flow_->Velocity(d), &U));
+      PetscCall(sg.GetGlobal(d, wallForce_[d], &F));
       sg.Owned(d, s, n);
       const PetscInt last = sg.Points(d, d) - 1;
       for (PetscInt k = s[2]; k < s[2] + n[2]; ++k)
         for (PetscInt j = s[1]; j < s[1] + n[1]; ++j)
           for (PetscInt i = s[0]; i < s[0] + n[0]; ++i) {
             PetscInt q[3] = {i, j, k}, cm[3] = {i, j, k};
-            if (!sg.Base().Periodic(d) && (q[d] == 0 || q[d] == last)) continue;
+            if (!sg.Base().Periodic(d) && (q[d] == 0 || q[d] == last)) {
+              // A wall face's share: the drag between the particles and the fluid at the wall's velocity, passed to
+              // the wall (the boundary sets the velocity there); the fluid's relaxation does not act there.
+              const PetscReal K = PetscRealPart(C.at(q)), f = K > 0 ? K * (PetscRealPart(W.at(q)) / K - PetscRealPart(U.at(q))) : 0;
+              source[d] += f;
+              F.at(q) = -f;
+              C.at(q) = 0, W.at(q) = 0;
+              continue;
+            }
             const PetscReal K = PetscRealPart(C.at(q));
             if (!(K > 0)) {
               C.at(q) = 0, W.at(q) = 0;
@@ -130,6 +140,7 @@ PetscErrorCode Coupling::Project() {
             W.at(q) = w;
             C.at(q) = K / (Vc * eF * eF / bF);
           }
+      PetscCall(sg.RestoreGlobal(d, wallForce_[d], &F));
       PetscCall(sg.RestoreGlobal(d, flow_->Velocity(d), &U));
       PetscCall(sg.RestoreGlobal(d, target_[d], &W));
       PetscCall(sg.RestoreGlobal(d, rate_[d], &C));
@@ -138,21 +149,36 @@ PetscErrorCode Coupling::Project() {
         continue;
       }
     }
-    PetscCall(avg_.Deposit(d, a.n, a.x, H_.data(), lastForce_.data() + d, 3, accel_[d]));
+    // The wall faces take their share (walls: their half control volumes), which passes to the wall (wallForce_).
+    PetscCall(avg_.Deposit(d, a.n, a.x, H_.data(), lastForce_.data() + d, 3, accel_[d], true));
     PetscCall(sg.GetGlobal(d, accel_[d], &A));
+    PetscCall(sg.GetGlobal(d, wallForce_[d], &Fw));
     sg.Owned(d, s, n);
     const PetscInt last = sg.Points(d, d) - 1, sd = eps.stride[d];  // sd: from a face's cell q to cm = q - e_d
     const bool     wall = !sg.Base().Periodic(d);
-    // Row by row with unit stride along x; the wall faces (nothing deposited there) skipped; the source
-    // summed in the same order as point by point.
+    auto           toWall = [&](PetscInt i, PetscInt j, PetscInt k) {
+      PetscScalar &v = A.at(i, j, k);
+      source[d] -= PetscRealPart(v);
+      Fw.at(i, j, k) = v;
+      v              = 0;
+    };
+    // Row by row with unit stride along x; the wall faces' shares to the wall; the source summed in the
+    // same order as point by point.
     for (PetscInt k = s[2]; k < s[2] + n[2]; ++k)
       for (PetscInt j = s[1]; j < s[1] + n[1]; ++j) {
         const PetscInt qd = d == 1 ? j : k;
-        if (wall && d != 0 && (qd == 0 || qd == last)) continue;
+        if (wall && d != 0 && (qd == 0 || qd == last)) {
+          for (PetscInt i = s[0]; i < s[0] + n[0]; ++i) toWall(i, j, k);
+          continue;
+        }
         PetscScalar       *Ar = &A.at(s[0], j, k);
         const PetscScalar *er = &eps.at(s[0], j, k), *rr = &rho.at(s[0], j, k);
         PetscInt           i0 = 0, i1 = n[0];
-        if (wall && d == 0) i0 = s[0] == 0 ? 1 : 0, i1 = s[0] + n[0] - 1 == last ? n[0] - 1 : n[0];
+        if (wall && d == 0) {
+          i0 = s[0] == 0 ? 1 : 0, i1 = s[0] + n[0] - 1 == last ? n[0] - 1 : n[0];
+          if (i0 == 1) toWall(s[0], j, k);
+          if (i1 == n[0] - 1) toWall(s[0] + n[0] - 1, j, k);
+        }
         PetscReal sum = source[d];  // first the row's sum (same order), then the conversion, which vectorises
         for (PetscInt i = i0; i < i1; ++i) sum -= PetscRealPart(Ar[i]);
         source[d] = sum;
@@ -163,6 +189,7 @@ PetscErrorCode Coupling::Project() {
           Ar[i] = -PetscRealPart(Ar[i]) / (Vc * eF * eF / bF);
         }
       }
+    PetscCall(sg.RestoreGlobal(d, wallForce_[d], &Fw));
     PetscCall(sg.RestoreGlobal(d, accel_[d], &A));
     if (byMass) PetscCall(DepositByFaceMass(d, a, eps, rho, &source[d]));  // after the conversion above
   }
@@ -174,24 +201,39 @@ PetscErrorCode Coupling::Project() {
   PetscFunctionReturn(0);
 }
 
-// eps at the faces (weights of the velocity average, K1) and the pressure gradient at the faces (K2).
+// eps at the faces (weights of the velocity average, K1) and the pressure gradient at the faces (K2). A wall face
+// has half a control volume, between the wall and the first cell's centre, whose velocity the boundary sets: there
+// the gradient is the one that holds that fluid at rest against gravity and the particles' share deposited on the
+// face (F2 without inertia and viscous stress: eps dp/dx_d = eps rho g_d - f_d, f_d = wallForce_/(V/2)), so that
+// the particles there read the pressure the wall carries, and the pressure at the wall is p(cell) -/+ (h/2) dp/dx_d.
 PetscErrorCode Coupling::FaceFields() {
-  LocalField eps, p, E, G;
+  LocalField eps, p, E, G, R, Fw;
   PetscInt   s[3], n[3];
 
   PetscFunctionBeginUser;
   const StaggeredGrid &sg = flow_->Staggered();
   const PetscReal     *h  = sg.Base().Spacing();
+  const PetscReal     *g  = flow_->Gravity();
+  const PetscReal      Vh = 0.5 * h[0] * h[1] * h[2];
   PetscCall(DMGlobalToLocal(sg.Cells(), flow_->FluidFraction(), INSERT_VALUES, cellLocal_));
   PetscCall(DMGlobalToLocal(sg.Cells(), flow_->Pressure(), INSERT_VALUES, rhoLocal_));  // rhoLocal_ as scratch
   PetscCall(sg.GetLocal(3, cellLocal_, &eps));
   PetscCall(sg.GetLocal(3, rhoLocal_, &p));
+  PetscCall(sg.GetGlobal(3, flow_->Density(), &R));
   for (int d = 0; d < 3; ++d) {
     PetscCall(sg.GetGlobal(d, faceEps_[d], &E));
     PetscCall(sg.GetGlobal(d, gradP_[d], &G));
+    PetscCall(sg.GetGlobal(d, wallForce_[d], &Fw));
     sg.Owned(d, s, n);
     const PetscInt last = sg.Points(d, d) - 1, sd = eps.stride[d];  // sd: from a face's cell q to cm = q - e_d
     const bool     wall = !sg.Base().Periodic(d);
+    // A wall face (i, j, k) next to the cell c of the local array's offset: eps and the half control volume's gradient.
+    auto atWall = [&](PetscInt i, PetscInt j, PetscInt k, PetscInt c) {
+      const PetscInt  cell[3] = {i - (d == 0 && i == last), j - (d == 1 && j == last), k - (d == 2 && k == last)};
+      const PetscReal e = PetscRealPart((&eps.at(s[0], j, k))[c]), r = PetscRealPart(R.at(cell));
+      E.at(i, j, k) = e;
+      G.at(i, j, k) = r * g[d] - PetscRealPart(Fw.at(i, j, k)) / Vh / e;
+    };
     // Row by row with unit stride along x (the x walls' faces, if any, at the row's ends).
     for (PetscInt k = s[2]; k < s[2] + n[2]; ++k)
       for (PetscInt j = s[1]; j < s[1] + n[1]; ++j) {
@@ -200,21 +242,23 @@ PetscErrorCode Coupling::FaceFields() {
         const PetscInt     qd = d == 1 ? j : k;
         PetscInt           i0 = 0, i1 = n[0];
         if (wall && d != 0 && (qd == 0 || qd == last)) {  // a wall row: all its faces on the wall
-          for (PetscInt i = 0; i < n[0]; ++i) Er[i] = qd == 0 ? er[i] : er[i - sd], Gr[i] = 0;
+          for (PetscInt i = 0; i < n[0]; ++i) atWall(s[0] + i, j, k, qd == 0 ? i : i - sd);
           continue;
         }
         if (wall && d == 0) {
-          if (s[0] == 0) Er[0] = er[0], Gr[0] = 0, i0 = 1;
-          if (s[0] + n[0] - 1 == last) Er[n[0] - 1] = er[n[0] - 1 - sd], Gr[n[0] - 1] = 0, i1 = n[0] - 1;
+          if (s[0] == 0) atWall(s[0], j, k, 0), i0 = 1;
+          if (s[0] + n[0] - 1 == last) atWall(s[0] + n[0] - 1, j, k, n[0] - 1 - sd), i1 = n[0] - 1;
         }
         for (PetscInt i = i0; i < i1; ++i) {
           Er[i] = 0.5 * (er[i] + er[i - sd]);
           Gr[i] = (pr[i] - pr[i - sd]) / h[d];
         }
       }
+    PetscCall(sg.RestoreGlobal(d, wallForce_[d], &Fw));
     PetscCall(sg.RestoreGlobal(d, gradP_[d], &G));
     PetscCall(sg.RestoreGlobal(d, faceEps_[d], &E));
   }
+  PetscCall(sg.RestoreGlobal(3, flow_->Density(), &R));
   PetscCall(sg.RestoreLocal(3, rhoLocal_, &p));
   PetscCall(sg.RestoreLocal(3, cellLocal_, &eps));
   PetscFunctionReturn(0);
@@ -239,15 +283,16 @@ PetscErrorCode Coupling::Average(PetscReal dt) {
   if (Rotation()) PetscCall(VelocityGradients());
   for (int d = 0; d < 3; ++d) {
     // One pass per location (the kernel weights are the costly part): the velocity (eps-weighted, wall
-    // faces included), the pressure gradient and the interface's face force (surface tension and
-    // Marangoni per unit volume, P1) (unweighted, K2; not computed on wall faces).
+    // faces included), the pressure gradient (unweighted, K2; wall faces included, as the force deposit)
+    // and the interface's face force (surface tension and Marangoni per unit volume, P1; unweighted, not
+    // computed on wall faces).
     Vec        fields[6], weights[6] = {faceEps_[d], nullptr, nullptr, nullptr, nullptr, nullptr};
     bool       walls[6] = {true, false, false, false, false, false};
     PetscReal *outs[6]  = {u.data() + d, nullptr, nullptr, nullptr, nullptr, nullptr};
     PetscInt   nf       = 1;
     fields[0]           = flow_->Velocity(d);
     const bool needGradP = pressureForce_ || (addedMass_ > 0 && addedMassAccel_ == FluidAcceleration::Pressure);
-    if (needGradP) fields[nf] = gradP_[d], outs[nf++] = gp.data() + d;
+    if (needGradP) fields[nf] = gradP_[d], walls[nf] = true, outs[nf++] = gp.data() + d;  // wall faces: their half volumes (FaceFields)
     if (interfaceForces_) {
       PetscCall(flow_->FaceForce(d, &fields[nf]));
       outs[nf++] = st.data() + d;
@@ -326,6 +371,28 @@ PetscErrorCode Coupling::Average(PetscReal dt) {
   }
   PetscCall(sw.RestoreArrays(&a));
   PetscCall(PetscLogEventEnd(evAverage_, 0, 0, 0, 0));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode Coupling::WallPressureGradient(int d, int side, PetscReal *mean) const {
+  LocalField G;
+  PetscInt   s[3], n[3];
+  PetscReal  sum[2] = {0, 0}, all[2];
+
+  PetscFunctionBeginUser;
+  const StaggeredGrid &sg = flow_->Staggered();
+  const PetscInt       q  = side ? sg.Points(d, d) - 1 : 0;
+  PetscCall(sg.GetGlobal(d, gradP_[d], &G));
+  sg.Owned(d, s, n);
+  for (PetscInt k = s[2]; k < s[2] + n[2]; ++k)
+    for (PetscInt j = s[1]; j < s[1] + n[1]; ++j)
+      for (PetscInt i = s[0]; i < s[0] + n[0]; ++i) {
+        const PetscInt at[3] = {i, j, k};
+        if (at[d] == q) sum[0] += PetscRealPart(G.at(at)), sum[1] += 1;
+      }
+  PetscCall(sg.RestoreGlobal(d, gradP_[d], &G));
+  PetscCallMPI(MPI_Allreduce(sum, all, 2, MPIU_REAL, MPIU_SUM, comm_));
+  *mean = all[1] > 0 ? all[0] / all[1] : 0;
   PetscFunctionReturn(0);
 }
 

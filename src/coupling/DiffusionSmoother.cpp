@@ -192,13 +192,27 @@ PetscErrorCode DiffusionSmoother::Smooth(int loc, Vec v) {
     // The total the solve lost to its residual, put back evenly (K3: exact conservation).
     PetscCall(VecDot(v, mask_[loc], &after));
     PetscCall(VecAXPY(v, (before - after) / count_[loc], mask_[loc]));
+    if (loc < 3) {  // the wall faces' identity rows, solved only to the tolerance: their values exactly as given
+      const PetscScalar *m, *b;
+      PetscScalar       *a;
+      PetscInt           n;
+      PetscCall(VecGetLocalSize(v, &n));
+      PetscCall(VecGetArrayRead(mask_[loc], &m));
+      PetscCall(VecGetArrayRead(rhs_[loc], &b));
+      PetscCall(VecGetArray(v, &a));
+      for (PetscInt k = 0; k < n; ++k)
+        if (PetscRealPart(m[k]) == 0) a[k] = b[k];
+      PetscCall(VecRestoreArray(v, &a));
+      PetscCall(VecRestoreArrayRead(rhs_[loc], &b));
+      PetscCall(VecRestoreArrayRead(mask_[loc], &m));
+    }
   }
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode DiffusionSmoother::Deposit(int loc, PetscInt n, const PetscReal *x, const PetscReal *H, const PetscReal *value, PetscInt stride, Vec out) {
+PetscErrorCode DiffusionSmoother::Deposit(int loc, PetscInt n, const PetscReal *x, const PetscReal *H, const PetscReal *value, PetscInt stride, Vec out, bool walls) {
   PetscFunctionBeginUser;
-  PetscCall(Deposit(loc, n, x, H, 1, &value, stride, &out));
+  PetscCall(Deposit(loc, n, x, H, 1, &value, stride, &out, walls));
   PetscFunctionReturn(0);
 }
 
@@ -208,11 +222,13 @@ PetscErrorCode DiffusionSmoother::Average(int loc, Vec field, Vec weight, PetscI
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode DiffusionSmoother::Deposit(int loc, PetscInt n, const PetscReal *x, const PetscReal *H, PetscInt nf, const PetscReal *const value[], PetscInt stride, Vec out[]) {
+// With walls, the wall faces' shares stay where the tent put them: the smoothing keeps a wall face's value
+// (identity rows; the filter leaves it), so the total is kept.
+PetscErrorCode DiffusionSmoother::Deposit(int loc, PetscInt n, const PetscReal *x, const PetscReal *H, PetscInt nf, const PetscReal *const value[], PetscInt stride, Vec out[], bool walls) {
   PetscFunctionBeginUser;
   PetscCall(Work(loc, nf));
   for (PetscInt f = 0; f < nf; ++f) PetscCall(VecSet(work_[loc][f], 0));
-  PetscCall(compact_.Deposit(loc, n, x, H, nf, value, stride, work_[loc].data()));
+  PetscCall(compact_.Deposit(loc, n, x, H, nf, value, stride, work_[loc].data(), walls));
   for (PetscInt f = 0; f < nf; ++f) {
     PetscCall(Smooth(loc, work_[loc][f]));
     PetscCall(VecAXPY(out[f], 1, work_[loc][f]));

@@ -85,7 +85,7 @@ bool KernelAverager::GatherTent(int loc, const PetscReal x[3], PetscInt *off, Pe
   const PetscReal *h = grid.Spacing();
   PetscInt         q0[3], q1[3];
   PetscReal        s[3], f[3][2] = {{0, 0}, {0, 0}, {0, 0}};
-  PetscInt         wallAt[2] = {-1, -1};  // the wall-face indices along loc (faces only, not periodic)
+  PetscInt         wallAt[2] = {PETSC_MIN_INT, PETSC_MIN_INT};  // the wall-face indices along loc (faces only, not periodic; no index is PETSC_MIN_INT, a periodic one may be -1)
   for (int e = 0; e < 3; ++e) {
     const PetscInt N = sg_->Points(loc, e);
     // Continuous index of x in the location's numbering (faces normal to e sit at integer indices).
@@ -143,7 +143,7 @@ bool KernelAverager::Gather(int loc, const PetscReal x[3], PetscReal H, Points &
   PetscReal        s[3];
   const bool      unresolved = settings_.shape == kernel::Shape::Unresolved;  // no kernel of radius rc
   const PetscReal rc         = unresolved ? 0 : Cutoff(H);
-  PetscInt        wallAt[2] = {-1, -1};  // the wall-face indices along loc (faces only, not periodic)
+  PetscInt        wallAt[2] = {PETSC_MIN_INT, PETSC_MIN_INT};  // the wall-face indices along loc (faces only, not periodic; no index is PETSC_MIN_INT, a periodic one may be -1)
   for (int e = 0; e < 3; ++e) {
     N[e] = sg_->Points(loc, e);
     // Continuous index of x in the location's numbering (faces normal to e sit at integer indices).
@@ -244,12 +244,19 @@ bool KernelAverager::Support(int loc, const PetscReal x[3], PetscReal H, bool ne
   if (!Gather(loc, x, H, points_)) return false;
   const Points &pts = points_;
   if (wAll_.size() < pts.n) wAll_.resize(pts.raw.size()), wInner_.resize(pts.raw.size());
-  if (needAll && pts.sumAll > 0)
-    for (size_t k = 0; k < pts.n; ++k) wAll_[k] = pts.raw[k] / pts.sumAll;
+  // A point-sampled kernel gives a wall face half its weight: the face's control volume is half a cell's.
+  const bool half   = settings_.shape == kernel::Shape::Smooth || settings_.shape == kernel::Shape::Truncated;
+  PetscReal  sumAll = pts.sumAll;
+  if (half && pts.sumAll != pts.sumInner) {
+    sumAll = 0;
+    for (size_t k = 0; k < pts.n; ++k) sumAll += pts.wall[k] ? 0.5 * pts.raw[k] : pts.raw[k];
+  }
+  if (needAll && sumAll > 0)
+    for (size_t k = 0; k < pts.n; ++k) wAll_[k] = (half && pts.wall[k] ? 0.5 * pts.raw[k] : pts.raw[k]) / sumAll;
   if (needInner && pts.sumInner > 0)
     for (size_t k = 0; k < pts.n; ++k) wInner_[k] = pts.wall[k] ? 0 : pts.raw[k] / pts.sumInner;
   span.offsets = pts.offsets.data(), span.wAll = wAll_.data(), span.wInner = wInner_.data(), span.wall = pts.wall.data();
-  span.n = pts.n, span.sumAll = pts.sumAll, span.sumInner = pts.sumInner;
+  span.n = pts.n, span.sumAll = sumAll, span.sumInner = pts.sumInner;
   return true;
 }
 
@@ -298,13 +305,13 @@ PetscErrorCode KernelAverager::LocalVectors(int loc, size_t count) {
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode KernelAverager::Deposit(int loc, PetscInt n, const PetscReal *x, const PetscReal *H, const PetscReal *value, PetscInt stride, Vec out) {
+PetscErrorCode KernelAverager::Deposit(int loc, PetscInt n, const PetscReal *x, const PetscReal *H, const PetscReal *value, PetscInt stride, Vec out, bool walls) {
   PetscFunctionBeginUser;
-  PetscCall(Deposit(loc, n, x, H, 1, &value, stride, &out));
+  PetscCall(Deposit(loc, n, x, H, 1, &value, stride, &out, walls));
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode KernelAverager::Deposit(int loc, PetscInt n, const PetscReal *x, const PetscReal *H, PetscInt nf, const PetscReal *const value[], PetscInt stride, Vec out[]) {
+PetscErrorCode KernelAverager::Deposit(int loc, PetscInt n, const PetscReal *x, const PetscReal *H, PetscInt nf, const PetscReal *const value[], PetscInt stride, Vec out[], bool walls) {
   PetscInt bad = 0, anyBad;
 
   PetscFunctionBeginUser;
@@ -324,14 +331,15 @@ PetscErrorCode KernelAverager::Deposit(int loc, PetscInt n, const PetscReal *x, 
         ++bad;
         continue;
       }
-      if (t.okInner) {  // all fields in one pass over the tent's points, wall faces left out
+      if (walls ? t.okAll : t.okInner) {  // all fields in one pass over the tent's points (wall faces left out unless walls)
+        const PetscReal(*gw)[2] = walls ? t.g : t.gi;
         for (PetscInt f = 0; f < nf; ++f) values_[f] = value[f][p * stride];
         for (PetscInt c = 0; c < t.n[2]; ++c)
           for (PetscInt b = 0; b < t.n[1]; ++b) {
-            const PetscReal wyz = t.gi[1][b] * t.gi[2][c];
+            const PetscReal wyz = gw[1][b] * gw[2][c];
             const PetscInt  o   = t.base + b * t.stride[1] + c * t.stride[2];
             for (PetscInt a = 0; a < t.n[0]; ++a) {
-              const PetscReal w = t.gi[0][a] * wyz;
+              const PetscReal w = gw[0][a] * wyz;
               if (w == 0) continue;
               for (PetscInt f = 0; f < nf; ++f) arrays_[f][o + a] += values_[f] * w;
             }
@@ -340,21 +348,21 @@ PetscErrorCode KernelAverager::Deposit(int loc, PetscInt n, const PetscReal *x, 
       }
     }
     Span sp;
-    if (!Support(loc, &x[3 * p], H[p], false, true, sp)) {
+    if (!Support(loc, &x[3 * p], H[p], walls, !walls, sp)) {
       ++bad;
       continue;
     }
     for (PetscInt f = 0; f < nf; ++f) values_[f] = value[f][p * stride];
-    if (sp.sumInner > 0) {  // all fields in one pass over the support
+    if (walls ? sp.sumAll > 0 : sp.sumInner > 0) {  // all fields in one pass over the support
       for (size_t k = 0; k < sp.n; ++k) {
-        if (sp.wall[k]) continue;
-        const PetscReal w = sp.wInner[k];
+        if (!walls && sp.wall[k]) continue;
+        const PetscReal w = walls ? sp.wAll[k] : sp.wInner[k];
         const PetscInt  o = sp.offsets[k];
         for (PetscInt f = 0; f < nf; ++f) arrays_[f][o] += values_[f] * w;
       }
       continue;
     }
-    if (!Normalise(loc, &x[3 * p], sp, true, offsets_, weights_)) {  // the kernel missed every point: the nearest
+    if (!Normalise(loc, &x[3 * p], sp, !walls, offsets_, weights_)) {  // the kernel missed every point: the nearest
       ++bad;
       continue;
     }

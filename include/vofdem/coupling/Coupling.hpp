@@ -98,6 +98,11 @@ public:
 
   // The kernel width of a particle of diameter d: max(kappa d, -coupling_kernel_min_width cells).
   PetscReal KernelWidth(PetscReal d) const;
+  // The mean over the owned and other ranks' wall faces of direction d (side 0: lower, 1: upper) of the pressure
+  // gradient dp/dx_d the particles read there (the wall face's half control volume, FaceFields), as of the last
+  // Average(). Collective. With it, the pressure at the wall is p(first cell) -/+ h/2 of it (ex34: the drop from
+  // the floor).
+  PetscErrorCode WallPressureGradient(int d, int side, PetscReal *mean) const;
 
 private:
   PetscErrorCode FaceFields();  // eps at faces and the pressure gradient at faces, from the flow
@@ -159,6 +164,9 @@ private:
   // fields
   Vec faceEps_[3] = {nullptr, nullptr, nullptr}, gradP_[3] = {nullptr, nullptr, nullptr}, accel_[3] = {nullptr, nullptr, nullptr};
   Vec rate_[3] = {nullptr, nullptr, nullptr}, target_[3] = {nullptr, nullptr, nullptr};  // implicit fluid drag (Flow::SetFaceRelaxation)
+  // The particles' force (N) deposited on each wall face of direction d (Project; zero elsewhere): the wall face's half
+  // control volume, whose velocity the boundary sets, passes it to the wall; its pressure gradient (FaceFields) balances it.
+  Vec wallForce_[3] = {nullptr, nullptr, nullptr};
   Vec cellLocal_ = nullptr, rhoLocal_ = nullptr, volume_ = nullptr, epsChange_ = nullptr;
   std::vector<PetscReal> H_, scratch_, lastForce_;  // per local particle, between Project and Average
   std::vector<PetscReal> explicitForce_;             // the explicit forces' part of lastForce_ (implicit fluid drag)

@@ -39,16 +39,19 @@ public:
 
   // out (a global vector of location loc: 0-2 faces, 3 cells) += the particles' values value[p*stride]
   // shared by the kernel of width H[p] around x[3p..3p+2]. Collective (ghost contributions are
-  // summed into their owners).
-  PetscErrorCode Deposit(int loc, PetscInt n, const PetscReal *x, const PetscReal *H, const PetscReal *value, PetscInt stride, Vec out);
+  // summed into their owners). The wall faces of a face location's own direction take no share unless
+  // `walls` (the particle forces: a wall face's half control volume takes its share, Coupling.cpp).
+  PetscErrorCode Deposit(int loc, PetscInt n, const PetscReal *x, const PetscReal *H, const PetscReal *value, PetscInt stride, Vec out, bool walls = false);
   // out[p*stride] = sum_J f_J c_J w_pJ / sum_J c_J w_pJ over the points of location loc within the
   // cut-off, c = weight (a global vector of the same location; nullptr: 1). Wall faces take part
-  // (their velocity is the wall's) unless `walls` is false (a pressure gradient there is not
-  // computed). Collective (ghost update).
+  // (their velocity is the wall's) unless `walls` is false. With walls, a wall face counts for the
+  // half control volume it has: the tent's and the unresolved mode's weights give it that by
+  // themselves (a hat function is cut in half at the box face); a point-sampled kernel (smooth,
+  // truncated) gives it half its weight. Collective (ghost update).
   PetscErrorCode Average(int loc, Vec field, Vec weight, PetscInt n, const PetscReal *x, const PetscReal *H, PetscReal *out, PetscInt stride, bool walls = true);
   // Several fields of one location at once (the kernel weights, the costly part, are computed once per
   // particle): value[f] into out[f], or field[f] (weighted by weight[f], walls[f]) into out[f].
-  PetscErrorCode Deposit(int loc, PetscInt n, const PetscReal *x, const PetscReal *H, PetscInt nf, const PetscReal *const value[], PetscInt stride, Vec out[]);
+  PetscErrorCode Deposit(int loc, PetscInt n, const PetscReal *x, const PetscReal *H, PetscInt nf, const PetscReal *const value[], PetscInt stride, Vec out[], bool walls = false);
   PetscErrorCode Average(int loc, PetscInt nf, const Vec field[], const Vec weight[], const bool walls[], PetscInt n, const PetscReal *x, const PetscReal *H, PetscReal *const out[],
                          PetscInt stride);
 
