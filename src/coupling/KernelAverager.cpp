@@ -19,6 +19,21 @@ inline void Append(PetscInt at, PetscReal w, bool onWall, PetscInt *off, PetscRe
   if (!onWall) sumInner += w;
 }
 
+// fn(offset, w) for each point of a tent (KernelAverager::TentSpan) with nonzero weight w = g_x g_y g_z, the
+// factors gw (all points, or with the wall faces left out).
+template <class Tent, class F>
+inline void ForEachTentPoint(const Tent &t, const PetscReal (*gw)[2], F &&fn) {
+  for (PetscInt c = 0; c < t.n[2]; ++c)
+    for (PetscInt b = 0; b < t.n[1]; ++b) {
+      const PetscReal wyz = gw[1][b] * gw[2][c];
+      const PetscInt  o   = t.base + b * t.stride[1] + c * t.stride[2];
+      for (PetscInt a = 0; a < t.n[0]; ++a) {
+        const PetscReal w = gw[0][a] * wyz;
+        if (w != 0) fn(o + a, w);
+      }
+    }
+}
+
 }  // namespace
 
 PetscErrorCode KernelAverager::Layout(int loc, DM *dm) const {
@@ -332,18 +347,10 @@ PetscErrorCode KernelAverager::Deposit(int loc, PetscInt n, const PetscReal *x, 
         continue;
       }
       if (walls ? t.okAll : t.okInner) {  // all fields in one pass over the tent's points (wall faces left out unless walls)
-        const PetscReal(*gw)[2] = walls ? t.g : t.gi;
         for (PetscInt f = 0; f < nf; ++f) values_[f] = value[f][p * stride];
-        for (PetscInt c = 0; c < t.n[2]; ++c)
-          for (PetscInt b = 0; b < t.n[1]; ++b) {
-            const PetscReal wyz = gw[1][b] * gw[2][c];
-            const PetscInt  o   = t.base + b * t.stride[1] + c * t.stride[2];
-            for (PetscInt a = 0; a < t.n[0]; ++a) {
-              const PetscReal w = gw[0][a] * wyz;
-              if (w == 0) continue;
-              for (PetscInt f = 0; f < nf; ++f) arrays_[f][o + a] += values_[f] * w;
-            }
-          }
+        ForEachTentPoint(t, walls ? t.g : t.gi, [&](PetscInt o, PetscReal w) {
+          for (PetscInt f = 0; f < nf; ++f) arrays_[f][o] += values_[f] * w;
+        });
         continue;
       }
     }
@@ -416,20 +423,12 @@ PetscErrorCode KernelAverager::Average(int loc, PetscInt nf, const Vec field[], 
       if ((!needAll || t.okAll) && (!needInner || t.okInner)) {  // field by field over the tent's points
         for (PetscInt f = 0; f < nf; ++f) {
           const PetscScalar *gv = arrays_[f], *c = arrays_[nf + f];
-          const PetscReal(*gw)[2] = walls[f] ? t.g : t.gi;
-          PetscReal num = 0, den = 0;
-          for (PetscInt k = 0; k < t.n[2]; ++k)
-            for (PetscInt j = 0; j < t.n[1]; ++j) {
-              const PetscReal wyz = gw[1][j] * gw[2][k];
-              const PetscInt  o   = t.base + j * t.stride[1] + k * t.stride[2];
-              for (PetscInt i = 0; i < t.n[0]; ++i) {
-                const PetscReal w = gw[0][i] * wyz;
-                if (w == 0) continue;
-                const PetscReal wk = c ? w * PetscRealPart(c[o + i]) : w;
-                num += wk * PetscRealPart(gv[o + i]);
-                den += wk;
-              }
-            }
+          PetscReal          num = 0, den = 0;
+          ForEachTentPoint(t, walls[f] ? t.g : t.gi, [&](PetscInt o, PetscReal w) {
+            const PetscReal wk = c ? w * PetscRealPart(c[o]) : w;
+            num += wk * PetscRealPart(gv[o]);
+            den += wk;
+          });
           out[f][p * stride] = den > 0 ? num / den : 0;
         }
         continue;
