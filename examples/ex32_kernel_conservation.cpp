@@ -51,6 +51,28 @@ PetscErrorCode FillField(const vofdem::StaggeredGrid &sg, int loc, Vec v, bool c
   PetscFunctionReturn(0);
 }
 
+// The sum of |f| over the wall faces of face location d (both ends; 0 along a periodic direction), over all ranks.
+PetscErrorCode WallShare(const vofdem::StaggeredGrid &sg, int d, Vec f, PetscReal *all) {
+  vofdem::LocalField F;
+  PetscInt           s[3], m[3];
+  PetscReal          mine = 0;
+
+  PetscFunctionBeginUser;
+  if (!sg.Base().Periodic(d)) {
+    PetscCall(sg.GetGlobal(d, f, &F));
+    sg.Owned(d, s, m);
+    for (PetscInt k = s[2]; k < s[2] + m[2]; ++k)
+      for (PetscInt j = s[1]; j < s[1] + m[1]; ++j)
+        for (PetscInt i = s[0]; i < s[0] + m[0]; ++i) {
+          const PetscInt q[3] = {i, j, k};
+          if (q[d] == 0 || q[d] == sg.Points(d, d) - 1) mine += std::fabs(PetscRealPart(F.at(q)));
+        }
+    PetscCall(sg.RestoreGlobal(d, f, &F));
+  }
+  PetscCallMPI(MPI_Allreduce(&mine, all, 1, MPIU_REAL, MPIU_SUM, PETSC_COMM_WORLD));
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode RunCase(const char *name, vofdem::kernel::Shape shape, bool periodicX, PetscReal widthInCells, PetscInt *failures) {
   vofdem::Grid           grid;
   vofdem::StaggeredGrid  sg;
@@ -124,44 +146,16 @@ PetscErrorCode RunCase(const char *name, vofdem::kernel::Shape shape, bool perio
     PetscCall(VecSet(f, 0));
     PetscCall(avg.Deposit(d, n, x.data(), H1.data(), force.data() + d, 3, f, true));
     PetscCall(VecSum(f, &withWalls[d]));
-    onWalls[d] = 0;
-    if (!grid.Periodic(d)) {
-      vofdem::LocalField F;
-      PetscInt           s[3], m[3];
-      PetscReal          mine = 0;
-      PetscCall(sg.GetGlobal(d, f, &F));
-      sg.Owned(d, s, m);
-      for (PetscInt k = s[2]; k < s[2] + m[2]; ++k)
-        for (PetscInt j = s[1]; j < s[1] + m[1]; ++j)
-          for (PetscInt i = s[0]; i < s[0] + m[0]; ++i) {
-            const PetscInt q[3] = {i, j, k};
-            if (q[d] == 0 || q[d] == sg.Points(d, d) - 1) mine += std::fabs(PetscRealPart(F.at(q)));
-          }
-      PetscCall(sg.RestoreGlobal(d, f, &F));
-      PetscCallMPI(MPI_Allreduce(&mine, &onWalls[d], 1, MPIU_REAL, MPIU_SUM, PETSC_COMM_WORLD));
-    }
+    PetscCall(WallShare(sg, d, f, &onWalls[d]));
     PetscCall(VecSet(f, 0));
     PetscCall(avg.Deposit(d, n, x.data(), H1.data(), force.data() + d, 3, f));
     PetscCall(VecSum(f, &sum[1 + d]));
-    // Nothing may land on a wall face (its velocity is the boundary condition's).
-    if (!grid.Periodic(d)) {
-      vofdem::LocalField F;
-      PetscInt           s[3], m[3];
-      PetscReal          onWall = 0, all;
-      PetscCall(sg.GetGlobal(d, f, &F));
-      sg.Owned(d, s, m);
-      for (PetscInt k = s[2]; k < s[2] + m[2]; ++k)
-        for (PetscInt j = s[1]; j < s[1] + m[1]; ++j)
-          for (PetscInt i = s[0]; i < s[0] + m[0]; ++i) {
-            const PetscInt q[3] = {i, j, k};
-            if (q[d] == 0 || q[d] == sg.Points(d, d) - 1) onWall += std::fabs(PetscRealPart(F.at(q)));
-          }
-      PetscCall(sg.RestoreGlobal(d, f, &F));
-      PetscCallMPI(MPI_Allreduce(&onWall, &all, 1, MPIU_REAL, MPIU_SUM, PETSC_COMM_WORLD));
-      if (all != 0) {
-        ++*failures;
-        PetscCall(PetscPrintf(PETSC_COMM_WORLD, "%s: force on the wall faces of component %c: %g FAIL\n", name, "xyz"[d], (double)all));
-      }
+    // Without walls nothing may land on a wall face (its velocity is the boundary condition's).
+    PetscReal all;
+    PetscCall(WallShare(sg, d, f, &all));
+    if (all != 0) {
+      ++*failures;
+      PetscCall(PetscPrintf(PETSC_COMM_WORLD, "%s: force on the wall faces of component %c: %g FAIL\n", name, "xyz"[d], (double)all));
     }
     PetscCall(VecDestroy(&f));
   }
