@@ -7,6 +7,7 @@
 #include <petscviewerhdf5.h>
 
 #include <algorithm>
+#include <utility>
 #include <cmath>
 
 namespace vofdem {
@@ -201,15 +202,17 @@ PetscErrorCode Coupling::View(PetscViewer viewer, PetscReal dt) const {
   if (contactAngleSet_)
     PetscCall(PetscViewerASCIIPrintf(viewer, "coupling: capillary force (Princen, flat interface) with contact angle %g deg for all particles, surface tension %g N/m%s\n", (double)contactAngle_, (double)sigma_,
                                      !freeSurface_ ? ": no free surface, no force" : sigma_ > 0 ? "" : ": the force is zero (-vof_surface_tension 0)"));
-  const PetscReal rhoP = dem_->Material().density;
-  std::vector<PetscReal> radii = {dem_->MinRadius()};
-  if (dem_->MaxRadius() > dem_->MinRadius()) radii.push_back(dem_->MaxRadius());
-  for (PetscReal r : radii) {
+  // The extremes of the response time: the smallest sphere of the lightest type, the largest of the heaviest.
+  PetscReal rhoLo = PETSC_MAX_REAL, rhoHi = 0;
+  for (PetscInt t = 0; t < dem_->TypeCount(); ++t) rhoLo = std::min(rhoLo, dem_->TypeMaterial(t).density), rhoHi = std::max(rhoHi, dem_->TypeMaterial(t).density);
+  std::vector<std::pair<PetscReal, PetscReal>> sizes = {{dem_->MinRadius(), rhoLo}};
+  if (dem_->MaxRadius() > dem_->MinRadius() || rhoHi > rhoLo) sizes.push_back({dem_->MaxRadius(), rhoHi});
+  for (const auto &[r, rhoP] : sizes) {
     const PetscReal d = 2 * r, V = PETSC_PI * d * d * d / 6, m = rhoP * V;
     const PetscReal K = 3 * PETSC_PI * mu * d, tau = m / K;  // Stokes response time rho_p d^2/(18 mu)
     const PetscReal g = 9.81, uSettle = std::fabs(rhoP - rho) * g * d * d / (18 * mu);
-    PetscCall(PetscViewerASCIIPrintf(viewer, "coupling: d = %g m: response time %.3g s (fluid step %.3g s: %s), cell/particle volume %.3g, cell/d %.3g, H = %.3g cells, Stokes number (Stokes settling speed) %.3g\n",
-                                     (double)d, (double)tau, (double)dt, tau < dt ? "drag implicit" : "resolved by the step", (double)(Vc / V), (double)(hmax / d),
+    PetscCall(PetscViewerASCIIPrintf(viewer, "coupling: d = %g m, rho_p %g kg/m^3: response time %.3g s (fluid step %.3g s: %s), cell/particle volume %.3g, cell/d %.3g, H = %.3g cells, Stokes number (Stokes settling speed) %.3g\n",
+                                     (double)d, (double)rhoP, (double)tau, (double)dt, tau < dt ? "drag implicit" : "resolved by the step", (double)(Vc / V), (double)(hmax / d),
                                      (double)(KernelWidth(d) / hmax), (double)(tau * uSettle / d)));
     if (kernel_.shape == kernel::Shape::Unresolved && Vc < 3 * V)
       PetscCall(PetscViewerASCIIPrintf(viewer, "vofdem: warning: coupling: cells of %.3g particle volumes with -coupling_kernel unresolved: a particle fills most of its cell (use a kernel)\n", (double)(Vc / V)));

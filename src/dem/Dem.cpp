@@ -134,7 +134,7 @@ PetscErrorCode Dem::SetFromOptions(MPI_Comm comm) {
   if (jkr_)
     for (size_t t = 0; t < types_.size(); ++t)
       if (types_[t].surfaceEnergy == 0)
-        VofdemInputError(comm, "option -dem_cohesion jkr needs a surface energy > 0 for every type (-dem_surface_energy or -dem_type_%s_surface_energy)", typeNames_[t].c_str());
+        VofdemInputError(comm, "option -dem_cohesion jkr needs a surface energy > 0 for every type: type %s has none (-dem_type_%s_surface_energy; a material file's value is not overridden by -dem_surface_energy)", typeNames_[t].c_str(), typeNames_[t].c_str());
   const PetscReal rFillMax = fillSizes_.MaxRadius();
   PetscCall(wallSet_.SetFromOptions(comm));
   PetscCall(out_.SetFromOptions(comm));
@@ -405,9 +405,17 @@ PetscErrorCode Dem::FindParticle(std::int64_t id, PetscReal x[3], PetscReal v[3]
 
 PetscErrorCode Dem::View(PetscViewer viewer) const {
   PetscFunctionBeginUser;
-  PetscCall(PetscViewerASCIIPrintf(viewer, "dem: %" PetscInt_FMT " spheres of radius %g to %g m, density %g kg/m^3, E %g Pa, nu %g, e %g, mu %g; Rayleigh time %g s; skin %g m\n",
-                                   inserted_, (double)rMin_, (double)rMax_, (double)material_.density, (double)material_.youngs, (double)material_.poisson,
-                                   (double)material_.restitution, (double)material_.friction, (double)rayleighTime_, (double)skin_));
+  // One type: its own material (with -dem_types it is not material_, which is what the types start from);
+  // several: each type's line below.
+  const bool         oneType = types_.size() == 1;
+  const DemMaterial &shown   = types_[0];
+  if (oneType)
+    PetscCall(PetscViewerASCIIPrintf(viewer, "dem: %" PetscInt_FMT " spheres of radius %g to %g m, density %g kg/m^3, E %g Pa, nu %g, e %g, mu %g; Rayleigh time %g s; skin %g m\n",
+                                     inserted_, (double)rMin_, (double)rMax_, (double)shown.density, (double)shown.youngs, (double)shown.poisson, (double)shown.restitution,
+                                     (double)shown.friction, (double)rayleighTime_, (double)skin_));
+  else
+    PetscCall(PetscViewerASCIIPrintf(viewer, "dem: %" PetscInt_FMT " spheres of radius %g to %g m, %" PetscInt_FMT " types (materials below); Rayleigh time %g s; skin %g m\n", inserted_,
+                                     (double)rMin_, (double)rMax_, (PetscInt)types_.size(), (double)rayleighTime_, (double)skin_));
   if (clumpCount_ > 0)
     PetscCall(PetscViewerASCIIPrintf(viewer, "dem: %" PetscInt_FMT " rigid clumps of overlapping spheres (P10): mass and inertia of each shape's union, quaternion rotation\n", clumpCount_));
   if (types_.size() > 1) {
@@ -430,11 +438,16 @@ PetscErrorCode Dem::View(PetscViewer viewer) const {
   char                     law[128];
   if (linear_) std::snprintf(law, sizeof law, "linear spring-dashpot, k_n %g N/m, k_t/k_n %g (P4)", (double)linearKn_, (double)linearKtRatio_);
   else std::snprintf(law, sizeof law, "Hertz-Mindlin (P3)");
-  PetscCall(PetscViewerASCIIPrintf(viewer, "dem: contacts: %s with damping, tangential springs and Coulomb friction between spheres and with the box faces%s; rolling resistance: %s, mu_r %g (P5)\n",
-                                   law, limitForce_ ? ", normal force clipped at zero" : "", rolling[(int)rolling_], (double)material_.rollingFriction));
-  if (jkr_)
+  char muR[48] = "mu_r per type";
+  if (oneType) std::snprintf(muR, sizeof muR, "mu_r %g", (double)shown.rollingFriction);
+  PetscCall(PetscViewerASCIIPrintf(viewer, "dem: contacts: %s with damping, tangential springs and Coulomb friction between spheres and with the box faces%s; rolling resistance: %s, %s (P5)\n",
+                                   law, limitForce_ ? ", normal force clipped at zero" : "", rolling[(int)rolling_], muR));
+  if (jkr_ && oneType)
     PetscCall(PetscViewerASCIIPrintf(viewer, "dem: adhesion: JKR (P6), surface energy %g J/m^2 (work of adhesion %g J/m^2), walls %g J/m^2; bonds break up to %g m apart\n",
-                                     (double)material_.surfaceEnergy, (double)pair_.w, (double)wall_.w, (double)adhesionRange_));
+                                     (double)shown.surfaceEnergy, (double)pair_.w, (double)wall_.w, (double)adhesionRange_));
+  else if (jkr_)
+    PetscCall(PetscViewerASCIIPrintf(viewer, "dem: adhesion: JKR (P6), surface energies per type (work of adhesion %g J/m^2 between type 0's spheres), walls %g J/m^2; bonds break up to %g m apart\n",
+                                     (double)pair_.w, (double)wall_.w, (double)adhesionRange_));
   if (sjkr_) PetscCall(PetscViewerASCIIPrintf(viewer, "dem: adhesion: SJKR (LIGGGHTS' cohesion sjkr, P6), cohesion energy density %g J/m^3\n", (double)sjkrDensity_));
   if (surfaceEnergyModulus_ > 0)
     for (size_t t = 0; t < types_.size(); ++t)
@@ -454,12 +467,12 @@ PetscErrorCode Dem::View(PetscViewer viewer) const {
   const PetscReal g = std::sqrt(gravity_[0] * gravity_[0] + gravity_[1] * gravity_[1] + gravity_[2] * gravity_[2]);
   if ((jkr_ || vdw_.hamaker > 0) && g > 0 && rMax_ > 0) {
     // Bond number K = pull-off force of two equal spheres / weight of one (P7): 1.5 pi w R* for JKR,
-    // A R* / (6 z0^2) for van der Waals, with R* = R/2.
+    // A R* / (6 z0^2) for van der Waals, with R* = R/2; with type 0's density (its own w for JKR).
     auto bond = [&](PetscReal r) {
       const PetscReal pull = jkr_ ? 1.5 * PETSC_PI * pair_.w * r / 2 : vdw_.hamaker * (r / 2) / (6 * vdw_.minGap * vdw_.minGap);
-      return pull / (material_.density * 4.0 / 3.0 * PETSC_PI * r * r * r * g);
+      return pull / (types_[0].density * 4.0 / 3.0 * PETSC_PI * r * r * r * g);
     };
-    PetscCall(PetscViewerASCIIPrintf(viewer, "dem: bond number (pull-off of two equal spheres / weight of one): %g for radius %g m, %g for radius %g m\n",
+    PetscCall(PetscViewerASCIIPrintf(viewer, "dem: bond number (pull-off of two equal spheres / weight of one%s): %g for radius %g m, %g for radius %g m\n", oneType ? "" : ", type 0",
                                      (double)bond(rMin_), (double)rMin_, (double)bond(rMax_), (double)rMax_));
   }
   PetscCall(sources_.View(viewer));
