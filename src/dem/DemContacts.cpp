@@ -73,6 +73,7 @@ PetscErrorCode Dem::Rebuild() {
   PetscCall(list_.Build(a.n, a.x, a.radius, a.mass, a.id, halo_.Count(), halo_.x.data(), halo_.radius.data(), halo_.mass.data(), halo_.id.data(),
                         cutoff, skin_ + adhesionRange_, lo, hi, PairTags{a.type, halo_.type.data(), a.clump, halo_.clump.data(), table_.Count()}));
   PeriodicImages::PairImages(list_, a.n, halo_.image.data(), &pairImage_);
+  JkrPairConstants();
   for (size_t k = 0; k < list_.Size() && !springs_.empty(); ++k) {
     const auto it = springs_.find({idOf(list_.first[k]), idOf(list_.second[k])});  // lower id first
     if (it != springs_.end()) {
@@ -162,6 +163,12 @@ PetscErrorCode Dem::ExchangeSprings(const std::vector<PetscInt64> &localIds) {
   PetscFunctionReturn(0);
 }
 
+// The JKR constants of the list's pairs (HertzMindlin.hpp JkrPair), whenever the list is made or loaded.
+void Dem::JkrPairConstants() {
+  jkrPairs_.resize(jkr_ ? list_.Size() : 0);
+  for (size_t k = 0; k < jkrPairs_.size(); ++k) jkrPairs_[k] = hertz::JkrConstants(table_.Count() > 1 ? table_.Pair(list_.material[k]) : pair_, list_.rstar[k]);
+}
+
 PetscErrorCode Dem::ComputeForces(PetscReal dt) {
   PetscFunctionBeginUser;
   // The rolling and adhesion models are chosen once per scene and bound here, outside the loops.
@@ -202,6 +209,7 @@ PetscErrorCode Dem::ComputeForcesWith(PetscReal dt) {
   ParticleArrays a;
 
   PetscFunctionBeginUser;
+  PetscCheck(!JKR || jkrPairs_.size() == list_.Size(), PETSC_COMM_SELF, PETSC_ERR_PLIB, "JKR constants for %zu pairs, the list has %zu", jkrPairs_.size(), list_.Size());
   stats_ = LocalStats{};
   PetscCall(swarm_.GetArrays(&a));
   for (PetscInt p = 0; p < a.n; ++p)
@@ -275,10 +283,11 @@ PetscErrorCode Dem::ComputeForcesWith(PetscReal dt) {
     const PetscReal  dist2 = dx[0] * dx[0] + dx[1] * dx[1] + dx[2] * dx[2], rsum = hot_[ia].r + hot_[ib].r;
     PetscReal       *stored = &list_.spring[kSpringWidth * k];
     const hertz::PairMaterial &pm = MULTI ? table_.Pair(list_.material[k]) : pair_;
-    // In contact from touching on; a JKR bond holds until its break overlap (P6).
+    // In contact from touching on; a JKR bond holds until its break overlap (P6). A bonded pair touched
+    // at the last evaluation: the byte is read first, so the springs' line is loaded only for those.
     const bool inContact =
       dist2 < rsum * rsum ||
-      (JKR && stored[kJkrBonded] != 0 && rsum - std::sqrt(dist2) > hertz::JkrBreakOverlap(pm, list_.rstar[k]));
+      (JKR && list_.touching[k] && stored[kJkrBonded] != 0 && rsum - std::sqrt(dist2) > jkrPairs_[k].breakOverlap);
     if constexpr (NEAR) {  // along the line of centres across the gap: van der Waals (P7) and lubrication (P8)
       const PetscReal rangeSum = rsum + adhesionRange_;
       if (dist2 < rangeSum * rangeSum) {
@@ -310,7 +319,7 @@ PetscErrorCode Dem::ComputeForcesWith(PetscReal dt) {
     for (int e = 0; e < 3; ++e) nrm[e] = dx[e] * inv, rw[e] = A.r * A.w[e] + B.r * B.w[e], wrel[e] = A.w[e] - B.w[e];
     Cross(rw, nrm, wxn);
     for (int e = 0; e < 3; ++e) vrel[e] = A.v[e] - B.v[e] - wxn[e];  // surface of A against surface of B
-    hertz::NormalLaw law = NormalLawAt<COH, LIN>(pm, linearKn_, delta, Rstar, xi);
+    hertz::NormalLaw law = NormalLawAt<COH, LIN>(pm, linearKn_, delta, Rstar, xi, JKR ? &jkrPairs_[k] : nullptr);
     if constexpr (SJKR) law.Fel -= sjkrDensity_ * hertz::SjkrPairArea(A.r, B.r, dist);
     const PetscReal        Sn = law.Sn, Fn = hertz::Contact(pm, law, nrm, list_.sqrtMstar[k], vrel, dt, xi, F, Ft);
     Cross(nrm, Ft, nxF);

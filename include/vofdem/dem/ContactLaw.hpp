@@ -13,10 +13,10 @@ namespace vofdem {
 inline constexpr int kNoCohesion = 0, kJkr = 1, kSjkr = 2;
 
 template <int COH, bool LIN>
-inline hertz::NormalLaw NormalLawAt(const hertz::PairMaterial &c, PetscReal kLinear, PetscReal delta, PetscReal Rstar, PetscReal *history) {
+inline hertz::NormalLaw NormalLawAt(const hertz::PairMaterial &c, PetscReal kLinear, PetscReal delta, PetscReal Rstar, PetscReal *history, const hertz::JkrPair *jkr = nullptr) {
   if constexpr (COH == kJkr) {
     history[kJkrBonded] = 1;
-    return hertz::JkrNormal(c, delta, Rstar, &history[kJkrRadius]);
+    return jkr ? hertz::JkrNormal(c, *jkr, delta, Rstar, &history[kJkrRadius]) : hertz::JkrNormal(c, delta, Rstar, &history[kJkrRadius]);
   } else if constexpr (LIN) {
     return hertz::LinearNormal(kLinear, delta);
   } else {

@@ -119,6 +119,7 @@ private:
   PetscErrorCode ReadParticles();                       // DemFill.cpp: -dem_particles_file
   void           StoreFilled(const ParticleArrays &a, PetscInt p, PetscInt64 id, const PetscReal x[3], PetscReal r, std::uint64_t seed) const;
   PetscErrorCode Rebuild();                             // DemContacts.cpp: migrate, halo, list, springs
+  void           JkrPairConstants();                    // DemContacts.cpp: jkrPairs_ for the list as it is
   PetscErrorCode ComputeForces(PetscReal dt);           // DemContacts.cpp
   // cohesion: 0 none, 1 JKR, 2 SJKR; near: forces across a gap (van der Waals and/or lubrication)
   template <hertz::Rolling model, int cohesion, bool near, bool linear, bool multi>
@@ -162,6 +163,7 @@ private:
   Halo          halo_;
   NeighbourList list_;
   std::vector<unsigned char> pairImage_;  // periodic image of each list pair (PeriodicImages.hpp)
+  std::vector<hertz::JkrPair> jkrPairs_;  // JKR constants of each list pair (with -dem_cohesion jkr), made with the list
   WallList      walls_;
   WallSet       wallSet_;  // -dem_walls: planes, cylinders, STL meshes (Walls.hpp)
   ContactHistory springs_;  // only during Rebuild()
