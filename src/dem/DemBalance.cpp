@@ -1,8 +1,10 @@
 // Load balancing of DEM-only scenes (-dem_balance histogram): at a neighbour-list rebuild, when the
-// largest number of particles on a rank exceeds -dem_balance_threshold times the mean, the grid's
-// ownership ranges are recomputed from histograms of the particle counts per cell layer, one per
-// direction that is split over several ranks (a DMDA's ranges are a tensor product: each direction's
-// cuts equalise the counts of its slabs). The grid then rebuilds its DMDAs, the swarm takes the new
+// largest load of a rank exceeds -dem_balance_threshold times the mean, the grid's ownership ranges
+// are recomputed from histograms of the load per cell layer, one per direction that is split over
+// several ranks (a DMDA's ranges are a tensor product: each direction's cuts equalise the loads of
+// its slabs). A particle's load is 1 plus -dem_balance_contact_weight times its contacts at the last
+// force evaluation: a settling pile's touching particles cost several times a falling one's (D7's
+// tungsten pile on 2 ranks, by counts alone: 6.0 s of forces on the pile's rank, 0.5 s on the other). The grid then rebuilds its DMDAs, the swarm takes the new
 // vertex DMDA, the halo the new rank boxes, and every particle goes straight to its new owner.
 // Coupled scenes must not do this: there the fluid cells decide the decomposition (ARCHITECTURE.md).
 #include "vofdem/dem/Dem.hpp"
@@ -33,17 +35,18 @@ PetscErrorCode Dem::SetBalanceFromOptions(PetscOptionItems *PetscOptionsObject) 
   balance_ = (PetscBool)(chosen[0] == "histogram");
   PetscCall(opt.Real("-balance_threshold", "Repartition when the largest particle count of a rank exceeds this times the mean (checked at rebuilds)", "-",
                      &balanceThreshold_, RealRange::Closed(1, PETSC_MAX_REAL)));
+  PetscCall(opt.Real("-balance_contact_weight", "Load of a contact in particles' (a particle's load is 1 + this x its contacts)", "-", &balanceContactWeight_, RealRange::NonNegative()));
   PetscCall(opt.Bool("-balance_monitor", "Print the particles per rank before and after each repartition", &balanceMonitor_));
   PetscFunctionReturn(0);
 }
 
 namespace {
 
-// Cuts n cell layers with counts h into m slabs of at least one layer whose particle counts are as
-// even as the layers allow: slab r ends at the layer boundary closest to (r+1)/m of the total.
-std::vector<PetscInt> SplitHistogram(const std::vector<PetscInt> &h, PetscInt m) {
+// Cuts n cell layers with loads h into m slabs of at least one layer whose loads are as even as the
+// layers allow: slab r ends at the layer boundary closest to (r+1)/m of the total.
+std::vector<PetscInt> SplitHistogram(const std::vector<PetscReal> &h, PetscInt m) {
   const PetscInt         n = (PetscInt)h.size();
-  std::vector<PetscInt64> cum(n + 1, 0);
+  std::vector<PetscReal> cum(n + 1, 0);
   for (PetscInt i = 0; i < n; ++i) cum[i + 1] = cum[i] + h[i];
   std::vector<PetscInt> slabs(m);
   PetscInt              start = 0;
@@ -59,17 +62,18 @@ std::vector<PetscInt> SplitHistogram(const std::vector<PetscInt> &h, PetscInt m)
   return slabs;
 }
 
-// Largest / mean particles per rank, and the counts of all ranks.
-PetscErrorCode Imbalance(MPI_Comm comm, PetscInt n, PetscReal *ratio, std::vector<PetscInt> *counts) {
+// Largest / mean load per rank, and the particle counts of all ranks.
+PetscErrorCode Imbalance(MPI_Comm comm, PetscInt n, PetscReal load, PetscReal *ratio, std::vector<PetscInt> *counts) {
   PetscMPIInt size;
 
   PetscFunctionBeginUser;
   PetscCallMPI(MPI_Comm_size(comm, &size));
   counts->resize(size);
   PetscCallMPI(MPI_Allgather(&n, 1, MPIU_INT, counts->data(), 1, MPIU_INT, comm));
-  PetscInt64 total = 0, most = 0;
-  for (PetscInt c : *counts) total += c, most = std::max<PetscInt64>(most, c);
-  *ratio = total ? (PetscReal)most * size / total : 1;
+  PetscReal most, total;
+  PetscCallMPI(MPI_Allreduce(&load, &most, 1, MPIU_REAL, MPI_MAX, comm));
+  PetscCallMPI(MPI_Allreduce(&load, &total, 1, MPIU_REAL, MPI_SUM, comm));
+  *ratio = total > 0 ? most * size / total : 1;
   PetscFunctionReturn(0);
 }
 
@@ -81,6 +85,49 @@ std::string Describe(const std::vector<PetscInt> &counts) {
 }
 
 }  // namespace
+
+// Contacts of each of the n local particles at the last force evaluation: touching pairs (JKR bonds
+// included) and box faces.
+void Dem::CountContacts(PetscInt n, std::vector<PetscInt> *c) const {
+  c->assign(n, 0);
+  for (size_t k = 0; k < list_.Size(); ++k)
+    if (list_.touching[k]) {
+      if (list_.first[k] < n) ++(*c)[list_.first[k]];
+      if (list_.second[k] < n) ++(*c)[list_.second[k]];
+    }
+  for (size_t k = 0; k < walls_.Size(); ++k)
+    if (walls_.touching[k] && walls_.particle[k] < n) ++(*c)[walls_.particle[k]];
+}
+
+PetscErrorCode Dem::BalanceLoad(PetscReal *load) const {
+  PetscInt              n;
+  std::vector<PetscInt> c;
+
+  PetscFunctionBeginUser;
+  PetscCall(DMSwarmGetLocalSize(swarm_.Dm(), &n));
+  CountContacts(n, &c);
+  *load = n;
+  for (PetscInt k : c) *load += balanceContactWeight_ * k;
+  PetscFunctionReturn(0);
+}
+
+// At the start of Rebuild, while the list's indices are still this rank's particles': each local
+// particle's contacts at the last force evaluation (pairs and box faces) as loads per cell layer of
+// every direction, and their sum on this rank. Balance() adds them to the particle counts.
+void Dem::BalanceContactLoads(const ParticleArrays &a) {
+  const PetscInt *nc = grid_->Cells();
+  const PetscReal *lo = grid_->Lower(), *h = grid_->Spacing();
+  balanceLoads_.assign(nc[0] + nc[1] + nc[2], 0);
+  balanceLocalContacts_ = 0;
+  if (!balance_ || balanceContactWeight_ == 0) return;
+  CountContacts(a.n, &balanceContacts_);
+  for (PetscInt p = 0; p < a.n; ++p) {
+    if (!balanceContacts_[p]) continue;
+    const PetscReal w = balanceContactWeight_ * balanceContacts_[p];
+    balanceLocalContacts_ += w;
+    for (int d = 0, off = 0; d < 3; off += nc[d], ++d) balanceLoads_[off + std::min(nc[d] - 1, std::max<PetscInt>(0, (PetscInt)((a.x[3 * p + d] - lo[d]) / h[d])))] += w;
+  }
+}
 
 PetscErrorCode Dem::Balance(PetscBool *repartitioned) {
   PetscMPIInt           size;
@@ -94,7 +141,7 @@ PetscErrorCode Dem::Balance(PetscBool *repartitioned) {
   if (!balance_ || size == 1) PetscFunctionReturn(0);
   PetscInt n;
   PetscCall(DMSwarmGetLocalSize(swarm_.Dm(), &n));
-  PetscCall(Imbalance(comm_, n, &before, &countsBefore));
+  PetscCall(Imbalance(comm_, n, n + balanceLocalContacts_, &before, &countsBefore));
   if (before <= balanceThreshold_) PetscFunctionReturn(0);
 
   // Histograms of the cell layers along every split direction, summed over ranks.
@@ -105,20 +152,21 @@ PetscErrorCode Dem::Balance(PetscBool *repartitioned) {
   const PetscInt *nc = grid_->Cells();
   const PetscReal *lo = grid_->Lower(), *h = grid_->Spacing();
   auto layer = [&](PetscReal x, int d) { return std::min(nc[d] - 1, std::max<PetscInt>(0, (PetscInt)((x - lo[d]) / h[d]))); };
-  std::vector<PetscInt> hist(nc[0] + nc[1] + nc[2], 0), global(hist.size());
+  std::vector<PetscReal> hist(balanceLoads_), global(hist.size());
+  hist.resize(nc[0] + nc[1] + nc[2], 0);
   PetscCall(swarm_.GetArrays(&a));
   for (PetscInt p = 0; p < a.n; ++p)
     for (int d = 0, off = 0; d < 3; off += nc[d], ++d)
-      if (m[d] > 1) ++hist[off + layer(a.x[3 * p + d], d)];
+      if (m[d] > 1) hist[off + layer(a.x[3 * p + d], d)] += 1;
   PetscCall(swarm_.RestoreArrays(&a));
-  PetscCallMPI(MPI_Allreduce(hist.data(), global.data(), (int)hist.size(), MPIU_INT, MPI_SUM, comm_));
-  // A direction is cut anew only if that evens its slabs' counts (layers are whole cells, so a bed a
+  PetscCallMPI(MPI_Allreduce(hist.data(), global.data(), (int)hist.size(), MPIU_REAL, MPI_SUM, comm_));
+  // A direction is cut anew only if that evens its slabs' loads (layers are whole cells, so a bed a
   // few cells high may allow no better cut than the present one) by at least 2 %, so that a lattice
   // plane crossing a layer boundary does not make the cut flip back and forth.
   auto unevenness = [&](const PetscInt *counts, PetscInt ranks, PetscInt off) {
-    PetscInt64 most = 0, total = 0;
+    PetscReal most = 0, total = 0;
     for (PetscInt r = 0, c = 0; r < ranks; c += counts[r], ++r) {
-      PetscInt64 sum = 0;
+      PetscReal sum = 0;
       for (PetscInt i = c; i < c + counts[r]; ++i) sum += global[off + i];
       most = std::max(most, sum), total += sum;
     }
@@ -129,10 +177,13 @@ PetscErrorCode Dem::Balance(PetscBool *repartitioned) {
   for (int d = 0, off = 0; d < 3; off += nc[d], ++d) {
     slabs[d].assign(l[d], l[d] + m[d]);
     if (m[d] == 1) continue;
-    const auto cut = SplitHistogram(std::vector<PetscInt>(global.begin() + off, global.begin() + off + nc[d]), m[d]);
+    const auto cut = SplitHistogram(std::vector<PetscReal>(global.begin() + off, global.begin() + off + nc[d]), m[d]);
     if (unevenness(cut.data(), m[d], off) < unevenness(l[d], m[d], off) * (1 - 0.02)) slabs[d] = cut, changed = true;
   }
   if (!changed) PetscFunctionReturn(0);  // the layers allow no better cut
+  PetscReal predicted = 1;  // the new slabs' largest / mean load, the worst split direction
+  for (int d = 0, off = 0; d < 3; off += nc[d], ++d)
+    if (m[d] > 1) predicted = std::max(predicted, unevenness(slabs[d].data(), m[d], off));
 
   PetscCall(grid_->Repartition(slabs));
   PetscCall(DMSwarmSetCellDM(swarm_.Dm(), grid_->VertexDM()));
@@ -177,11 +228,12 @@ PetscErrorCode Dem::Balance(PetscBool *repartitioned) {
     PetscCheck(total0 == total1, comm_, PETSC_ERR_PLIB, "repartition lost %" PetscInt_FMT " of %" PetscInt_FMT " particles", total0 - total1, total0);
   }
   PetscCall(DMSwarmGetLocalSize(swarm_.Dm(), &n));
-  PetscCall(Imbalance(comm_, n, &after, &countsAfter));
+  PetscCall(Imbalance(comm_, n, n, &after, &countsAfter));
   ++repartitions_;
   if (balanceMonitor_)
-    PetscCall(PetscPrintf(comm_, "dem: repartition %" PetscInt_FMT " at rebuild %" PetscInt_FMT ": particles per rank, largest / mean, %.3f%s -> %.3f%s\n", repartitions_,
-                        rebuilds_, (double)before, Describe(countsBefore).c_str(), (double)after, Describe(countsAfter).c_str()));
+    PetscCall(PetscPrintf(comm_,
+                          "dem: repartition %" PetscInt_FMT " at rebuild %" PetscInt_FMT ": load (particles + %g x contacts) largest / mean %.3f -> %.3f (by layers); particles per rank%s -> %s\n",
+                          repartitions_, rebuilds_, (double)balanceContactWeight_, (double)before, (double)predicted, Describe(countsBefore).c_str(), Describe(countsAfter).c_str()));
   *repartitioned = PETSC_TRUE;
   PetscFunctionReturn(0);
 }

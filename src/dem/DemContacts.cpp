@@ -45,6 +45,7 @@ PetscErrorCode Dem::Rebuild() {
     auto            &h = springs_[PairKey::Wall(a.id[walls_.particle[k]], walls_.wall[k])];
     std::copy(s, s + kSpringWidth, h.begin());
   }
+  if (balance_) BalanceContactLoads(a);  // -dem_balance: each particle's contacts weigh in (DemBalance.cpp)
   // Periodic directions: positions back into the box before migration (PeriodicImages.hpp).
   if (halo_.Images().Any()) halo_.Images().Wrap(a.n, a.x);
   wallSet_.SaveSprings(a, &springs_);

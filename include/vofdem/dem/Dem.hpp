@@ -100,6 +100,9 @@ public:
   // The fluid coupling (Coupling.hpp) sets the swarm's fluid_* fields; the integrator then applies them.
   void               SetFluidCoupled(bool on) { fluidCoupled_ = on; }
   bool               Balancing() const { return balance_; }  // -dem_balance histogram
+  // This rank's load as -dem_balance weighs it: its particles plus -dem_balance_contact_weight x their
+  // contacts at the last force evaluation (DemBalance.cpp).
+  PetscErrorCode BalanceLoad(PetscReal *load) const;
   // The particles' wettability (-coupling_contact_angle): every kick adds Princen's capillary force at the
   // particle's current height above its fluid_surface_plane (Capillary.hpp), sigma in N/m, theta in rad.
   void               SetCapillary(PetscReal sigma, PetscReal theta) { capSigma_ = sigma, capTheta_ = theta; }
@@ -134,6 +137,12 @@ private:
   PetscErrorCode GatherSprings();
   PetscBool      balance_ = PETSC_FALSE;  // -dem_balance histogram
   PetscReal      balanceThreshold_ = 1.2;
+  PetscReal      balanceContactWeight_ = 5;    // -dem_balance_contact_weight
+  std::vector<PetscReal> balanceLoads_;        // contact loads per cell layer (x, y, z layers), BalanceContactLoads()
+  std::vector<PetscInt>  balanceContacts_;     // scratch: contacts per local particle
+  PetscReal              balanceLocalContacts_ = 0;
+  void                   BalanceContactLoads(const ParticleArrays &a);
+  void                   CountContacts(PetscInt n, std::vector<PetscInt> *c) const;
   PetscBool      balanceMonitor_ = PETSC_TRUE;
   PetscInt       repartitions_ = 0;
   struct SavedState;  // DemSaveLoad.cpp: what is archived besides members
