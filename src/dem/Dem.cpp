@@ -133,8 +133,11 @@ PetscErrorCode Dem::SetFromOptions(MPI_Comm comm) {
   }
   if (jkr_)
     for (size_t t = 0; t < types_.size(); ++t)
-      if (types_[t].surfaceEnergy == 0)
-        VofdemInputError(comm, "option -dem_cohesion jkr needs a surface energy > 0 for every type: type %s has none (-dem_type_%s_surface_energy; a material file's value is not overridden by -dem_surface_energy)", typeNames_[t].c_str(), typeNames_[t].c_str());
+      if (types_[t].surfaceEnergy == 0) {
+        if (types_.size() == 1 && typeNames_[0] == "default") VofdemInputError(comm, "option -dem_cohesion jkr needs a surface energy > 0 for every type (-dem_surface_energy)");
+        VofdemInputError(comm, "option -dem_cohesion jkr needs a surface energy > 0 for every type: type %s has none (-dem_type_%s_surface_energy; a material file's value is not overridden by -dem_surface_energy)",
+                         typeNames_[t].c_str(), typeNames_[t].c_str());
+      }
   const PetscReal rFillMax = fillSizes_.MaxRadius();
   PetscCall(wallSet_.SetFromOptions(comm));
   PetscCall(out_.SetFromOptions(comm));

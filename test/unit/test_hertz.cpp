@@ -68,3 +68,36 @@ TEST(Hertz, DampingGivesTheInputRestitutionAtAnySpeed) {
   for (double e : {0.3, 0.6, 0.9})
     for (double v0 : {0.05, 0.5, 5.0}) EXPECT_NEAR(Impact(e, v0).restitution / e, 1.0, 0.02) << "e " << e << " v0 " << v0;
 }
+
+// JKR (P6): the contact radius returned for an overlap solves delta = a^2/R* - sqrt(2 pi w a/E*) on the
+// stable branch, from any starting radius (none, a smaller or a larger one); the force is
+// 4 E* a^3/(3 R*) - sqrt(8 pi w E* a^3), at zero overlap with a^3 = 2 pi w R*^2/E* and F = -(4/3) pi w R*.
+TEST(Jkr, ContactRadiusSolvesTheOverlapRelationFromAnyStart) {
+  const double R = 5e-6, E = 3.4e9, nu = 0.28, w = 3e-4;
+  const auto   c     = h::MakePairMaterial(E, nu, E, nu, 0.5, 0.3, false, w);
+  const double Es    = c.Estar, k = std::sqrt(2 * M_PI * w / Es);
+  const double ac    = std::cbrt(M_PI * w * R * R / (8 * Es));
+  const double dmin  = ac * ac / R - k * std::sqrt(ac);  // the lowest overlap of the stable branch
+  const auto   delta = [&](double a) { return a * a / R - k * std::sqrt(a); };
+  for (double f : {0.999, 0.9, 0.5, 0.0, -0.5, -2.0, -20.0, -200.0}) {
+    const double d = f * dmin;  // from just above the minimum to compressions 200 times its depth
+    for (double start : {0.0, 0.5 * ac, 3 * ac, 100 * ac}) {
+      double     a   = start;
+      const auto law = h::JkrNormal(c, d, R, &a);
+      ASSERT_GE(a, ac * (1 - 1e-14));
+      EXPECT_NEAR(delta(a), d, 1e-12 * std::fabs(dmin)) << "overlap " << d << ", start " << start;
+      EXPECT_NEAR(law.Fel, 4 * Es * a * a * a / (3 * R) - std::sqrt(8 * M_PI * w * Es * a * a * a), 1e-12 * 1.5 * M_PI * w * R);
+      EXPECT_DOUBLE_EQ(law.Sn, 2 * Es * a);
+    }
+  }
+  double a = 0;
+  EXPECT_NEAR(h::JkrNormal(c, 0.0, R, &a).Fel, -4.0 / 3.0 * M_PI * w * R, 1e-12 * M_PI * w * R);
+  EXPECT_NEAR(a * a * a, 2 * M_PI * w * R * R / Es, 1e-12 * 2 * M_PI * w * R * R / Es);
+  // The largest tension, -1.5 pi w R* at a^3 = 9 pi w R*^2/(8 E*), and -(5/6) pi w R* where the bond
+  // breaks under displacement control (a_c, the lowest overlap).
+  const double af = std::cbrt(9 * M_PI * w * R * R / (8 * Es));
+  a = 0;
+  EXPECT_NEAR(h::JkrNormal(c, delta(af), R, &a).Fel, -1.5 * M_PI * w * R, 1e-12 * M_PI * w * R);
+  a = 0;
+  EXPECT_NEAR(h::JkrNormal(c, dmin, R, &a).Fel, -5.0 / 6.0 * M_PI * w * R, 1e-6 * M_PI * w * R);
+}

@@ -88,39 +88,41 @@ inline NormalLaw HertzNormal(const PairMaterial &c, PetscReal delta, PetscReal R
   return {2.0 / 3.0 * Sn * delta, Sn, 0};
 }
 
-// JKR (P6): delta = a^2/R* - sqrt(2 pi w a / E*), F = 4 E* a^3/(3 R*) - sqrt(8 pi w E* a^3), S_n = 2 E* a.
-// The contact radius is found by Newton's method on the stable branch a >= a_c = (pi w R*^2 / (8 E*))^(1/3),
-// where delta(a) is increasing and convex, from the previous step's a (history) or from a_c.
-// Friction is bounded by mu (F_n + 2 F_c), F_c = 1.5 pi w R* (Thornton and Yin 1991).
 // The overlap at which a JKR bond breaks under displacement control: -(3/4) (pi^2 w^2 R* / E*^2)^(1/3) (P6).
 inline PetscReal JkrBreakOverlap(const PairMaterial &c, PetscReal Rstar) {
   return -0.75 * std::cbrt(PETSC_PI * PETSC_PI * c.w * c.w * Rstar / (c.Estar * c.Estar));
 }
 
-// What JKR needs of a pair besides its overlap, fixed by the material and R*: a_c, k = sqrt(2 pi w/E*)
-// and the break overlap. The neighbour list's pairs keep them (Dem::jkrPairs_): two cube roots per
-// contact and step were 9 % of a settling tungsten powder's run.
+// What JKR needs of a pair besides its overlap, fixed by the material and R*: sqrt(a_c), k = sqrt(2 pi
+// w/E*), 1/R*, sqrt(8 pi w E*) and the break overlap. The neighbour list's pairs keep them
+// (Dem::jkrPairs_): two cube roots per contact and step were 9 % of a settling tungsten powder's run.
 struct JkrPair {
-  PetscReal ac = 0, k = 0, breakOverlap = 0;
+  PetscReal sc = 0, k = 0, invR = 0, pull = 0, breakOverlap = 0;
 };
 inline JkrPair JkrConstants(const PairMaterial &c, PetscReal Rstar) {
-  return {std::cbrt(PETSC_PI * c.w * Rstar * Rstar / (8 * c.Estar)), std::sqrt(2 * PETSC_PI * c.w / c.Estar), JkrBreakOverlap(c, Rstar)};
+  const PetscReal ac = std::cbrt(PETSC_PI * c.w * Rstar * Rstar / (8 * c.Estar));
+  return {std::sqrt(ac), std::sqrt(2 * PETSC_PI * c.w / c.Estar), 1 / Rstar, std::sqrt(8 * PETSC_PI * c.w * c.Estar), JkrBreakOverlap(c, Rstar)};
 }
 
+// JKR (P6): delta = a^2/R* - sqrt(2 pi w a / E*), F = 4 E* a^3/(3 R*) - sqrt(8 pi w E* a^3), S_n = 2 E* a.
+// The contact radius is found on the stable branch a >= a_c = (pi w R*^2 / (8 E*))^(1/3), where delta(a)
+// rises (a_c is its minimum), by Newton's method in s = sqrt(a): delta = s^4/R* - k s is convex in s
+// too, and needs no square root or division but the step's. From the previous step's a (history) or
+// from a_c. Friction is bounded by mu (F_n + 2 F_c), F_c = 1.5 pi w R* (Thornton and Yin 1991).
 inline NormalLaw JkrNormal(const PairMaterial &c, const JkrPair &j, PetscReal delta, PetscReal Rstar, PetscReal *a) {
-  const PetscReal ac = j.ac, k = j.k;
-  PetscReal       x  = std::max(*a, 1.001 * ac);
+  const PetscReal sc = j.sc, k = j.k, iR = j.invR;
+  PetscReal       s  = std::sqrt(std::max(*a, 1.001 * sc * sc));
   for (int it = 0; it < 60; ++it) {
-    const PetscReal sx = std::sqrt(x), f = x * x / Rstar - k * sx - delta, df = 2 * x / Rstar - 0.5 * k / sx;
-    PetscReal       next = df > 0 ? x - f / df : 2 * x;
-    if (next < ac) next = ac;
-    const bool done = std::abs(next - x) <= 1e-13 * x;
-    x               = next;
+    const PetscReal s2 = s * s, f = s2 * s2 * iR - k * s - delta, df = 4 * s2 * s * iR - k;
+    PetscReal       next = df > 0 ? s - f / df : 2 * s;
+    if (next < sc) next = sc;
+    const bool done = std::abs(next - s) <= 1e-13 * s;
+    s               = next;
     if (done) break;
   }
+  const PetscReal x = s * s, s3 = x * s;
   *a = x;
-  const PetscReal a3 = x * x * x;
-  return {4 * c.Estar * a3 / (3 * Rstar) - std::sqrt(8 * PETSC_PI * c.w * c.Estar * a3), 2 * c.Estar * x, 3 * PETSC_PI * c.w * Rstar};
+  return {4.0 / 3.0 * c.Estar * s3 * s3 * iR - j.pull * s3, 2 * c.Estar * x, 3 * PETSC_PI * c.w * Rstar};
 }
 inline NormalLaw JkrNormal(const PairMaterial &c, PetscReal delta, PetscReal Rstar, PetscReal *a) { return JkrNormal(c, JkrConstants(c, Rstar), delta, Rstar, a); }
 
