@@ -44,13 +44,21 @@ PetscErrorCode NeighbourList::Build(PetscInt nLocal, const PetscReal *xLocal, co
     ++cellStart_[cellOf_[p] + 1];
   }
   for (PetscInt c = 0; c < ncell; ++c) cellStart_[c + 1] += cellStart_[c];
+  auto rad = [&](PetscInt p) { return p < nLocal ? rLocal[p] : rGhost[p - nLocal]; };
+  // Positions and radii copied in cell order too: the candidates of a cell are then read from one
+  // stretch of memory, not gathered from the local and ghost arrays (the gather was most of Build).
+  packed_.resize(n);
   {
     std::vector<PetscInt> fill(cellStart_.begin(), cellStart_.end() - 1);
-    for (PetscInt p = 0; p < n; ++p) order_[fill[cellOf_[p]]++] = p;
+    for (PetscInt p = 0; p < n; ++p) {
+      const PetscInt k = fill[cellOf_[p]]++;
+      const PetscReal *x = pos(p);
+      order_[k]  = p;
+      packed_[k] = {x[0], x[1], x[2], rad(p)};
+    }
   }
   first.clear();
   second.clear();
-  auto rad = [&](PetscInt p) { return p < nLocal ? rLocal[p] : rGhost[p - nLocal]; };
   const bool clumped = tags.clumpLocal != nullptr;
   for (PetscInt i = 0; i < nLocal; ++i) {
     const PetscReal *xi = pos(i), ri = rLocal[i] + skin;
@@ -59,24 +67,26 @@ PetscErrorCode NeighbourList::Build(PetscInt nLocal, const PetscReal *xLocal, co
     cellOf(xi, c);
     // Stencil half-width in cells: a partner within r_i + r_max + skin lies at most ceil(reach / width) cells away.
     for (int d = 0; d < 3; ++d) span[d] = std::max<PetscInt>(1, (PetscInt)std::ceil((ri + rMax) * inv[d]));
+    // The cells of a row along x are consecutive, and so are their particles in order_: one range per
+    // row (the per-cell loop over mostly empty small cells was most of Build's time).
+    const PetscInt x0 = std::max<PetscInt>(0, c[0] - span[0]), x1 = std::min(nc[0] - 1, c[0] + span[0]);
     for (PetscInt dz = -span[2]; dz <= span[2]; ++dz)
-      for (PetscInt dy = -span[1]; dy <= span[1]; ++dy)
-        for (PetscInt dx = -span[0]; dx <= span[0]; ++dx) {
-          const PetscInt cx = c[0] + dx, cy = c[1] + dy, cz = c[2] + dz;
-          if (cx < 0 || cy < 0 || cz < 0 || cx >= nc[0] || cy >= nc[1] || cz >= nc[2]) continue;
-          const PetscInt cell = cx + nc[0] * (cy + nc[1] * cz);
-          for (PetscInt k = cellStart_[cell]; k < cellStart_[cell + 1]; ++k) {
-            const PetscInt j = order_[k];
-            if (j < nLocal && j <= i) continue;  // each local pair once; ghost pairs from the local side
-            if (clumped && clumpI >= 0 && clumpI == (j < nLocal ? tags.clumpLocal[j] : tags.clumpGhost[j - nLocal])) continue;  // one rigid body (P10)
-            const PetscReal *xj = pos(j);
-            const PetscReal  ex = xi[0] - xj[0], ey = xi[1] - xj[1], ez = xi[2] - xj[2], c = ri + rad(j);
-            if (ex * ex + ey * ey + ez * ez < c * c) {
-              first.push_back(i);
-              second.push_back(j);
-            }
+      for (PetscInt dy = -span[1]; dy <= span[1]; ++dy) {
+        const PetscInt cy = c[1] + dy, cz = c[2] + dz;
+        if (cy < 0 || cz < 0 || cy >= nc[1] || cz >= nc[2]) continue;
+        const PetscInt row = nc[0] * (cy + nc[1] * cz);
+        for (PetscInt k = cellStart_[row + x0], end = cellStart_[row + x1 + 1]; k < end; ++k) {
+          const PetscInt j = order_[k];
+          if (j < nLocal && j <= i) continue;  // each local pair once; ghost pairs from the local side
+          if (clumped && clumpI >= 0 && clumpI == (j < nLocal ? tags.clumpLocal[j] : tags.clumpGhost[j - nLocal])) continue;  // one rigid body (P10)
+          const PetscReal *xj = packed_[k].data();
+          const PetscReal  ex = xi[0] - xj[0], ey = xi[1] - xj[1], ez = xi[2] - xj[2], c = ri + xj[3];
+          if (ex * ex + ey * ey + ez * ez < c * c) {
+            first.push_back(i);
+            second.push_back(j);
           }
         }
+      }
   }
   spring.assign(kSpringWidth * first.size(), 0);
   touching.assign(first.size(), 0);

@@ -64,6 +64,7 @@ public:
 
 private:
   std::vector<PetscInt> cellStart_, cellOf_, order_;
+  std::vector<std::array<PetscReal, 4>> packed_;  // x, y, z, r in order_'s order
 };
 
 // Candidate wall contacts, built with the neighbour list: every local particle within its radius
