@@ -71,6 +71,8 @@ PetscErrorCode Simulation::SetFromOptions() {
     PetscCall(coupling_->SetFromOptions(comm_));
     if (!(physics_.dem && physics_.flow)) coupling_.reset();
     else PetscCall(coupling_->CheckParticleSize(grid_, 2 * dem_->Radius()));
+    // The particles' fluid_* arrays are taken from the start (the DEM's set-up already reads some).
+    if (coupling_) dem_->UseFluidFields();
     // The kernels and deposits live on the flow's decomposition: a DEM repartition would leave particles
     // outside their rank's fluid cells (DemBalance.cpp).
     if (coupling_ && dem_->Balancing())

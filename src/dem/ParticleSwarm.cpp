@@ -63,6 +63,13 @@ PetscErrorCode ParticleSwarm::GetArrays(ParticleArrays *a) const {
   PetscCall(DMSwarmGetField(swarm_, field::type, nullptr, nullptr, (void **)&a->type));
   PetscCall(DMSwarmGetField(swarm_, field::clump, nullptr, nullptr, (void **)&a->clump));
   PetscCall(DMSwarmGetField(swarm_, field::rigid, nullptr, nullptr, (void **)&a->rigid));
+  // The fluid's fields only with a coupling (Dem::SetFluidCoupled): each lookup is a scan of the
+  // registered names (PetscStrcmp), and a DEM-only step takes the arrays several times.
+  if (!fluidFields_) {
+    a->fluidDrag = a->fluidVelocity = a->fluidForce = a->fluidImpulse = a->fluidAddedMass = a->fluidExplicitImpulse = nullptr;
+    a->fluidCapillaryImpulse = a->fluidSurfacePlane = a->fluidRotationalDrag = a->fluidRotation = a->fluidViscosity = nullptr;
+    PetscFunctionReturn(0);
+  }
   PetscCall(DMSwarmGetField(swarm_, field::fluidDrag, nullptr, nullptr, (void **)&a->fluidDrag));
   PetscCall(DMSwarmGetField(swarm_, field::fluidVelocity, nullptr, nullptr, (void **)&a->fluidVelocity));
   PetscCall(DMSwarmGetField(swarm_, field::fluidForce, nullptr, nullptr, (void **)&a->fluidForce));
@@ -82,17 +89,19 @@ PetscErrorCode ParticleSwarm::RestoreArrays(ParticleArrays *a) const {
   PetscFunctionBeginUser;
 
   PetscCall(DMSwarmRestoreField(swarm_, field::rigid, nullptr, nullptr, (void **)&a->rigid));
-  PetscCall(DMSwarmRestoreField(swarm_, field::fluidViscosity, nullptr, nullptr, (void **)&a->fluidViscosity));
-  PetscCall(DMSwarmRestoreField(swarm_, field::fluidRotation, nullptr, nullptr, (void **)&a->fluidRotation));
-  PetscCall(DMSwarmRestoreField(swarm_, field::fluidRotationalDrag, nullptr, nullptr, (void **)&a->fluidRotationalDrag));
-  PetscCall(DMSwarmRestoreField(swarm_, field::fluidSurfacePlane, nullptr, nullptr, (void **)&a->fluidSurfacePlane));
-  PetscCall(DMSwarmRestoreField(swarm_, field::fluidCapillaryImpulse, nullptr, nullptr, (void **)&a->fluidCapillaryImpulse));
-  PetscCall(DMSwarmRestoreField(swarm_, field::fluidExplicitImpulse, nullptr, nullptr, (void **)&a->fluidExplicitImpulse));
-  PetscCall(DMSwarmRestoreField(swarm_, field::fluidAddedMass, nullptr, nullptr, (void **)&a->fluidAddedMass));
-  PetscCall(DMSwarmRestoreField(swarm_, field::fluidImpulse, nullptr, nullptr, (void **)&a->fluidImpulse));
-  PetscCall(DMSwarmRestoreField(swarm_, field::fluidForce, nullptr, nullptr, (void **)&a->fluidForce));
-  PetscCall(DMSwarmRestoreField(swarm_, field::fluidVelocity, nullptr, nullptr, (void **)&a->fluidVelocity));
-  PetscCall(DMSwarmRestoreField(swarm_, field::fluidDrag, nullptr, nullptr, (void **)&a->fluidDrag));
+  if (fluidFields_) {
+    PetscCall(DMSwarmRestoreField(swarm_, field::fluidViscosity, nullptr, nullptr, (void **)&a->fluidViscosity));
+    PetscCall(DMSwarmRestoreField(swarm_, field::fluidRotation, nullptr, nullptr, (void **)&a->fluidRotation));
+    PetscCall(DMSwarmRestoreField(swarm_, field::fluidRotationalDrag, nullptr, nullptr, (void **)&a->fluidRotationalDrag));
+    PetscCall(DMSwarmRestoreField(swarm_, field::fluidSurfacePlane, nullptr, nullptr, (void **)&a->fluidSurfacePlane));
+    PetscCall(DMSwarmRestoreField(swarm_, field::fluidCapillaryImpulse, nullptr, nullptr, (void **)&a->fluidCapillaryImpulse));
+    PetscCall(DMSwarmRestoreField(swarm_, field::fluidExplicitImpulse, nullptr, nullptr, (void **)&a->fluidExplicitImpulse));
+    PetscCall(DMSwarmRestoreField(swarm_, field::fluidAddedMass, nullptr, nullptr, (void **)&a->fluidAddedMass));
+    PetscCall(DMSwarmRestoreField(swarm_, field::fluidImpulse, nullptr, nullptr, (void **)&a->fluidImpulse));
+    PetscCall(DMSwarmRestoreField(swarm_, field::fluidForce, nullptr, nullptr, (void **)&a->fluidForce));
+    PetscCall(DMSwarmRestoreField(swarm_, field::fluidVelocity, nullptr, nullptr, (void **)&a->fluidVelocity));
+    PetscCall(DMSwarmRestoreField(swarm_, field::fluidDrag, nullptr, nullptr, (void **)&a->fluidDrag));
+  }
   PetscCall(DMSwarmRestoreField(swarm_, field::clump, nullptr, nullptr, (void **)&a->clump));
   PetscCall(DMSwarmRestoreField(swarm_, field::type, nullptr, nullptr, (void **)&a->type));
   PetscCall(DMSwarmRestoreField(swarm_, field::torque, nullptr, nullptr, (void **)&a->torque));

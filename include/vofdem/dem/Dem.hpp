@@ -98,7 +98,8 @@ public:
   DM                 Swarm() const { return swarm_.Dm(); }
   const ParticleSwarm &Particles() const { return swarm_; }
   // The fluid coupling (Coupling.hpp) sets the swarm's fluid_* fields; the integrator then applies them.
-  void               SetFluidCoupled(bool on) { fluidCoupled_ = on; }
+  void               SetFluidCoupled(bool on) { fluidCoupled_ = on, swarm_.SetFluidFields(on); }
+  void               UseFluidFields() { swarm_.SetFluidFields(true); }  // a coupled scene, before SetUp (ParticleSwarm::GetArrays)
   bool               Balancing() const { return balance_; }  // -dem_balance histogram
   // This rank's load as -dem_balance weighs it: its particles plus -dem_balance_contact_weight x their
   // contacts at the last force evaluation (DemBalance.cpp).

@@ -69,7 +69,8 @@ public:
   DM       Dm() const { return swarm_; }
   PetscErrorCode GlobalCount(PetscInt *n) const;
 
-  PetscErrorCode GetArrays(ParticleArrays *a) const;
+  PetscErrorCode GetArrays(ParticleArrays *a) const;  // the fluid_* arrays are null unless SetFluidFields(true)
+  void           SetFluidFields(bool on) { fluidFields_ = on; }
   PetscErrorCode RestoreArrays(ParticleArrays *a) const;
 
   // Appends n particles locally (fields left for the caller to fill); returns the first new index.
@@ -85,6 +86,7 @@ public:
   PetscErrorCode Migrate();
 
 private:
+  bool fluidFields_ = false;  // GetArrays takes the fluid_* fields too (a coupled scene)
   const Grid *grid_  = nullptr;
   DM          swarm_ = nullptr;
 };
