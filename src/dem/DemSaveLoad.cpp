@@ -231,7 +231,9 @@ PetscErrorCode Dem::Load(PetscViewer viewer) {
     }
     for (size_t k = 0; k < saved; ++k) {
       const PetscInt64 c = (PetscInt64)st.fields[iClump][k];
-      if (grid_->OwnsPoint(&st.fields[iPos][3 * (c < 0 ? k : lead[c])])) keep.push_back(k);
+      // OwnsParticle: a centre past a periodic face since the last rebuild belongs to the face's other side
+      // (OwnsPoint would give it to no rank: the D7 run restarted with 3 of 32,000 spheres missing).
+      if (grid_->OwnsParticle(&st.fields[iPos][3 * (c < 0 ? k : lead[c])])) keep.push_back(k);
     }
   }
   PetscCall(DMSwarmSetLocalSizes(dm, (PetscInt)keep.size(), 64));

@@ -3,6 +3,7 @@
 #include "vofdem/core/Options.hpp"
 #include "vofdem/core/Runtime.hpp"
 
+#include <algorithm>
 #include <string>
 #include <vector>
 
@@ -101,6 +102,17 @@ bool Grid::OwnsPoint(const PetscReal x[3]) const {
     if (x[d] < lower_[d] || c < start_[d] || c >= start_[d] + count_[d]) return false;
   }
   return true;
+}
+
+bool Grid::OwnsParticle(const PetscReal x[3]) const {
+  PetscReal y[3];
+  for (int d = 0; d < 3; ++d) {
+    const PetscReal L = upper_[d] - lower_[d];
+    y[d]              = x[d];
+    if (periodic_[d]) y[d] = y[d] < lower_[d] ? y[d] + L : y[d] > upper_[d] ? y[d] - L : y[d];
+    y[d] = std::min(std::max(y[d], lower_[d]), upper_[d]);
+  }
+  return OwnsPoint(y);
 }
 
 PetscErrorCode Grid::View(PetscViewer viewer) const {

@@ -36,6 +36,9 @@ public:
   void LocalBox(PetscReal lo[3], PetscReal hi[3]) const;
   // True when x lies in LocalBox() (the upper domain face belongs to the last rank).
   bool OwnsPoint(const PetscReal x[3]) const;
+  // The same for a particle's centre as saved between list rebuilds: up to half a skin past a periodic
+  // face (wrapped by one box length) or, after a wall overlap, past a wall (the nearest cell's owner).
+  bool OwnsParticle(const PetscReal x[3]) const;
 
 private:
   MPI_Comm  comm_     = MPI_COMM_NULL;
