@@ -16,6 +16,7 @@
 #include <petscviewerhdf5.h>
 
 #include <algorithm>
+#include <cmath>
 #include <string>
 #include <unordered_map>
 
@@ -179,6 +180,46 @@ PetscErrorCode Dem::Save(PetscViewer viewer) {
 }
 
 // Call after SetUp() with the options of the run that saved: the loaded state replaces the inserted one.
+// The ownership ranges a -dem_balance run had when it saved: each rank's saved box gives its cells per
+// direction (rank = i + m0 (j + m1 k), as DMDA numbers them); when they differ from the grid's, the grid
+// is repartitioned to them as Balance() does. Collective; same rank count only.
+PetscErrorCode Dem::RestoreOwnership(const std::vector<PetscReal> &savedBox) {
+  PetscMPIInt     rank, size;
+  PetscInt        m[3];
+  const PetscInt *l[3];
+
+  PetscFunctionBeginUser;
+  PetscCallMPI(MPI_Comm_rank(comm_, &rank));
+  PetscCallMPI(MPI_Comm_size(comm_, &size));
+  PetscCall(DMDAGetInfo(grid_->CellDM(), nullptr, nullptr, nullptr, nullptr, &m[0], &m[1], &m[2], nullptr, nullptr, nullptr, nullptr, nullptr, nullptr));
+  PetscCall(DMDAGetOwnershipRanges(grid_->CellDM(), &l[0], &l[1], &l[2]));
+  const PetscReal *lo = grid_->Lower(), *h = grid_->Spacing();
+  std::vector<PetscInt> mine(3 * size, 0), cells(3 * size);
+  for (int d = 0; d < 3; ++d) {
+    const PetscInt first = (PetscInt)std::llround((savedBox[d] - lo[d]) / h[d]), last = (PetscInt)std::llround((savedBox[3 + d] - lo[d]) / h[d]);
+    mine[3 * rank + d] = last - first;
+  }
+  PetscCallMPI(MPI_Allreduce(mine.data(), cells.data(), 3 * size, MPIU_INT, MPI_SUM, comm_));
+  std::vector<PetscInt> slabs[3];
+  bool                  differs = false;
+  for (int d = 0; d < 3; ++d) {
+    slabs[d].assign(m[d], 0);
+    for (PetscInt q = 0; q < m[d]; ++q) {  // the rank at index q along d, 0 along the others
+      const PetscInt r = d == 0 ? q : d == 1 ? m[0] * q : m[0] * m[1] * q;
+      slabs[d][q]      = cells[3 * r + d];
+      differs          = differs || slabs[d][q] != l[d][q];
+    }
+    PetscInt total = 0;
+    for (PetscInt c : slabs[d]) total += c;
+    PetscCheck(total == grid_->Cells()[d], comm_, PETSC_ERR_FILE_UNEXPECTED, "checkpoint: the saved ranks' boxes hold %" PetscInt_FMT " cells along %c, the grid %" PetscInt_FMT, total, "xyz"[d], grid_->Cells()[d]);
+  }
+  if (!differs) PetscFunctionReturn(0);
+  PetscCall(grid_->Repartition(slabs));
+  PetscCall(DMSwarmSetCellDM(swarm_.Dm(), grid_->VertexDM()));
+  PetscCall(halo_.SetUp(*grid_));
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode Dem::Load(PetscViewer viewer) {
   RankArchive ar;
   SavedState  st;
@@ -200,11 +241,14 @@ PetscErrorCode Dem::Load(PetscViewer viewer) {
   {  // As many ranks, each with the box it had: then the bitwise path (halo and lists as saved).
     RankArchive            dec;
     std::vector<PetscReal> saved, box(6);
-    grid_->LocalBox(&box[0], &box[3]);
     PetscCall(PetscViewerHDF5PushGroup(viewer, "dem/decomposition"));
     PetscCall(dec.Begin(viewer, comm_, true, "Dem::Load"));
     PetscCall(dec.Array("box", &saved, 6));
     PetscCall(PetscViewerHDF5PopGroup(viewer));
+    // -dem_balance moved the ownership ranges: the run goes on with the saved ones (bitwise), not with the
+    // grid's initial even split (which would repartition at the first rebuild, on another path).
+    if (balance_ && dec.SameRanks()) PetscCall(RestoreOwnership(saved));
+    grid_->LocalBox(&box[0], &box[3]);
     int same = dec.SameRanks() && saved == box, all;
     PetscCallMPI(MPI_Allreduce(&same, &all, 1, MPI_INT, MPI_MIN, comm_));
     sameDecomposition = all;

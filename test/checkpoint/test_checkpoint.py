@@ -19,7 +19,7 @@
                         zero exit on every rank (test/badinput/expect-error); -restart latest skips a
                         corrupted newest file and says so; a write that fails mid-run is one error line
                         and leaves the previous checkpoint valid.
-SCENE is dem, demclumps, demperiodic, flow, vof, vofopen, coupled, coupledvof or coupledwet (the coupled ones: bitwise only). Usage: test_checkpoint.py VOFDEM CASE ARGS..."""
+SCENE is dem, demclumps, demperiodic, dembalance, flow, vof, vofopen, coupled, coupledvof or coupledwet (the coupled ones: bitwise only). Usage: test_checkpoint.py VOFDEM CASE ARGS..."""
 import glob
 import os
 import re
@@ -55,6 +55,12 @@ SCENES = {
     # rebuild left them; on another rank count each must still find its owner (Grid::OwnsParticle).
     "demperiodic": ("-physics dem -grid_cells 4,4,4 -grid_upper 0.01,0.01,0.01 -grid_periodic x,y -gravity 0,0,0 -dem_radius 5e-4 "
                     "-dem_fill_count 64 -dem_fill_jitter 0.5 -dem_fill_velocity 2,1,0 -dem_fill_velocity_spread 0.5 -dem_skin 2e-3 -seed 7".split(), 100, (350, 100)),
+    # -dem_balance (ex15's spheres thrown down, with random velocities so that they collide from the start),
+    # on 2 ranks split along the height: repartitioned at step 0 and again before step 600; the restart at
+    # step 300 must go on with the saved ownership ranges to stay bitwise.
+    "dembalance": ("-physics dem -grid_cells 4,4,16 -grid_upper 0.01,0.01,0.02 -dem_radius 5e-4 -dem_fill_count -1 -dem_fill_lower 0,0,0.01 "
+                   "-dem_fill_upper 0.01,0.01,0.02 -dem_fill_jitter 1 -dem_fill_velocity 0,0,-0.7 -dem_fill_velocity_spread 0.3 -dem_restitution 0.3 "
+                   "-dem_friction 0.5 -seed 5 -dem_balance histogram -dem_balance_monitor 0".split(), 600, (600, 300)),
     # F2 at 32 x 32 x 4: the adaptive time step, AB2 history and preconditioner reuse all matter.
     "flow": (["-options_file_yaml", os.path.join(ROOT, "config", "scenes", "cavity-re100.yaml")] +
              "-grid_cells 32,32,4 -grid_upper 1,1,0.125".split(), 20, (20, 20)),
@@ -95,7 +101,7 @@ def mpi(ranks):
 def scene_args(scene, ranks):
     # On 2 ranks the DEM box is split across x, so that both ranks own particles (split along the
     # height, one rank would hold them all); -grid_ranks may differ between a run and its restart.
-    extra = ["-grid_ranks", "2,1,1"] if scene == "dem" and ranks == 2 else []
+    extra = ["-grid_ranks", "2,1,1"] if scene == "dem" and ranks == 2 else ["-grid_ranks", "1,1,2"] if scene == "dembalance" and ranks == 2 else []
     return SCENES[scene][0] + extra + QUIET
 
 
@@ -112,7 +118,7 @@ def case_bitwise(exe, scene, ranks):
     n = SCENES[scene][1]
     tmp = tempfile.mkdtemp(prefix="vofdem-ckpt-")
     a, b, c = (os.path.join(tmp, x) for x in "abc")
-    index, every = {"dem": ("particles.xmf", "-dem_output_every"), "demclumps": ("particles.xmf", "-dem_output_every"), "flow": ("flow.xmf", "-flow_output_every"), "vof": ("flow.xmf", "-flow_output_every"),
+    index, every = {"dem": ("particles.xmf", "-dem_output_every"), "demclumps": ("particles.xmf", "-dem_output_every"), "dembalance": ("particles.xmf", "-dem_output_every"), "flow": ("flow.xmf", "-flow_output_every"), "vof": ("flow.xmf", "-flow_output_every"),
                     "vofopen": ("flow.xmf", "-flow_output_every"),
                     "coupled": ("particles.xmf", "-dem_output_every"), "coupledvof": ("particles.xmf", "-dem_output_every"),
                     "coupledwet": ("particles.xmf", "-dem_output_every")}[scene]
@@ -135,7 +141,7 @@ def case_bitwise(exe, scene, ranks):
     kept = sorted(os.path.basename(x) for x in glob.glob(os.path.join(c, "*")) + glob.glob(os.path.join(c, ".*")))
     want = ["checkpoint_%08d.h5" % s for s in (2 * n - 10, 2 * n - 5, 2 * n)]
     check(kept == want, "-checkpoint_keep 3 keeps %s, no temporary files (found %s)" % (want, kept))
-    if scene != "demclumps":  # scene-independent, and a checkpoint at nearly every step costs minutes with the clumps' file
+    if scene not in ("demclumps", "dembalance"):  # scene-independent, and a checkpoint at nearly every step costs minutes there
         w = os.path.join(tmp, "w")  # by wall time, every 0.6 ms: the 2N steps take longer (DEM ~10 ms)
         run(exe, ranks, scene, ["-max_steps", str(2 * n), "-checkpoint_dir", w, "-checkpoint_minutes", "0.00001", "-checkpoint_keep", "1000",
                                 "-output_dir", w + "-out"] + out)

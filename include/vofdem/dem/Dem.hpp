@@ -143,6 +143,7 @@ private:
   std::vector<PetscInt>  balanceContacts_;     // scratch: contacts per local particle
   PetscReal              balanceLocalContacts_ = 0;
   void                   BalanceContactLoads(const ParticleArrays &a);
+  PetscErrorCode         RestoreOwnership(const std::vector<PetscReal> &savedBox);  // DemSaveLoad.cpp
   void                   CountContacts(PetscInt n, std::vector<PetscInt> *c) const;
   PetscBool      balanceMonitor_ = PETSC_TRUE;
   PetscInt       repartitions_ = 0;
