@@ -77,6 +77,11 @@ PetscErrorCode Imbalance(MPI_Comm comm, PetscInt n, PetscReal load, PetscReal *r
   PetscFunctionReturn(0);
 }
 
+// The cell layer along d of coordinate x, clamped to the box (a centre may be just outside it).
+PetscInt Layer(const Grid &g, PetscReal x, int d) {
+  return std::min(g.Cells()[d] - 1, std::max<PetscInt>(0, (PetscInt)((x - g.Lower()[d]) / g.Spacing()[d])));
+}
+
 std::string Describe(const std::vector<PetscInt> &counts) {
   if (counts.size() > 16) return "";
   std::string s = " (";
@@ -116,7 +121,6 @@ PetscErrorCode Dem::BalanceLoad(PetscReal *load) const {
 // every direction, and their sum on this rank. Balance() adds them to the particle counts.
 void Dem::BalanceContactLoads(const ParticleArrays &a) {
   const PetscInt *nc = grid_->Cells();
-  const PetscReal *lo = grid_->Lower(), *h = grid_->Spacing();
   balanceLoads_.assign(nc[0] + nc[1] + nc[2], 0);
   balanceLocalContacts_ = 0;
   if (!balance_ || balanceContactWeight_ == 0) return;
@@ -125,7 +129,7 @@ void Dem::BalanceContactLoads(const ParticleArrays &a) {
     if (!balanceContacts_[p]) continue;
     const PetscReal w = balanceContactWeight_ * balanceContacts_[p];
     balanceLocalContacts_ += w;
-    for (int d = 0, off = 0; d < 3; off += nc[d], ++d) balanceLoads_[off + std::min(nc[d] - 1, std::max<PetscInt>(0, (PetscInt)((a.x[3 * p + d] - lo[d]) / h[d])))] += w;
+    for (int d = 0, off = 0; d < 3; off += nc[d], ++d) balanceLoads_[off + Layer(*grid_, a.x[3 * p + d], d)] += w;
   }
 }
 
@@ -150,10 +154,10 @@ PetscErrorCode Dem::Balance(PetscBool *repartitioned) {
   PetscCall(DMDAGetInfo(grid_->CellDM(), nullptr, nullptr, nullptr, nullptr, &m[0], &m[1], &m[2], nullptr, nullptr, nullptr, nullptr, nullptr, nullptr));
   PetscCall(DMDAGetOwnershipRanges(grid_->CellDM(), &l[0], &l[1], &l[2]));
   const PetscInt *nc = grid_->Cells();
-  const PetscReal *lo = grid_->Lower(), *h = grid_->Spacing();
-  auto layer = [&](PetscReal x, int d) { return std::min(nc[d] - 1, std::max<PetscInt>(0, (PetscInt)((x - lo[d]) / h[d]))); };
-  std::vector<PetscReal> hist(balanceLoads_), global(hist.size());
+  auto layer = [&](PetscReal x, int d) { return Layer(*grid_, x, d); };
+  std::vector<PetscReal> hist(balanceLoads_);
   hist.resize(nc[0] + nc[1] + nc[2], 0);
+  std::vector<PetscReal> global(hist.size());
   PetscCall(swarm_.GetArrays(&a));
   for (PetscInt p = 0; p < a.n; ++p)
     for (int d = 0, off = 0; d < 3; off += nc[d], ++d)
