@@ -35,6 +35,13 @@ PetscErrorCode Dem::SetFromOptions(MPI_Comm comm) {
                : chosen[0] == "epsd2" ? hertz::Rolling::Epsd2 : hertz::Rolling::None;
       PetscCall(opt.Real("-rolling_friction", "Rolling friction coefficient mu_r (P5)", "-", &material_.rollingFriction, RealRange::NonNegative()));
       PetscCall(opt.Real("-rolling_damping", "EPSD rolling damping as a fraction of critical", "-", &rollingParams_.eta, RealRange::NonNegative()));
+      static const std::vector<std::string> loads = {"compression", "magnitude", "adhesion"};
+      std::vector<std::string>              load  = {"compression"};
+      PetscCall(opt.NameList("-rolling_load",
+                             "Load N of the rolling cap mu_r R* N (P5): compression (max(F_n,0)), magnitude (|F_n|, P5 as written), adhesion (max(F_n + 2 F_c,0), as the sliding limit with JKR)",
+                             loads, &load));
+      if (load.size() != 1) VofdemInputError(comm, "option -dem_rolling_load: give one of compression, magnitude or adhesion");
+      rollingParams_.load = load[0] == "magnitude" ? hertz::RollingLoad::Magnitude : load[0] == "adhesion" ? hertz::RollingLoad::Adhesion : hertz::RollingLoad::Compression;
     }
     {
       static const std::vector<std::string> contacts = {"hertz", "linear"};
@@ -154,7 +161,7 @@ PetscErrorCode Dem::SetUp(Grid &grid, const PetscReal gravity[3], std::uint64_t 
   std::copy(gravity, gravity + 3, gravity_);
   WallMaterial wall;
   wall.youngs = wallYoungs_, wall.poisson = wallPoisson_, wall.friction = wallFriction_, wall.surfaceEnergy = wallSurfaceEnergy_;
-  table_.Build(types_, pairValues_, wall, linear_, linearKtRatio_, limitForce_, jkr_, rollingParams_.eta);
+  table_.Build(types_, pairValues_, wall, linear_, linearKtRatio_, limitForce_, jkr_, rollingParams_);
   // The single-type fast path of the contact loop binds these.
   pair_          = table_.Pair(0);
   wall_          = table_.Wall(0);
@@ -443,8 +450,10 @@ PetscErrorCode Dem::View(PetscViewer viewer) const {
   else std::snprintf(law, sizeof law, "Hertz-Mindlin (P3)");
   char muR[48] = "mu_r per type";
   if (oneType) std::snprintf(muR, sizeof muR, "mu_r %g", (double)shown.rollingFriction);
-  PetscCall(PetscViewerASCIIPrintf(viewer, "dem: contacts: %s with damping, tangential springs and Coulomb friction between spheres and with the box faces%s; rolling resistance: %s, %s (P5)\n",
-                                   law, limitForce_ ? ", normal force clipped at zero" : "", rolling[(int)rolling_], muR));
+  static const char *const loads[] = {"", ", cap mu_r R* |F_n|", ", cap mu_r R* (F_n + 2 F_c)"};
+  PetscCall(PetscViewerASCIIPrintf(viewer, "dem: contacts: %s with damping, tangential springs and Coulomb friction between spheres and with the box faces%s; rolling resistance: %s, %s%s (P5)\n",
+                                   law, limitForce_ ? ", normal force clipped at zero" : "", rolling[(int)rolling_], muR,
+                                   rolling_ == hertz::Rolling::None ? "" : loads[(int)rollingParams_.load]));
   if (jkr_ && oneType)
     PetscCall(PetscViewerASCIIPrintf(viewer, "dem: adhesion: JKR (P6), surface energy %g J/m^2 (work of adhesion %g J/m^2), walls %g J/m^2; bonds break up to %g m apart\n",
                                      (double)shown.surfaceEnergy, (double)pair_.w, (double)wall_.w, (double)adhesionRange_));

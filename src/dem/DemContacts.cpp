@@ -250,7 +250,7 @@ PetscErrorCode Dem::ComputeForcesWith(PetscReal dt) {
     Cross(rn, Ft, tq);
     // Rolling against the face: w_rel = w, I_r = I + m R^2 = 1.4 m R^2 about the contact; the
     // secant normal stiffness F_n,elastic / delta is (2/3) S_n.
-    hertz::RollingTorque<RM>(MULTI ? table_.WallRolling(a.type[p]) : rollingParams_, Fn, 2.0 / 3.0 * Sn, r, 1.4 * a.mass[p] * r * r, n, w, dt, xi + 3, M);
+    hertz::RollingTorque<RM>(MULTI ? table_.WallRolling(a.type[p]) : rollingParams_, Fn, law.frictionOffset, 2.0 / 3.0 * Sn, r, 1.4 * a.mass[p] * r * r, n, w, dt, xi + 3, M);
     for (int e = 0; e < 3; ++e) a.f[3 * p + e] += F[e], a.torque[3 * p + e] += tq[e] + M[e], stats_.wallForce[face][e] -= F[e];
     if (record_.on) ContactRecord::Store(&record_.wall[ContactRecord::kWidth * k], F, Ft);
     ++stats_.wallContacts;
@@ -326,7 +326,7 @@ PetscErrorCode Dem::ComputeForcesWith(PetscReal dt) {
     Cross(nrm, Ft, nxF);
     if constexpr (RM != hertz::Rolling::None) {
       const PetscReal Ia = 1.4 * A.m * A.r * A.r, Ib = 1.4 * B.m * B.r * B.r;  // about the contact point
-      hertz::RollingTorque<RM>(MULTI ? table_.Rolling(list_.material[k]) : rollingParams_, Fn, 2.0 / 3.0 * Sn, Rstar, Ia * Ib / (Ia + Ib), nrm, wrel, dt, xi + 3, M);
+      hertz::RollingTorque<RM>(MULTI ? table_.Rolling(list_.material[k]) : rollingParams_, Fn, law.frictionOffset, 2.0 / 3.0 * Sn, Rstar, Ia * Ib / (Ia + Ib), nrm, wrel, dt, xi + 3, M);
     } else {
       M[0] = M[1] = M[2] = 0;
     }

@@ -136,7 +136,7 @@ std::string FindMaterialFile(const std::string &name) {
 }
 
 void MaterialTable::Build(const std::vector<DemMaterial> &types, const std::vector<PairValues> &pairs, const WallMaterial &wall, bool linear,
-                          PetscReal linearKtRatio, bool limitForce, bool jkr, PetscReal rollingDamping) {
+                          PetscReal linearKtRatio, bool limitForce, bool jkr, const hertz::RollingParams &rollingModel) {
   nt_ = (PetscInt)types.size();
   pair_.assign(nt_ * nt_, {});
   rolling_.assign(nt_ * nt_, {});
@@ -152,7 +152,7 @@ void MaterialTable::Build(const std::vector<DemMaterial> &types, const std::vect
       const PetscReal    w = jkr ? (v.workOfAdhesion >= 0 ? v.workOfAdhesion : a.surfaceEnergy + b.surfaceEnergy) : 0;
       pair_[i * nt_ + j]   = linear ? hertz::MakeLinearMaterial(e, mu, linearKtRatio, limitForce)
                                     : hertz::MakePairMaterial(a.youngs, a.poisson, b.youngs, b.poisson, e, mu, limitForce, w);
-      rolling_[i * nt_ + j]     = {pick(v.rollingFriction, a.rollingFriction, b.rollingFriction), rollingDamping};
+      rolling_[i * nt_ + j]     = {pick(v.rollingFriction, a.rollingFriction, b.rollingFriction), rollingModel.eta, rollingModel.load};
       restitution_[i * nt_ + j] = e;
     }
   for (PetscInt t = 0; t < nt_; ++t) {
@@ -162,7 +162,7 @@ void MaterialTable::Build(const std::vector<DemMaterial> &types, const std::vect
     const PetscReal    w  = jkr ? a.surfaceEnergy + (wall.surfaceEnergy >= 0 ? wall.surfaceEnergy : a.surfaceEnergy) : 0;
     wall_[t]        = linear ? hertz::MakeLinearMaterial(a.restitution, mu, linearKtRatio, limitForce)
                              : hertz::MakePairMaterial(a.youngs, a.poisson, E, nu, a.restitution, mu, limitForce, w);
-    wallRolling_[t] = {a.rollingFriction, rollingDamping};
+    wallRolling_[t] = {a.rollingFriction, rollingModel.eta, rollingModel.load};
   }
 }
 

@@ -101,3 +101,31 @@ TEST(Jkr, ContactRadiusSolvesTheOverlapRelationFromAnyStart) {
   a = 0;
   EXPECT_NEAR(h::JkrNormal(c, dmin, R, &a).Fel, -5.0 / 6.0 * M_PI * w * R, 1e-6 * M_PI * w * R);
 }
+
+// The rolling cap mu_r R* N (P5) on a JKR contact held at zero net force (F_n = 0, the resting
+// bonded contact of an adhesive pile) and on one in tension: compression counts no load, magnitude
+// |F_n|, adhesion F_n + 2 F_c with 2 F_c = 3 pi w R* (the friction offset of JkrNormal).
+TEST(Rolling, CapLoadOfABondedContact) {
+  const double R = 5e-6, E = 3.4e9, nu = 0.28, w = 3e-4, mu = 0.0315;
+  const auto   c = h::MakePairMaterial(E, nu, E, nu, 0.5, 0.3, false, w);
+  double       a = 0;
+  const double a0 = std::cbrt(9 * M_PI * w * R * R / (2 * c.Estar));  // zero net force: 4 E* a^3/(3 R) = sqrt(8 pi w E* a^3)
+  const double d0 = a0 * a0 / R - std::sqrt(2 * M_PI * w * a0 / c.Estar);
+  const auto   law = h::JkrNormal(c, d0, R, &a);
+  EXPECT_NEAR(law.Fel, 0.0, 1e-10 * M_PI * w * R);
+  EXPECT_DOUBLE_EQ(law.frictionOffset, 3 * M_PI * w * R);
+  const double n[3] = {0, 0, 1}, wrel[3] = {1.0, 0, 0}, Fc2 = law.frictionOffset;
+  for (double Fn : {0.0, -0.4 * Fc2, 0.7 * Fc2}) {
+    for (auto load : {h::RollingLoad::Compression, h::RollingLoad::Magnitude, h::RollingLoad::Adhesion}) {
+      const h::RollingParams p{mu, 0.3, load};
+      double                 spring[3] = {0, 0, 0}, M[3];
+      h::RollingTorque<h::Rolling::ConstantTorque>(p, Fn, Fc2, 1.0, R, 1.0, n, wrel, 1e-8, spring, M);
+      const double N = load == h::RollingLoad::Magnitude ? std::fabs(Fn) : load == h::RollingLoad::Adhesion ? Fn + Fc2 : std::max(Fn, 0.0);
+      EXPECT_DOUBLE_EQ(M[0], -mu * R * N) << "load " << (int)load << ", F_n " << Fn;
+      EXPECT_EQ(M[1], 0.0);
+      EXPECT_EQ(M[2], 0.0);
+    }
+  }
+  // Without adhesion (offset 0) adhesion and compression agree.
+  EXPECT_EQ(h::RollingNormalLoad(h::RollingLoad::Adhesion, -1.0, 0.0), h::RollingNormalLoad(h::RollingLoad::Compression, -1.0, 0.0));
+}

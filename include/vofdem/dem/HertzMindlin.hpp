@@ -218,28 +218,44 @@ namespace vofdem::hertz {
 // Rolling resistance (P5), chosen per scene and bound outside the contact loops.
 enum class Rolling { None, ConstantTorque, Epsd, Epsd2 };
 
+// The normal load that bounds the rolling torque, mu_r R* N (P5). With adhesion (JKR) a resting
+// contact carries almost no net normal force, so the choice decides whether bonded contacts resist
+// rolling at all:
+//  - Compression: N = max(F_n, 0), the net force in compression only;
+//  - Magnitude: N = |F_n|, P5's formula as written (seed 001's model), tension resists too;
+//  - Adhesion: N = max(F_n + 2 F_c, 0), the load of the sliding limit (Thornton and Yin 1991).
+// Without adhesion the three differ only where damping pulls as a contact ends.
+enum class RollingLoad { Compression, Magnitude, Adhesion };
+
 struct RollingParams {
-  PetscReal mu  = 0;    // rolling friction coefficient mu_r
-  PetscReal eta = 0.3;  // EPSD: viscous damping as a fraction of critical (Ai et al. 2011)
+  PetscReal   mu   = 0;    // rolling friction coefficient mu_r
+  PetscReal   eta  = 0.3;  // EPSD: viscous damping as a fraction of critical (Ai et al. 2011)
+  RollingLoad load = RollingLoad::Compression;
 };
 
+// N of RollingLoad from the net normal force and the law's friction offset 2 F_c (NormalLaw).
+inline PetscReal RollingNormalLoad(RollingLoad load, PetscReal Fn, PetscReal offset) {
+  return load == RollingLoad::Magnitude ? std::abs(Fn) : load == RollingLoad::Adhesion ? std::max(Fn + offset, (PetscReal)0) : std::max(Fn, (PetscReal)0);
+}
+
 // Rolling torque on this particle (the partner gets minus it) from the relative angular velocity
-// wrel = w_this - w_partner, with twisting about n removed. Fn: the normal force (only compression
-// counts), kn: the secant normal stiffness F_n,elastic/delta (as in LIGGGHTS), Ir: the equivalent
-// moment of inertia about the contact, spring: the rolling spring (history, N m), updated.
-//  - ConstantTorque: M = -mu_r R* F_n w/|w|, the classic model; it chatters around w = 0.
+// wrel = w_this - w_partner, with twisting about n removed. Fn: the net normal force and offset: the
+// law's friction offset (2 F_c with JKR), which p.load turns into the bounding load N; kn: the secant
+// normal stiffness F_n,elastic/delta (as in LIGGGHTS), Ir: the equivalent moment of inertia about the
+// contact, spring: the rolling spring (history, N m), updated.
+//  - ConstantTorque: M = -mu_r R* N w/|w|, the classic model; it chatters around w = 0.
 //  - Epsd (Ai et al. 2011, model C): spring k_r = 2.25 k_n mu_r^2 R*^2 with dM = -k_r w dt, capped at
-//    mu_r R* F_n, plus damping -eta 2 sqrt(I_r k_r) w while not at the cap; holds a pile at rest.
+//    mu_r R* N, plus damping -eta 2 sqrt(I_r k_r) w while not at the cap; holds a pile at rest.
 //  - Epsd2 (LIGGGHTS' epsd2): the same spring and cap without damping.
 template <Rolling model>
-VOFDEM_HOT_INLINE void RollingTorque(const RollingParams &p, PetscReal Fn, PetscReal kn, PetscReal Rstar, PetscReal Ir, const PetscReal n[3],
+VOFDEM_HOT_INLINE void RollingTorque(const RollingParams &p, PetscReal Fn, PetscReal offset, PetscReal kn, PetscReal Rstar, PetscReal Ir, const PetscReal n[3],
                           const PetscReal wrel[3], PetscReal dt, PetscReal spring[3], PetscReal M[3]) {
   M[0] = M[1] = M[2] = 0;
   if constexpr (model == Rolling::None) return;
   const PetscReal wn = wrel[0] * n[0] + wrel[1] * n[1] + wrel[2] * n[2];
   PetscReal       w[3];
   for (int d = 0; d < 3; ++d) w[d] = wrel[d] - wn * n[d];
-  const PetscReal Mmax = p.mu * Rstar * std::max(Fn, (PetscReal)0);
+  const PetscReal Mmax = p.mu * Rstar * RollingNormalLoad(p.load, Fn, offset);
   if constexpr (model == Rolling::ConstantTorque) {
     const PetscReal wmag = std::sqrt(w[0] * w[0] + w[1] * w[1] + w[2] * w[2]);
     if (wmag > 0)

@@ -48,9 +48,10 @@ struct WallMaterial {
 
 class MaterialTable {
 public:
-  // linear: P4 (restitution damping without the Hertz factor); jkr: the pairs get a work of adhesion.
+  // linear: P4 (restitution damping without the Hertz factor); jkr: the pairs get a work of adhesion;
+  // rollingModel: the rolling damping and load shared by all pairs (mu_r comes from the types).
   void Build(const std::vector<DemMaterial> &types, const std::vector<PairValues> &pairs /* nt*nt, symmetric */, const WallMaterial &wall,
-             bool linear, PetscReal linearKtRatio, bool limitForce, bool jkr, PetscReal rollingDamping);
+             bool linear, PetscReal linearKtRatio, bool limitForce, bool jkr, const hertz::RollingParams &rollingModel);
 
   PetscInt Count() const { return nt_; }
   // Index of the pair (i, j) into Pair()/Rolling(); symmetric.

@@ -147,7 +147,7 @@ void WallSet::Evaluate(const ParticleArrays &a, const WallContactLaw &law, Petsc
       const PetscReal        Sn = nl.Sn, Fn = hertz::Contact(mat, nl, n, std::sqrt(a.mass[p]), vrel, dt, xi, F, Ft);
       wall::CrossProduct(rn, Ft, tq);
       // Rolling against the wall: I_r = 1.4 m R^2 about the contact, secant stiffness (2/3) S_n (P5).
-      hertz::RollingTorque<RM>(rolling, Fn, 2.0 / 3.0 * Sn, r, 1.4 * a.mass[p] * r * r, n, wrel, dt, xi + 3, M);
+      hertz::RollingTorque<RM>(rolling, Fn, nl.frictionOffset, 2.0 / 3.0 * Sn, r, 1.4 * a.mass[p] * r * r, n, wrel, dt, xi + 3, M);
       for (int e = 0; e < 3; ++e) a.f[3 * p + e] += F[e], a.torque[3 * p + e] += tq[e] + M[e], F[e] = -F[e];
       // The wall gets -F at the contact point and -M: its torque about its rotation point.
       wall::CrossProduct(arm, F, Tw);
