@@ -25,6 +25,7 @@ foreach(_ex ex39_capillary_wave ex40_rising_bubble)
   set_tests_properties(badinput/${_ex}_resolution PROPERTIES LABELS "quick;badinput" PROCESSORS 2 TIMEOUT 120)
 endforeach()
 vofdem_bad_input(vof_momentum      "option -vof_momentum: unknown name 'lagrangian'" ${_vof} -vof_momentum lagrangian)
+vofdem_bad_input(viscous_transpose "option -flow_viscous_transpose implicit: needs -flow_viscous implicit" ${_vof} -flow_viscous explicit -flow_viscous_transpose implicit)
 vofdem_bad_input(vof_momentum_central "option -flow_advection central: unbounded and unstable" ${_vof} -gravity 0,0,-9.81 -vof_boxes 0,0,0,1,1,0.5 -flow_advection central)
 
 # The explicit div(mu grad U^T) limit across a viscosity jump is applied and reported (FlowViscousLimit.cpp):
@@ -34,9 +35,18 @@ vofdem_bad_input(vof_momentum_central "option -flow_advection central: unbounded
 # row's values span (mu_m - mu_a)/2 and its Gershgorin sum is 3 (mu_m - mu_a)/h^2 over rho = 1:
 # dt = 1/(3 x 0.499991 x 256) = 2.60421e-3 s, below the gravity limit (0.05 s), so it sets the step.
 add_test(NAME vof/viscous_limit
-         COMMAND $<TARGET_FILE:vofdem_app> -options_file_yaml ${CMAKE_CURRENT_SOURCE_DIR}/config/scenes/still-tank.yaml -vof_viscosity 1 -max_steps 2)
+         COMMAND $<TARGET_FILE:vofdem_app> -options_file_yaml ${CMAKE_CURRENT_SOURCE_DIR}/config/scenes/still-tank.yaml -vof_viscosity 1 -max_steps 2
+                 -flow_viscous_transpose explicit)
 set_tests_properties(vof/viscous_limit PROPERTIES LABELS "quick;vof" PROCESSORS 1 TIMEOUT 120
                      PASS_REGULAR_EXPRESSION "time step limits: flow 0\\.00260421 s \\(flow explicit transpose viscous term.*time step: 0\\.00260421 s \\(set by flow explicit transpose viscous term"
+                     ENVIRONMENT "OMPI_ALLOW_RUN_AS_ROOT=1;OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1;OMP_NUM_THREADS=1")
+
+# The same tank with the default -flow_viscous_transpose auto (the term implicit where mu varies,
+# FlowViscousCoupled.cpp): no viscous limit; the gravity limit sqrt(cfl h/|g|) = sqrt(0.4/16/9.81) = 0.0504819 s sets the step.
+add_test(NAME vof/viscous_transpose_implicit
+         COMMAND $<TARGET_FILE:vofdem_app> -options_file_yaml ${CMAKE_CURRENT_SOURCE_DIR}/config/scenes/still-tank.yaml -vof_viscosity 1 -max_steps 2)
+set_tests_properties(vof/viscous_transpose_implicit PROPERTIES LABELS "quick;vof" PROCESSORS 1 TIMEOUT 120
+                     PASS_REGULAR_EXPRESSION "flow viscous transpose: implicit where the viscosity varies.*time step limits: flow 0\\.0504819 s \\(flow gravity"
                      ENVIRONMENT "OMPI_ALLOW_RUN_AS_ROOT=1;OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1;OMP_NUM_THREADS=1")
 
 # V7 (issue 9): ex42's own options, and the two scenes of the particle-laden dam break load and step

@@ -43,6 +43,15 @@ PetscErrorCode Flow::SetFromOptions(const Grid &grid) {
                            {"implicit", "explicit"}, &visc));
     if (visc.size() != 1) VofdemInputError(comm, "option -flow_viscous: give implicit or explicit");
     implicitViscosity_ = visc[0] == "implicit" ? PETSC_TRUE : PETSC_FALSE;
+    std::vector<std::string> trans = {"auto"};
+    PetscCall(opt.NameList("-viscous_transpose",
+                           "The transpose viscous term div(mu grad U^T), non-zero where eps mu varies: explicit (in AB2; it then limits the step, FlowViscousLimit.cpp), "
+                           "implicit (with -flow_viscous implicit: the three components in one Crank-Nicolson solve, KSP prefix flow_viscous_coupled_, no limit) "
+                           "or auto (implicit while the viscosity itself is not uniform, two phases; explicit otherwise)",
+                           {"explicit", "implicit", "auto"}, &trans));
+    if (trans.size() != 1) VofdemInputError(comm, "option -flow_viscous_transpose: give explicit, implicit or auto");
+    transposeMode_ = trans[0] == "implicit" ? TransposeMode::Implicit : trans[0] == "explicit" ? TransposeMode::Explicit : TransposeMode::Auto;
+    if (transposeMode_ == TransposeMode::Implicit && !implicitViscosity_) VofdemInputError(comm, "option -flow_viscous_transpose implicit: needs -flow_viscous implicit");
     PetscCall(opt.String("-profile_output", "CSV file for the velocity along the three lines through the box centre at the end of the run (default: none)", &profilePath_));
     PetscCall(opt.Int("-output_every", "Write the grid fields (XDMF + HDF5, flow.xmf in -output_dir: cell-centred velocity, pressure, density) every this many steps (0: never)",
                       &outputEvery_, 0));
@@ -124,6 +133,7 @@ PetscErrorCode Flow::SetUp(const PetscReal gravity[3]) {
     PetscCall(viscous_.Create(sg_, bc_));
     viscous_.SetSolid(&solid_);
     PetscCall(viscous_.SetFromOptions());
+    if (transposeMode_ != TransposeMode::Explicit) PetscCall(CoupledSetUp());
   }
   PetscCall(PetscLogEventRegister("FlowExplicit", DM_CLASSID, &evExplicit_));
   PetscCall(PetscLogEventRegister("FlowPredict", DM_CLASSID, &evPredict_));
@@ -240,7 +250,7 @@ PetscErrorCode Flow::UpdatePropertyLocals() {
     if (!(lo > 0)) VofdemInputError(grid_->Comm(), "flow: the viscosity must be positive everywhere (found %g Pa s)", (double)lo);
     PetscReal hi;
     PetscCall(VecMax(mu_, nullptr, &hi));
-    viscosityJump_ = hi > lo;
+    viscosityJump_ = hi - lo > 1e-12 * hi;  // not round-off of mixing equal phases (ex31: mu the same in both)
     PetscCall(VecMin(eps_, nullptr, &lo));
     if (!(lo > 0)) VofdemInputError(grid_->Comm(), "flow: the fluid fraction eps must be positive everywhere (found %g)", (double)lo);
     PetscCall(VecPointwiseDivide(beta_, eps_, rho_));
@@ -281,7 +291,7 @@ PetscErrorCode Flow::Step(PetscReal t, PetscReal dt) {
   last_.pressureIterations   = pressure_.Iterations();
   last_.pressureResidual     = pressure_.ResidualNorm();
   last_.preconditionerReused = pressure_.PreconditionerReused();
-  last_.viscousIterations    = implicitViscosity_ ? viscous_.Iterations() : 0;
+  last_.viscousIterations    = CoupledNow() ? coupledIterations_ : implicitViscosity_ ? viscous_.Iterations() : 0;
   PetscReal rate = 0;
   for (int d = 0; d < 3; ++d) {
     PetscReal m;
@@ -392,6 +402,15 @@ PetscErrorCode Flow::View(PetscViewer viewer) const {
   PetscCall(solid_.View(viewer));
   PetscCall(pressure_.View(viewer));
   if (implicitViscosity_) PetscCall(viscous_.View(viewer));
+  PetscReal muLo = 0, muHi = 0;
+  PetscCall(VecMin(mu_, nullptr, &muLo));
+  PetscCall(VecMax(mu_, nullptr, &muHi));
+  if (implicitViscosity_ && (transposeMode_ == TransposeMode::Implicit || (transposeMode_ == TransposeMode::Auto && muHi - muLo > 1e-12 * muHi))) {
+    KSPType type;
+    PetscCall(KSPGetType(coupledKsp_, &type));
+    PetscCall(PetscViewerASCIIPrintf(viewer, "flow viscous transpose: implicit%s, the three components in one solve, %s + jacobi (-flow_viscous_coupled_ksp_type)\n",
+                                     transposeMode_ == TransposeMode::Auto ? " where the viscosity varies (auto)" : "", type));
+  }
   PetscFunctionReturn(0);
 }
 
@@ -535,6 +554,7 @@ PetscErrorCode Flow::Destroy() {
   PetscCall(pressure_.Destroy());
   PetscCall(solid_.Destroy());
   if (implicitViscosity_) PetscCall(viscous_.Destroy());
+  PetscCall(CoupledDestroy());
   PetscCall(sg_.Destroy());
   PetscFunctionReturn(0);
 }

@@ -10,6 +10,7 @@ struct TermFields {
   LocalField u[3];      // ghosted velocities
   LocalField em, beta, eps;  // ghosted cell fields: eps*mu, eps/rho, eps
   LocalField H, L;      // outputs (global, component d)
+  bool       transpose = true;  // the transpose term in H (false: it is implicit, FlowViscousCoupled.cpp)
 };
 
 // Explicit terms for component d at the owned faces [s, s+n) that are not boundary faces:
@@ -84,7 +85,7 @@ void MomentumTerms(int d, const TermFields &F, const PetscInt s[3], const PetscI
         }
         const PetscReal bL = be[i - cs_d], bR = be[i];
         const PetscReal eF = 0.5 * (ep[i - cs_d] + ep[i]), bF = 2 * bL * bR / (bL + bR);
-        Ho[i] = (ADV ? -adv : 0) + trans * bF / (eF * eF);  // (eps rho)_f = eps_f^2 / b_f
+        Ho[i] = (ADV ? -adv : 0) + (F.transpose ? trans * bF / (eF * eF) : 0);  // (eps rho)_f = eps_f^2 / b_f
         Lo[i] = lap;
       }
     }
@@ -103,6 +104,7 @@ PetscErrorCode Flow::ComputeExplicitTerms() {
   PetscCall(sg_.GetLocal(3, betaLocal_, &F.beta));
   PetscCall(sg_.GetLocal(3, epsLocal_, &F.eps));
   const bool advect = advectionAcceleration_[0] == nullptr;  // false: another module transports momentum (Flow::SetAdvectionAcceleration)
+  F.transpose       = !CoupledNow();
   const PetscReal *h = grid_->Spacing();
   for (int d = 0; d < 3; ++d) {
     PetscCall(sg_.GetGlobal(d, H_[d], &F.H));
@@ -183,9 +185,34 @@ PetscErrorCode Flow::Predict(PetscReal t, PetscReal dt) {
   const PetscReal  r  = haveOld_ ? dt / dtOld_ : 0;  // first step: forward Euler in H
   const PetscReal  c1 = 1 + 0.5 * r, c0 = -0.5 * r;
   const PetscReal *h = grid_->Spacing(), *lo = grid_->Lower();
+  const bool coupled = CoupledNow();
+  if (coupled) {  // 1/2 (T(U^n) + T(0)) joins the rhs: CN with the boundary part at both levels (FlowViscousCoupled.cpp)
+    PetscCall(CoupledBoundaryPart());
+    PetscCall(TransposeOf(u_, transOut_));  // with the outflow faces as the operator sees them
+    for (int d = 0; d < 3; ++d) PetscCall(VecAXPY(transOut_[d], 1, transZero_[d]));
+  }
   PetscCall(sg_.GetLocal(3, betaLocal_, &beta));
   PetscCall(sg_.GetLocal(3, epsLocal_, &eps));
   PetscCall(sg_.GetLocal(3, pLocal_, &p));
+  // After the solve: the implicit drag split from the predictor, and the normal velocity at the boundaries.
+  const auto finish = [&](int d) -> PetscErrorCode {
+    PetscFunctionBeginUser;
+    if (relaxRate_[d]) {  // SetFaceRelaxation: implicit linear drag, split from the predictor
+      PetscScalar       *uu;
+      const PetscScalar *c, *w;
+      PetscInt           m;
+      PetscCall(VecGetLocalSize(u_[d], &m));
+      PetscCall(VecGetArray(u_[d], &uu));
+      PetscCall(VecGetArrayRead(relaxRate_[d], &c));
+      PetscCall(VecGetArrayRead(relaxTarget_[d], &w));
+      for (PetscInt k = 0; k < m; ++k) uu[k] = (uu[k] + dt * c[k] * w[k]) / (1 + dt * c[k]);
+      PetscCall(VecRestoreArrayRead(relaxTarget_[d], &w));
+      PetscCall(VecRestoreArrayRead(relaxRate_[d], &c));
+      PetscCall(VecRestoreArray(u_[d], &uu));
+    }
+    PetscCall(bc_.ApplyNormal(sg_, d, u_[d]));
+    PetscFunctionReturn(0);
+  };
   for (int d = 0; d < 3; ++d) {
     if (!implicitViscosity_) {
       // L joins H: H := H + L/(eps rho)_f, so that the history holds the whole explicit term.
@@ -266,26 +293,22 @@ PetscErrorCode Flow::Predict(PetscReal t, PetscReal dt) {
     PetscCall(sg_.RestoreGlobal(d, u_[d], &u));
     PetscCall(ZeroBlocked(d, rhsFace_[d]));  // identity rows of the viscous matrix: u = 0
     PetscCall(ZeroBlocked(d, u_[d]));        // and the initial guess
+    if (coupled) {
+      PetscCall(VecAXPY(rhsFace_[d], 1, viscous_.BoundaryRhs(d)));
+      PetscCall(VecAXPY(rhsFace_[d], 0.5, transOut_[d]));  // zero on boundary and blocked rows
+      continue;  // solved with the others below
+    }
     if (implicitViscosity_) {
       PetscCall(VecAXPY(rhsFace_[d], 1, viscous_.BoundaryRhs(d)));
       PetscCall(viscous_.Solve(d, rhsFace_[d], u_[d]));
     } else {
       PetscCall(VecCopy(rhsFace_[d], u_[d]));
     }
-    if (relaxRate_[d]) {  // SetFaceRelaxation: implicit linear drag, split from the predictor
-      PetscScalar       *uu;
-      const PetscScalar *c, *w;
-      PetscInt           m;
-      PetscCall(VecGetLocalSize(u_[d], &m));
-      PetscCall(VecGetArray(u_[d], &uu));
-      PetscCall(VecGetArrayRead(relaxRate_[d], &c));
-      PetscCall(VecGetArrayRead(relaxTarget_[d], &w));
-      for (PetscInt k = 0; k < m; ++k) uu[k] = (uu[k] + dt * c[k] * w[k]) / (1 + dt * c[k]);
-      PetscCall(VecRestoreArrayRead(relaxTarget_[d], &w));
-      PetscCall(VecRestoreArrayRead(relaxRate_[d], &c));
-      PetscCall(VecRestoreArray(u_[d], &uu));
-    }
-    PetscCall(bc_.ApplyNormal(sg_, d, u_[d]));
+    PetscCall(finish(d));
+  }
+  if (coupled) {
+    PetscCall(CoupledSolve(rhsFace_));
+    for (int d = 0; d < 3; ++d) PetscCall(finish(d));
   }
   PetscCall(sg_.RestoreLocal(3, pLocal_, &p));
   PetscCall(sg_.RestoreLocal(3, epsLocal_, &eps));

@@ -77,7 +77,7 @@ PetscErrorCode Flow::ViscousRate(PetscReal *rate) {
 
   PetscFunctionBeginUser;
   if (propertiesDirty_) PetscCall(UpdatePropertyLocals());
-  if (implicitViscosity_ && !viscosityJump_) {  // nothing explicit to bound
+  if (implicitViscosity_ && (!viscosityJump_ || CoupledNow())) {  // nothing explicit to bound
     *rate = 0;
     PetscFunctionReturn(0);
   }

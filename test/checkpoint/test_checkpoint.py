@@ -19,7 +19,7 @@
                         zero exit on every rank (test/badinput/expect-error); -restart latest skips a
                         corrupted newest file and says so; a write that fails mid-run is one error line
                         and leaves the previous checkpoint valid.
-SCENE is dem, demclumps, demperiodic, dembalance, flow, vof, vofopen, coupled, coupledvof or coupledwet (the coupled ones: bitwise only). Usage: test_checkpoint.py VOFDEM CASE ARGS..."""
+SCENE is dem, demclumps, demperiodic, dembalance, flow, vof, vofimplicit, vofopen, coupled, coupledvof or coupledwet (the coupled ones: bitwise only). Usage: test_checkpoint.py VOFDEM CASE ARGS..."""
 import glob
 import os
 import re
@@ -68,6 +68,11 @@ SCENES = {
     # bound record and the flow's alpha-dependent density and viscosity must all come back.
     "vof": (["-options_file_yaml", os.path.join(ROOT, "config", "scenes", "dam-break.yaml")] +
             "-grid_cells 40,20,2 -grid_upper 0.28575,0.142875,0.0142875 -vof_boxes 0,0,0,0.05715,0.1143,0.0142875".split(), 20, (20, 20)),
+    # The same with the whole viscous stress implicit (-flow_viscous_transpose implicit, FlowViscousCoupled.cpp): the
+    # coupled solve keeps no state of its own, the AB2 history then holds no transpose term.
+    "vofimplicit": (["-options_file_yaml", os.path.join(ROOT, "config", "scenes", "dam-break.yaml")] +
+                    ("-grid_cells 40,20,2 -grid_upper 0.28575,0.142875,0.0142875 -vof_boxes 0,0,0,0.05715,0.1143,0.0142875 "
+                     "-flow_viscous implicit -flow_viscous_transpose implicit").split(), 20, (20, 20)),
     # Open faces (issue 8): the water jet entering through a band of the inflow face, falling, leaving through
     # the outflow faces (config/scenes/liquid-jet.yaml, coarser); the volumes in and out must come back too.
     "vofopen": (["-options_file_yaml", os.path.join(ROOT, "config", "scenes", "liquid-jet.yaml")] + "-grid_cells 24,12,2".split(), 10, (10, 10)),
@@ -118,7 +123,7 @@ def case_bitwise(exe, scene, ranks):
     n = SCENES[scene][1]
     tmp = tempfile.mkdtemp(prefix="vofdem-ckpt-")
     a, b, c = (os.path.join(tmp, x) for x in "abc")
-    index, every = {"dem": ("particles.xmf", "-dem_output_every"), "demclumps": ("particles.xmf", "-dem_output_every"), "dembalance": ("particles.xmf", "-dem_output_every"), "flow": ("flow.xmf", "-flow_output_every"), "vof": ("flow.xmf", "-flow_output_every"),
+    index, every = {"dem": ("particles.xmf", "-dem_output_every"), "demclumps": ("particles.xmf", "-dem_output_every"), "dembalance": ("particles.xmf", "-dem_output_every"), "flow": ("flow.xmf", "-flow_output_every"), "vof": ("flow.xmf", "-flow_output_every"), "vofimplicit": ("flow.xmf", "-flow_output_every"),
                     "vofopen": ("flow.xmf", "-flow_output_every"),
                     "coupled": ("particles.xmf", "-dem_output_every"), "coupledvof": ("particles.xmf", "-dem_output_every"),
                     "coupledwet": ("particles.xmf", "-dem_output_every")}[scene]

@@ -9,6 +9,10 @@
 // H = -(U.grad)U (TVD, Advection.hpp, in the form div(Uu) - u div U) + div(eps mu grad U^T)/(eps rho);
 // L = div(eps mu grad u), implicit (Crank-Nicolson, KSP prefix flow_viscous_) or, with
 // -flow_viscous explicit, in AB2 too. AB2 with variable steps: (1 + r/2) H^n - r/2 H^{n-1}, r = dt/dt_old.
+// The transpose part T = div(eps mu grad U^T) leaves H for the Crank-Nicolson side with -flow_viscous_transpose
+// implicit, and by default (auto) while mu is not uniform (two phases): the three components are then solved
+// together (FlowViscousCoupled.cpp), because explicit T limits the step far below the capillary limit at
+// metal/gas density ratios (results/hard-cases.md).
 // Faces: (1/rho)_f = b_f/eps_f with b_f the harmonic mean of eps/rho (what PressureSolver assembles),
 // eps_f the mean of eps: the projected velocity has div(eps u) = 0 to the solver tolerance.
 #pragma once
@@ -134,6 +138,28 @@ private:
   PetscErrorCode BoundaryPressure();  // outflow faces at different pressures: the initial field between them
   PetscErrorCode ZeroBlocked(int d, Vec faceVector) const;  // the faces touching solid cells
   PetscErrorCode SolidWallTerms();  // the wall half a cell away in the explicit viscous term (SolidMask.hpp)
+  // -flow_viscous_transpose implicit (FlowViscousCoupled.cpp): the three components in one Crank-Nicolson solve.
+  PetscErrorCode TransposeTerm(Vec local[3], Vec out[3]);  // div(eps mu grad U^T) at the interior faces, N/m^3
+  PetscErrorCode CopyToOutflowFaces(int d, Vec global) const;
+  PetscErrorCode TransposeOf(Vec u[3], Vec out[3]);  // of global face velocities (CopyToOutflowFaces, ghosts filled)
+  PetscErrorCode CoupledSetUp();
+  PetscErrorCode CoupledBoundaryPart();
+  PetscErrorCode CoupledSolve(Vec rhs[3]);
+  PetscErrorCode CoupledDestroy();
+  PetscErrorCode PlaceCoupled(Vec whole, Vec part[3], bool read = false);
+  PetscErrorCode ResetCoupled(Vec whole, Vec part[3], bool read = false);
+  static PetscErrorCode CoupledMult(Mat A, Vec x, Vec y);
+  static PetscErrorCode CoupledDiagonal(Mat A, Vec diag);
+  enum class TransposeMode { Explicit, Implicit, Auto };
+  TransposeMode transposeMode_ = TransposeMode::Auto;
+  // The coupled solve this step: implicit viscosity and the transpose term implicit (auto: while mu varies).
+  bool CoupledNow() const { return implicitViscosity_ && (transposeMode_ == TransposeMode::Implicit || (transposeMode_ == TransposeMode::Auto && viscosityJump_)); }
+  Vec       transLocal_[3] = {nullptr, nullptr, nullptr}, transIn_[3] = {nullptr, nullptr, nullptr}, transOut_[3] = {nullptr, nullptr, nullptr}, transZero_[3] = {nullptr, nullptr, nullptr};
+  Vec       coupledX_[3] = {nullptr, nullptr, nullptr}, coupledY_[3] = {nullptr, nullptr, nullptr};
+  Vec       coupledSolution_ = nullptr, coupledRhs_ = nullptr;
+  Mat       coupledOp_ = nullptr;
+  KSP       coupledKsp_ = nullptr;
+  PetscInt  coupledIterations_ = 0;
 
   const Grid    *grid_ = nullptr;
   StaggeredGrid  sg_;

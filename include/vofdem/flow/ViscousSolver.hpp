@@ -26,6 +26,7 @@ public:
   PetscErrorCode Assemble(PetscReal dt, Vec epsLocal, Vec betaLocal, Vec emLocal, PetscBool coefficientsChanged);
   PetscErrorCode Solve(int d, Vec rhs, Vec u);  // u: initial guess in, solution out
   Vec            BoundaryRhs(int d) const { return bcRhs_[d]; }
+  Mat            Operator(int d) const { return A_[d]; }  // after Assemble
   PetscInt       Iterations() const { return iterations_; }
   PetscReal      AssembledDt() const { return dt_; }
   PetscErrorCode View(PetscViewer viewer) const;
