@@ -220,12 +220,41 @@ PetscErrorCode FlowBoundary::FillCellGhosts(const StaggeredGrid &sg, Vec local) 
   PetscFunctionReturn(0);
 }
 
+PetscErrorCode FlowBoundary::CopyOutflowNormal(const StaggeredGrid &sg, int d, Vec global) const {
+  LocalField u;
+  PetscInt   s[3], n[3];
+
+  PetscFunctionBeginUser;
+  if (grid_->Periodic(d)) PetscFunctionReturn(0);
+  sg.Owned(d, s, n);
+  const PetscInt last = sg.Points(d, d) - 1;
+  const int      e1 = (d + 1) % 3, e2 = (d + 2) % 3;
+  PetscCall(sg.GetGlobal(d, global, &u));
+  for (int side = 0; side < 2; ++side) {
+    const PetscInt b = side ? last : 0;
+    if (face_[2 * d + side].type != FlowBoundaryType::Outflow || b < s[d] || b >= s[d] + n[d]) continue;
+    PetscInt q[3], r[3];
+    for (q[e2] = s[e2]; q[e2] < s[e2] + n[e2]; ++q[e2])
+      for (q[e1] = s[e1]; q[e1] < s[e1] + n[e1]; ++q[e1]) {
+        q[d] = b;
+        for (int c = 0; c < 3; ++c) r[c] = q[c];
+        // The inner face may be on the previous rank only when that rank has a single cell,
+        // which StaggeredGrid forbids (2 cells per rank at least).
+        r[d]    = side ? last - 1 : 1;
+        u.at(q) = u.at(r);
+      }
+  }
+  PetscCall(sg.RestoreGlobal(d, global, &u));
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode FlowBoundary::ApplyNormal(const StaggeredGrid &sg, int d, Vec global) const {
   LocalField u;
   PetscInt   s[3], n[3];
 
   PetscFunctionBeginUser;
   if (grid_->Periodic(d)) PetscFunctionReturn(0);
+  PetscCall(CopyOutflowNormal(sg, d, global));  // reads inner faces only: independent of the prescribed ones below
   sg.Owned(d, s, n);
   const PetscInt   last = sg.Points(d, d) - 1;
   const PetscReal *lo = grid_->Lower(), *h = grid_->Spacing();
@@ -235,28 +264,19 @@ PetscErrorCode FlowBoundary::ApplyNormal(const StaggeredGrid &sg, int d, Vec glo
   if (divide) PetscCall(sg.GetGlobal(3, eps_, &ec));
   for (int side = 0; side < 2; ++side) {
     const PetscInt b = side ? last : 0;
-    if (b < s[d] || b >= s[d] + n[d]) continue;
     const FlowFace &F = face_[2 * d + side];
-    const PetscInt  inner = side ? last - 1 : 1;
-    PetscInt        q[3];
+    if (F.type == FlowBoundaryType::Outflow || b < s[d] || b >= s[d] + n[d]) continue;
+    PetscInt q[3];
     for (q[(d + 1) % 3] = s[(d + 1) % 3]; q[(d + 1) % 3] < s[(d + 1) % 3] + n[(d + 1) % 3]; ++q[(d + 1) % 3])
       for (q[(d + 2) % 3] = s[(d + 2) % 3]; q[(d + 2) % 3] < s[(d + 2) % 3] + n[(d + 2) % 3]; ++q[(d + 2) % 3]) {
         q[d] = b;
-        if (F.type == FlowBoundaryType::Outflow) {
-          PetscInt r[3] = {q[0], q[1], q[2]};
-          r[d]          = inner;
-          // The inner face may be on the previous rank only when that rank has a single cell,
-          // which StaggeredGrid forbids (2 cells per rank at least).
-          u.at(q) = u.at(r);
-        } else {
-          PetscReal x[3];
-          for (int c = 0; c < 3; ++c) x[c] = lo[c] + (c == d ? q[c] : q[c] + 0.5) * h[c];
-          u.at(q) = Prescribed(2 * d + side, d, x);
-          if (divide && F.type == FlowBoundaryType::Inflow) {
-            PetscInt c[3] = {q[0], q[1], q[2]};
-            c[d]          = side ? last - 1 : 0;  // faces 0..N, cells 0..N-1
-            u.at(q) /= PetscRealPart(ec.at(c));
-          }
+        PetscReal x[3];
+        for (int c = 0; c < 3; ++c) x[c] = lo[c] + (c == d ? q[c] : q[c] + 0.5) * h[c];
+        u.at(q) = Prescribed(2 * d + side, d, x);
+        if (divide && F.type == FlowBoundaryType::Inflow) {
+          PetscInt c[3] = {q[0], q[1], q[2]};
+          c[d]          = side ? last - 1 : 0;  // faces 0..N, cells 0..N-1
+          u.at(q) /= PetscRealPart(ec.at(c));
         }
       }
   }

@@ -42,35 +42,6 @@ void TransposeFaces(int d, const LocalField u[3], const LocalField &em, LocalFie
 
 }  // namespace
 
-// A Krylov vector's normal velocity at outflow faces, as FlowBoundary::ApplyNormal sets it after the solve: the inner
-// face's value. The solve holds those faces at their old values (identity rows); T reading them would see a jump
-// (ex46's accelerating plug flow between two outflow faces lost its uniformity to 8e-9). Linear, unlike ApplyNormal.
-PetscErrorCode Flow::CopyToOutflowFaces(int d, Vec global) const {
-  LocalField u;
-  PetscInt   s[3], n[3];
-
-  PetscFunctionBeginUser;
-  if (grid_->Periodic(d)) PetscFunctionReturn(0);
-  sg_.Owned(d, s, n);
-  const PetscInt last = sg_.Points(d, d) - 1;
-  const int      e1 = (d + 1) % 3, e2 = (d + 2) % 3;
-  PetscCall(sg_.GetGlobal(d, global, &u));
-  for (int side = 0; side < 2; ++side) {
-    const PetscInt b = side ? last : 0;
-    if (bc_.Face(2 * d + side).type != FlowBoundaryType::Outflow || b < s[d] || b >= s[d] + n[d]) continue;
-    PetscInt q[3], r[3];
-    for (q[e2] = s[e2]; q[e2] < s[e2] + n[e2]; ++q[e2])
-      for (q[e1] = s[e1]; q[e1] < s[e1] + n[e1]; ++q[e1]) {
-        q[d] = b;
-        for (int c = 0; c < 3; ++c) r[c] = q[c];
-        r[d]    = side ? last - 1 : 1;
-        u.at(q) = u.at(r);
-      }
-  }
-  PetscCall(sg_.RestoreGlobal(d, global, &u));
-  PetscFunctionReturn(0);
-}
-
 // out[d] = T_d of the ghost-filled locals (zero on boundary and blocked faces, which are not advanced).
 PetscErrorCode Flow::TransposeTerm(Vec local[3], Vec out[3]) {
   LocalField u[3], em, o;
@@ -103,7 +74,10 @@ PetscErrorCode Flow::TransposeOf(Vec u[3], Vec out[3]) {
   PetscFunctionBeginUser;
   for (int d = 0; d < 3; ++d) {
     PetscCall(VecCopy(u[d], transIn_[d]));
-    PetscCall(CopyToOutflowFaces(d, transIn_[d]));
+    // A Krylov vector's outflow faces as ApplyNormal leaves them after the solve (the inner face's value): the solve
+    // holds them at their old values (identity rows), and T reading those saw a jump (ex46's accelerating plug flow
+    // between two outflow faces lost its uniformity to 8e-9).
+    PetscCall(bc_.CopyOutflowNormal(sg_, d, transIn_[d]));
     PetscCall(DMGlobalToLocal(sg_.Face(d), transIn_[d], INSERT_VALUES, transLocal_[d]));
     PetscCall(bc_.FillVelocityGhosts(sg_, d, transLocal_[d]));
   }

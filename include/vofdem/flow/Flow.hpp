@@ -140,8 +140,7 @@ private:
   PetscErrorCode SolidWallTerms();  // the wall half a cell away in the explicit viscous term (SolidMask.hpp)
   // -flow_viscous_transpose implicit (FlowViscousCoupled.cpp): the three components in one Crank-Nicolson solve.
   PetscErrorCode TransposeTerm(Vec local[3], Vec out[3]);  // div(eps mu grad U^T) at the interior faces, N/m^3
-  PetscErrorCode CopyToOutflowFaces(int d, Vec global) const;
-  PetscErrorCode TransposeOf(Vec u[3], Vec out[3]);  // of global face velocities (CopyToOutflowFaces, ghosts filled)
+  PetscErrorCode TransposeOf(Vec u[3], Vec out[3]);  // of global face velocities (outflow faces as ApplyNormal sets them, ghosts filled)
   PetscErrorCode CoupledSetUp();
   PetscErrorCode CoupledBoundaryPart();
   PetscErrorCode CoupledSolve(Vec rhs[3]);

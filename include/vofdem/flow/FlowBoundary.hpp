@@ -52,6 +52,8 @@ public:
   // to the face the interstitial face velocity is U/eps of the cell there, so that eps_f u_f = U
   // (eps_f is that cell's eps: FillCellGhosts mirrors it). Without particles eps = 1: unchanged.
   PetscErrorCode ApplyNormal(const StaggeredGrid &sg, int d, Vec global) const;
+  // Its linear part: the normal velocity at outflow faces taken from the inner face (zero gradient).
+  PetscErrorCode CopyOutflowNormal(const StaggeredGrid &sg, int d, Vec global) const;
   // The fluid fraction (cell-centred global vector) that ApplyNormal divides inflows by; none: 1.
   void SetFluidFraction(Vec epsCells) { eps_ = epsCells; }
 
