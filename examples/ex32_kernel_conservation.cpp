@@ -3,7 +3,7 @@ static const char help[] = "Verification C3 (VERIFICATION.md) for the kernel pro
                            "on and a little across the boundaries between ranks (as between migrations), deposit their volume to the cells,\n"
                            "a force to the faces of each velocity component (also with the wall faces taking part, as the coupling's force deposit\n"
                            "does: their half control volumes) and a heat to the cells. The grid totals must equal the particle\n"
-                           "totals to a relative 1e-12, for the smooth kernel, the truncated Gaussian and the unresolved limit, with walls and\n"
+                           "totals to a relative 1e-12, for the smooth kernel, the truncated Gaussian, the unresolved limit and the divided volume, with walls and\n"
                            "with a periodic direction. The kernel average of a constant field must be that constant (1e-14), and the sum of\n"
                            "the averages of a non-uniform field is printed (the same on any rank count). Exits non-zero on failure.\n\n";
 
@@ -232,6 +232,8 @@ PetscErrorCode Run() {
   PetscCall(RunCase("truncated Gaussian, H = 1.5 cells, periodic in x", Shape::Truncated, true, 1.5, &failures));
   PetscCall(RunCase("unresolved (containing cell), walls", Shape::Unresolved, false, 1.0, &failures));
   PetscCall(RunCase("unresolved (containing cell), periodic in x", Shape::Unresolved, true, 1.0, &failures));
+  PetscCall(RunCase("divided volume (radius 0.45 cells), walls", Shape::Divided, false, 0.45, &failures));
+  PetscCall(RunCase("divided volume (radius 0.45 cells), periodic in x", Shape::Divided, true, 0.45, &failures));
   PetscCall(PetscPrintf(PETSC_COMM_WORLD, "C3 kernel conservation: %s\n", failures ? "FAIL" : "ok"));
   PetscFunctionReturn(failures ? PETSC_ERR_NOT_CONVERGED : 0);
 }

@@ -419,4 +419,12 @@ int main(int argc, char **argv) {
     suffix: unresolved_2
     nsize: 2
     args: -grate 0 -width 0.009 -height 0.036 -cell 0.003 -particles 1296 -settle_time 0.25 -coupling_kernel unresolved -velocities 0.004 -steps 60 -average_steps 20 -check_steady
+  test:
+    suffix: divided_1
+    nsize: 1
+    args: -grate 0 -width 0.006 -height 0.036 -cell 0.002 -particles 576 -settle_time 0.25 -coupling_kernel divided -coupling_eps_rate 0 -velocities 0.008 -steps 100 -average_steps 40 -dt_response_fraction 0.3 -check_steady
+  test:
+    suffix: divided_2
+    nsize: 2
+    args: -grate 0 -width 0.006 -height 0.036 -cell 0.002 -particles 576 -settle_time 0.25 -coupling_kernel divided -coupling_eps_rate 0 -velocities 0.008 -steps 100 -average_steps 40 -dt_response_fraction 0.3 -check_steady
 TEST*/

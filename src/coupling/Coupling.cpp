@@ -19,11 +19,14 @@ PetscErrorCode Coupling::SetFromOptions(MPI_Comm comm) {
   {
     OptionReader             opt(PetscOptionsObject);
     std::vector<std::string> k = {kernelName_};
-    PetscCall(opt.NameList("-kernel", "Kernel of averaging and projection: smooth ((1 - r^2/rc^2)^4, rc = sqrt(8) H), truncated (Gaussian cut at -coupling_kernel_truncation H, seed 000), unresolved (the cell that contains the particle)",
-                           {"smooth", "truncated", "unresolved"}, &k));
+    PetscCall(opt.NameList("-kernel", "Kernel of averaging and projection: smooth ((1 - r^2/rc^2)^4, rc = sqrt(8) H), truncated (Gaussian cut at -coupling_kernel_truncation H, seed 000), unresolved (the cell that contains the particle: unresolved CFD-DEM, cells of 3 d or more), divided (the cells the particle's volume overlaps, by 32 sample points: CFDEM's divided void fraction, smoother than unresolved when a cell holds few particles)",
+                           {"smooth", "truncated", "unresolved", "divided"}, &k));
     if (k.size() != 1) VofdemInputError(comm, "option -coupling_kernel: give one kernel");
     kernelName_   = k[0];
-    kernel_.shape = kernelName_ == "smooth" ? kernel::Shape::Smooth : kernelName_ == "truncated" ? kernel::Shape::Truncated : kernel::Shape::Unresolved;
+    kernel_.shape = kernelName_ == "smooth"      ? kernel::Shape::Smooth
+                    : kernelName_ == "truncated" ? kernel::Shape::Truncated
+                    : kernelName_ == "divided"   ? kernel::Shape::Divided
+                                                 : kernel::Shape::Unresolved;
     PetscCall(opt.Real("-kernel_width", "Kernel width H in particle diameters (kappa of K1: H = kappa d)", "-", &kappa_, RealRange::Positive()));
     PetscCall(opt.Real("-kernel_min_width", "Smallest kernel width in cells: H = max(kappa d, this x the largest cell spacing), so that coarse cells still see a smooth kernel", "cells",
                        &minWidthCells_, RealRange::Positive()));
@@ -74,8 +77,9 @@ PetscErrorCode Coupling::SetFromOptions(MPI_Comm comm) {
     if (contactAngleSet_ && (smoothing_.method == Smoothing::Method::Diffusion || smoothing_.method == Smoothing::Method::Gaussian))
       VofdemInputError(comm, "option -coupling_contact_angle: the capillary force finds the interface through the kernel's marginal; use -coupling_smoothing kernel or auto");
     if (contactAngleSet_) smoothing_.method = Smoothing::Method::Kernel;  // auto: the capillary force needs the kernel
-    if (contactAngleSet_ && kernel_.shape == kernel::Shape::Unresolved)
-      VofdemInputError(comm, "option -coupling_contact_angle: the capillary force finds the interface through the kernel's marginal; -coupling_kernel unresolved has no kernel (use smooth or truncated)");
+    if (contactAngleSet_ && kernel::CellBased(kernel_.shape))
+      VofdemInputError(comm, "option -coupling_contact_angle: the capillary force finds the interface through the kernel's marginal; -coupling_kernel %s has no kernel (use smooth or truncated)",
+                       kernelName_.c_str());
     std::vector<std::string> lf = {rotation::LiftName(lift_)};
     PetscCall(opt.NameList("-lift", "Magnus (rotation-induced) lift on the particles (RotationLaws.hpp, P1): none, rubinowkeller ((pi/8) d^3 rho Omega x (v - u), Re_p << 1) or oesterle (Oesterle & Bui Dinh 1998, Re_p < 140); "
                                     "Omega = omega_p - curl(u)/2. Its reaction joins the fluid's source (F5)",
@@ -104,6 +108,7 @@ PetscReal Coupling::SelfCoefficient(PetscReal H, PetscReal ReH) const {
 }
 
 PetscReal Coupling::KernelWidth(PetscReal d) const {
+  if (kernel_.shape == kernel::Shape::Divided) return d / 2;  // the divided volume reaches the sphere's radius (Kernel.hpp)
   const PetscReal *h = flow_->Staggered().Base().Spacing();
   return std::max(kappa_ * d, minWidthCells_ * std::max(h[0], std::max(h[1], h[2])));
 }
@@ -214,8 +219,9 @@ PetscErrorCode Coupling::View(PetscViewer viewer, PetscReal dt) const {
     PetscCall(PetscViewerASCIIPrintf(viewer, "coupling: d = %g m, rho_p %g kg/m^3: response time %.3g s (fluid step %.3g s: %s), cell/particle volume %.3g, cell/d %.3g, H = %.3g cells, Stokes number (Stokes settling speed) %.3g\n",
                                      (double)d, (double)rhoP, (double)tau, (double)dt, tau < dt ? "drag implicit" : "resolved by the step", (double)(Vc / V), (double)(hmax / d),
                                      (double)(KernelWidth(d) / hmax), (double)(tau * uSettle / d)));
-    if (kernel_.shape == kernel::Shape::Unresolved && Vc < 3 * V)
-      PetscCall(PetscViewerASCIIPrintf(viewer, "vofdem: warning: coupling: cells of %.3g particle volumes with -coupling_kernel unresolved: a particle fills most of its cell (use a kernel)\n", (double)(Vc / V)));
+    if (kernel::CellBased(kernel_.shape) && Vc < 3 * V)
+      PetscCall(PetscViewerASCIIPrintf(viewer, "vofdem: warning: coupling: cells of %.3g particle volumes with -coupling_kernel %s: a particle fills most of its cell (use a kernel)\n", (double)(Vc / V),
+                                       kernelName_.c_str()));
   }
   if (dem_->StableTimeStep() > dt)
     PetscCall(PetscViewerASCIIPrintf(viewer, "coupling: the DEM step %.3g s exceeds the fluid step: one DEM step per fluid step\n", (double)dem_->StableTimeStep()));

@@ -19,7 +19,7 @@ static double OseenJ(double a) {
 // decay as 1/k^2 only: its tail beyond adds ~ 1e-7 relative).
 std::vector<double> SelfDisturbanceTable(Shape s, double truncation, const std::vector<double> &ReH) {
   std::vector<double> out(ReH.size(), 0.0);
-  if (s == Shape::Unresolved || s == Shape::Linear) return out;
+  if (CellBased(s) || s == Shape::Linear) return out;
   const double rc = Cutoff(s, 1.0, truncation);
   const int    M  = 800, K = 4000;  // even
   std::vector<double> r(M + 1), gw(M + 1), g2(K + 1);

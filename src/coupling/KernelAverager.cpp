@@ -9,16 +9,6 @@ namespace vofdem {
 
 namespace {
 
-// One point of a gather: local offset, raw weight, wall flag; the weight counted in the sums (wall faces apart).
-inline void Append(PetscInt at, PetscReal w, bool onWall, PetscInt *off, PetscReal *raw, char *wall, size_t &m, PetscReal &sumAll, PetscReal &sumInner) {
-  off[m]  = at;
-  raw[m]  = w;
-  wall[m] = onWall;
-  ++m;
-  sumAll += w;
-  if (!onWall) sumInner += w;
-}
-
 // fn(offset, w) for each point of a tent (KernelAverager::TentSpan) with nonzero weight w = g_x g_y g_z, the
 // factors gw (all points, or with the wall faces left out).
 template <class Tent, class F>
@@ -70,8 +60,8 @@ PetscErrorCode KernelAverager::SetUp(const StaggeredGrid &sg, const Settings &s,
   const PetscReal *h    = sg.Base().Spacing();
   const PetscReal  hmin = std::min(h[0], std::min(h[1], h[2]));
   // Unresolved: the containing cell and its faces (one point beyond the cell's index either way);
-  // linear: the two points either side.
-  const PetscReal reach = s.shape == kernel::Shape::Unresolved || s.shape == kernel::Shape::Linear ? hmin : maxCutoff;
+  // linear: the two points either side; divided: the cells of points up to a radius (maxCutoff) away, and their faces.
+  const PetscReal reach = s.shape == kernel::Shape::Unresolved || s.shape == kernel::Shape::Linear ? hmin : s.shape == kernel::Shape::Divided ? hmin + maxCutoff : maxCutoff;
   width_ = (PetscInt)std::ceil((reach + margin) / hmin) + 1;
   tentKey_.clear(), tentState_.clear(), tentAxes_.clear();  // the tents remembered were for another grid
   for (int loc = 0; loc < 4; ++loc) {
@@ -144,6 +134,7 @@ bool KernelAverager::GatherTent(int loc, const PetscReal x[3], PetscInt *off, Pe
 bool KernelAverager::Gather(int loc, const PetscReal x[3], PetscReal H, Points &pts) const {
   pts.n      = 0;
   pts.sumAll = pts.sumInner = 0;
+  if (settings_.shape == kernel::Shape::Divided) return GatherDivided(loc, x, H, pts);
   if (settings_.shape == kernel::Shape::Linear) {
     if (pts.raw.size() < 8) {
       pts.offsets.resize(8);

@@ -10,7 +10,7 @@ namespace vofdem {
 // sigma^2 = (1/3) int r^4 k dr / int r^2 k dr (the 3-D second moment shared by three directions), by
 // Simpson's rule over the support (the smooth kernel: rc^2/13 = 8 H^2/13 in closed form).
 PetscReal Smoothing::KernelVariance(kernel::Shape s, PetscReal H, PetscReal truncation) {
-  if (s == kernel::Shape::Unresolved || s == kernel::Shape::Linear) return 0;
+  if (kernel::CellBased(s) || s == kernel::Shape::Linear) return 0;
   const PetscReal rc = kernel::Cutoff(s, H, truncation);
   const int       M  = 2000;
   PetscReal       m2 = 0, m4 = 0;
@@ -29,15 +29,16 @@ PetscErrorCode Smoothing::SetUp(const StaggeredGrid &sg, const KernelAverager::S
   PetscFunctionBeginUser;
   const PetscReal *h     = grid.Spacing();
   const PetscReal  sigma2 = KernelVariance(k.shape, H, k.truncation);
-  bool             fits   = k.shape != kernel::Shape::Unresolved;
+  bool             fits   = !kernel::CellBased(k.shape);
   for (int e = 0; e < 3; ++e) {
     spread_[e] = sigma2 - h[e] * h[e] / 6;  // the tent's own variance, h^2/6 on average, comes on top
     if (!(spread_[e] > 0)) fits = false;
   }
   if (s.method == Method::Diffusion || s.method == Method::Gaussian) {
     const char *name = Name(s.method);
-    if (k.shape == kernel::Shape::Unresolved)
-      VofdemInputError(grid.Comm(), "option -coupling_smoothing: %s smooths to a kernel's width; -coupling_kernel unresolved has none (use smooth or truncated, or -coupling_smoothing kernel)", name);
+    if (kernel::CellBased(k.shape))
+      VofdemInputError(grid.Comm(), "option -coupling_smoothing: %s smooths to a kernel's width; -coupling_kernel %s has none (use smooth or truncated, or -coupling_smoothing kernel)", name,
+                       k.shape == kernel::Shape::Divided ? "divided" : "unresolved");
     for (int e = 0; e < 3; ++e)
       if (!(spread_[e] > 0))
         VofdemInputError(grid.Comm(),

@@ -8,6 +8,9 @@
 //  - Truncated (seed 000): the Gaussian exp(-r^2/(2 H^2)) cut off at rc = c H (c = 1.2-1.5 in the
 //    seed): weights jump as cells cross rc.
 //  - Unresolved: no kernel; the cell that contains the particle (Kernel.hpp users handle it).
+//  - Divided: no kernel; the particle's volume divided among the cells it overlaps, by 32 sample points of
+//    equal volume inside the sphere (KernelAverager handles it; CFDEM's "divided" void fraction, PHYSICS.md K3).
+//    Its width H is the particle's radius: the farthest the volume reaches.
 //  - Linear: no kernel; the tent (cloud-in-cell) weight prod_e (1 - |x_e - x_J,e|/h_e) to the 2x2x2
 //    nearest points (KernelAverager handles it): the compact weight of the diffusion smoothing
 //    (DiffusionSmoother.hpp, PHYSICS.md K1).
@@ -19,13 +22,17 @@
 namespace vofdem {
 namespace kernel {
 
-enum class Shape { Smooth, Truncated, Unresolved, Linear };
+enum class Shape { Smooth, Truncated, Unresolved, Linear, Divided };
+
+// Shapes without a kernel function: the particle's own cell (Unresolved) or the cells its volume overlaps (Divided).
+inline bool CellBased(Shape s) { return s == Shape::Unresolved || s == Shape::Divided; }
 
 // Support radius of a kernel of width H; `truncation` is the truncated Gaussian's c.
 inline double Cutoff(Shape s, double H, double truncation) {
   switch (s) {
   case Shape::Smooth: return std::sqrt(8.0) * H;
   case Shape::Truncated: return truncation * H;
+  case Shape::Divided: return H;  // H is the radius
   case Shape::Unresolved:
   case Shape::Linear: return 0;
   }
@@ -41,6 +48,7 @@ inline double Weight(Shape s, double r2, double H, double rc) {
     return q * q * q * q;
   }
   case Shape::Truncated: return std::exp(-r2 / (2 * H * H));
+  case Shape::Divided:
   case Shape::Unresolved:
   case Shape::Linear: return 0;
   }

@@ -65,6 +65,17 @@ private:
     PetscReal              sumAll = 0, sumInner = 0;
   };
   bool Gather(int loc, const PetscReal x[3], PetscReal H, Points &pts) const;
+  // Divided shape (KernelAveragerDivided.cpp): the cells (and faces) of the 32 sample points of a sphere of radius R.
+  bool GatherDivided(int loc, const PetscReal x[3], PetscReal R, Points &pts) const;
+  // One point of a gather: local offset, raw weight, wall flag; the weight counted in the sums (wall faces apart).
+  static void Append(PetscInt at, PetscReal w, bool onWall, PetscInt *off, PetscReal *raw, char *wall, size_t &m, PetscReal &sumAll, PetscReal &sumInner) {
+    off[m]  = at;
+    raw[m]  = w;
+    wall[m] = onWall;
+    ++m;
+    sumAll += w;
+    if (!onWall) sumInner += w;
+  }
   // The tent's (Linear) 2 x 2 x 2 points (fewer at the box's faces) with their raw weights, written to
   // off/raw/wall; false if they leave this rank's ghosted region (the generic path, Gather).
   bool GatherTent(int loc, const PetscReal x[3], PetscInt *off, PetscReal *raw, char *wall, size_t &m, PetscReal &sumAll, PetscReal &sumInner) const;
