@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <utility>
 #include <cmath>
+#include <cstdio>
 
 namespace vofdem {
 
@@ -190,8 +191,12 @@ PetscErrorCode Coupling::View(PetscViewer viewer, PetscReal dt) const {
   const PetscReal *h = flow_->Staggered().Base().Spacing();
   const PetscReal  Vc = h[0] * h[1] * h[2], hmax = std::max(h[0], std::max(h[1], h[2]));
   const PetscReal  rho = flow_->ReferenceDensity(), mu = flow_->ReferenceViscosity();
-  PetscCall(PetscViewerASCIIPrintf(viewer, "coupling: kernel %s, H = max(%g d, %g cells)%s, drag %s%s (fluid side %s), pressure-gradient force %s, self-disturbance correction (K1b) %s, added mass C_vm %g (Du/Dt: %s), d(eps)/dt in continuity %s, ghost width %d cells\n",
-                                   kernelName_.c_str(), (double)kappa_, (double)minWidthCells_,
+  char width[96];
+  if (kernel_.shape == kernel::Shape::Unresolved) std::snprintf(width, sizeof width, "the cell of the centre");
+  else if (kernel_.shape == kernel::Shape::Divided) std::snprintf(width, sizeof width, "the cells the sphere overlaps (32 sample points)");
+  else std::snprintf(width, sizeof width, "H = max(%g d, %g cells)", (double)kappa_, (double)minWidthCells_);
+  PetscCall(PetscViewerASCIIPrintf(viewer, "coupling: kernel %s, %s%s, drag %s%s (fluid side %s), pressure-gradient force %s, self-disturbance correction (K1b) %s, added mass C_vm %g (Du/Dt: %s), d(eps)/dt in continuity %s, ghost width %d cells\n",
+                                   kernelName_.c_str(), width,
                                    kernel_.shape == kernel::Shape::Truncated ? (", cut at " + std::to_string((double)kernel_.truncation) + " H").c_str() : "",
                                    drag::Name(law_), law_ == drag::Law::Gidaspow ? (" (switch at eps " + std::to_string((double)dragSwitch_) + ")").c_str() : "", implicitFluid_ ? "implicit" : "explicit",
                                    pressureForce_ ? "on" : "off", selfCorrection_ ? "on" : "off", (double)addedMass_, addedMassAccel_ == FluidAcceleration::Pressure ? "pressure balance" : addedMassAccel_ == FluidAcceleration::None ? "none: fluid at rest" : "velocity read", epsRate_ ? "on" : "off", (int)avg_.GhostWidth()));
