@@ -39,3 +39,6 @@ vofdem_checkpoint_test(bad_input 2 badinput)
 vofdem_checkpoint_test(bitwise_demclumps_2 2 bitwise demclumps 2)
 vofdem_checkpoint_test(ranks_demclumps_2to1 2 ranks demclumps 2 1)
 set_tests_properties(checkpoint/bitwise_demclumps_2 checkpoint/ranks_demclumps_2to1 PROPERTIES TIMEOUT 900)  # > 300 s on a loaded 2-core machine
+# Spheres on an STL funnel across a restart: the saved wall candidates and springs (Walls.hpp ArchiveState).
+vofdem_checkpoint_test(bitwise_demfunnel_1 1 bitwise demfunnel 1)
+vofdem_checkpoint_test(bitwise_demfunnel_2 2 bitwise demfunnel 2)

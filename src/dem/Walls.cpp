@@ -234,7 +234,6 @@ void WallSet::SaveSprings(const ParticleArrays &a, ContactHistory *springs) cons
 void WallSet::BuildCandidates(const ParticleArrays &a, PetscReal reach, const ContactHistory &springs) {
   part_.clear(), elem_.clear(), group_.clear(), wallOf_.clear(), touching_.clear(), spring_.clear();
   rebuildTime_ = time_;
-  size_t largest = 1;
   auto add = [&](PetscInt p, int w, PetscInt e) {
     part_.push_back(p), wallOf_.push_back(w), elem_.push_back(e), touching_.push_back(0);
     spring_.insert(spring_.end(), kSpringWidth, 0);
@@ -274,13 +273,16 @@ void WallSet::BuildCandidates(const ParticleArrays &a, PetscReal reach, const Co
         }
       } break;
       }
-      if (part_.size() > start) {
-        group_.push_back((PetscInt)start);
-        largest = std::max(largest, part_.size() - start);
-      }
+      if (part_.size() > start) group_.push_back((PetscInt)start);
     }
   }
   group_.push_back((PetscInt)part_.size());
+  SizeScratch();
+}
+
+void WallSet::SizeScratch() {
+  size_t largest = 1;
+  for (size_t g = 0; g + 1 < group_.size(); ++g) largest = std::max(largest, (size_t)(group_[g + 1] - group_[g]));
   scratch_.resize(largest);
   covered_.reserve(6 * largest + 16);
   released_.reserve(largest);

@@ -19,7 +19,7 @@
                         zero exit on every rank (test/badinput/expect-error); -restart latest skips a
                         corrupted newest file and says so; a write that fails mid-run is one error line
                         and leaves the previous checkpoint valid.
-SCENE is dem, demclumps, demperiodic, dembalance, flow, vof, vofimplicit, vofopen, coupled, coupledvof or coupledwet (the coupled ones: bitwise only). Usage: test_checkpoint.py VOFDEM CASE ARGS..."""
+SCENE is dem, demclumps, demperiodic, dembalance, demfunnel, flow, vof, vofimplicit, vofopen, coupled, coupledvof or coupledwet (the coupled ones: bitwise only). Usage: test_checkpoint.py VOFDEM CASE ARGS..."""
 import glob
 import os
 import re
@@ -61,6 +61,14 @@ SCENES = {
     "dembalance": ("-physics dem -grid_cells 4,4,16 -grid_upper 0.01,0.01,0.02 -dem_radius 5e-4 -dem_fill_count -1 -dem_fill_lower 0,0,0.01 "
                    "-dem_fill_upper 0.01,0.01,0.02 -dem_fill_jitter 1 -dem_fill_velocity 0,0,-0.7 -dem_fill_velocity_spread 0.3 -dem_restitution 0.3 "
                    "-dem_friction 0.5 -seed 5 -dem_balance histogram -dem_balance_monitor 0".split(), 600, (600, 300)),
+    # 150 spheres thrown down into the tungsten scene's STL funnel (192 triangles narrower than a sphere): from
+    # step 100 on they touch it, each on several triangles at once; the restart at step 150 evaluates the
+    # saved wall candidates and springs before its first rebuild.
+    "demfunnel": ("-physics dem -grid_cells 8,8,8 -grid_lower -1.4e-3,-1.4e-3,2.2e-3 -grid_upper 1.4e-3,1.4e-3,4.7e-3 -gravity 0,0,-9.81 "
+                  "-dem_radius 6e-5 -dem_youngs_modulus 1e6 -dem_fill_count 150 -dem_fill_mode random -dem_fill_lower -4.5e-4,-4.5e-4,3.4e-3 "
+                  "-dem_fill_upper 4.5e-4,4.5e-4,4.5e-3 -dem_fill_velocity 0,0,-0.3 -dem_fill_velocity_spread 0.6 -dem_walls funnel "
+                  "-dem_wall_funnel_type stl -seed 7".split() + ["-dem_wall_funnel_file", os.path.join(ROOT, "config", "scenes", "geometry", "funnel-1to20-outlet400um.stl")],
+                  150, (150, 100)),
     # F2 at 32 x 32 x 4: the adaptive time step, AB2 history and preconditioner reuse all matter.
     "flow": (["-options_file_yaml", os.path.join(ROOT, "config", "scenes", "cavity-re100.yaml")] +
              "-grid_cells 32,32,4 -grid_upper 1,1,0.125".split(), 20, (20, 20)),
@@ -123,7 +131,7 @@ def case_bitwise(exe, scene, ranks):
     n = SCENES[scene][1]
     tmp = tempfile.mkdtemp(prefix="vofdem-ckpt-")
     a, b, c = (os.path.join(tmp, x) for x in "abc")
-    index, every = {"dem": ("particles.xmf", "-dem_output_every"), "demclumps": ("particles.xmf", "-dem_output_every"), "dembalance": ("particles.xmf", "-dem_output_every"), "flow": ("flow.xmf", "-flow_output_every"), "vof": ("flow.xmf", "-flow_output_every"), "vofimplicit": ("flow.xmf", "-flow_output_every"),
+    index, every = {"dem": ("particles.xmf", "-dem_output_every"), "demclumps": ("particles.xmf", "-dem_output_every"), "dembalance": ("particles.xmf", "-dem_output_every"), "demfunnel": ("particles.xmf", "-dem_output_every"), "flow": ("flow.xmf", "-flow_output_every"), "vof": ("flow.xmf", "-flow_output_every"), "vofimplicit": ("flow.xmf", "-flow_output_every"),
                     "vofopen": ("flow.xmf", "-flow_output_every"),
                     "coupled": ("particles.xmf", "-dem_output_every"), "coupledvof": ("particles.xmf", "-dem_output_every"),
                     "coupledwet": ("particles.xmf", "-dem_output_every")}[scene]

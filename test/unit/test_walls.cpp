@@ -22,8 +22,9 @@ struct OneParticle {
   }
 };
 
-// Force on the particle from the walls of `set` (one evaluation) and the number of contacts.
-void Evaluate(WallSet &set, OneParticle &p, PetscReal force[3], PetscInt *contacts) {
+// Force on the particle from the walls of `set` (one evaluation) and the number of contacts;
+// `rebuild` false: with the candidates the set already has (e.g. from a restart).
+void Evaluate(WallSet &set, OneParticle &p, PetscReal force[3], PetscInt *contacts, bool rebuild = true) {
   const PetscReal            lo[3] = {-1, -1, -1}, hi[3] = {1, 1, 1};
   const hertz::PairMaterial  mat   = hertz::MakePairMaterial(1e8, 0.28, 1e8, 0.28, 0.5, 0.5);
   const hertz::RollingParams rolling{};
@@ -31,7 +32,7 @@ void Evaluate(WallSet &set, OneParticle &p, PetscReal force[3], PetscInt *contac
   PetscReal                  elastic = 0, overlap = 0;
   set.Prepare(lo, hi);
   ParticleArrays a = p.Arrays();
-  set.BuildCandidates(a, 1e-4, {});
+  if (rebuild) set.BuildCandidates(a, 1e-4, {});
   p.f[0] = p.f[1] = p.f[2] = 0;
   *contacts = 0;
   const hertz::Lubrication   lub{};
@@ -58,6 +59,30 @@ PetscReal PlaneForce(PetscReal x, PetscReal y, PetscReal z, PetscReal R) {
   EXPECT_EQ(n, 1);
   return F[2];
 }
+
+// The calls of RankArchive (io/RankArchive.hpp) kept in memory: what WallSet::ArchiveState saves
+// comes back in the same order on load.
+struct MemoryArchive {
+  bool                                loading = false;
+  size_t                              next    = 0;
+  std::vector<std::vector<PetscReal>> entries;
+  bool                                Loading() const { return loading; }
+  template <class T>
+  PetscErrorCode Scalar(T *value) {
+    if (!loading) entries.push_back({(PetscReal)*value});
+    else *value = (T)entries[next++][0];
+    return 0;
+  }
+  template <class T>
+  PetscErrorCode Array(const char *, std::vector<T> *values, PetscInt = 1) {
+    if (!loading) entries.emplace_back(values->begin(), values->end());
+    else {
+      const std::vector<PetscReal> &e = entries[next++];
+      values->assign(e.begin(), e.end());
+    }
+    return 0;
+  }
+};
 
 }  // namespace
 
@@ -181,6 +206,37 @@ TEST(Walls, SphereOnVertexOfSixTrianglesCountedOnce) {
   }
   // Without the rule all six triangles would push: the test can fail.
   EXPECT_GT(6 * plane, 1.5 * plane);
+}
+
+// A restart evaluates with the saved candidates before its first rebuild: the contact loop's scratch
+// must fit the largest saved group (six triangles here; a fresh set had room for none, and the
+// tungsten funnel's restart overran the heap).
+TEST(Walls, RestoredCandidatesEvaluateAsSaved) {
+  const PetscReal        R = 1e-3, z = R - 2e-5, L = 0.01;
+  std::vector<PetscReal> corners;
+  for (int k = 0; k < 6; ++k) {
+    const PetscReal a0 = k * PETSC_PI / 3, a1 = ((k + 1) % 6) * PETSC_PI / 3;
+    corners.insert(corners.end(), {0, 0, 0, L * std::cos(a0), L * std::sin(a0), 0, L * std::cos(a1), L * std::sin(a1), 0});
+  }
+  const StlMesh fan = Mesh(corners);
+  WallSet       saved, restored;
+  saved.AddMesh("fan", fan), restored.AddMesh("fan", fan);
+  OneParticle p(1e-4, 5e-5, z, R);
+  PetscReal   F[3], G[3];
+  PetscInt    n, m;
+  Evaluate(saved, p, F, &n);
+  ASSERT_EQ(saved.Candidates(), 6u);
+  MemoryArchive ar;
+  ASSERT_EQ(saved.ArchiveState(ar), 0);
+  ar.loading = true;
+  const PetscReal lo[3] = {-1, -1, -1}, hi[3] = {1, 1, 1};
+  restored.Prepare(lo, hi);
+  ASSERT_EQ(restored.ArchiveState(ar), 0);
+  ASSERT_EQ(restored.Candidates(), 6u);
+  Evaluate(restored, p, G, &m, false);
+  EXPECT_EQ(m, n);
+  for (int d = 0; d < 3; ++d) EXPECT_EQ(G[d], F[d]) << "component " << d;
+  EXPECT_GT(F[2], 0);
 }
 
 // A sphere in a concave corner of two perpendicular faces touches both: two contacts.

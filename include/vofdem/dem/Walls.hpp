@@ -113,6 +113,7 @@ public:
     PetscCall(ar.Array("walls_spring", &spring_, kSpringWidth));
     PetscCall(ar.Array("walls_load", &load_, 6));
     PetscCall(ar.Array("walls_load_contacts", &loadContacts_));
+    if (ar.Loading()) SizeScratch();  // the loop's scratch is not saved: a restart evaluates before its first rebuild
     PetscFunctionReturn(0);
   }
   // Forgets the candidates (their particle indices belong to another decomposition).
@@ -150,6 +151,7 @@ private:
   };
   PetscErrorCode ReadWall(MPI_Comm comm, PetscOptionItems *items, const std::string &name, bool help, Wall *w);
   PetscReal      Travel(const Wall &w) const;  // bound on the surface displacement since the last rebuild
+  void           SizeScratch();                   // the contact loop's scratch for the largest group of candidates
 
   std::vector<Wall> walls_;
   MPI_Comm          comm_ = MPI_COMM_NULL;
