@@ -195,11 +195,14 @@ PetscErrorCode Coupling::View(PetscViewer viewer, PetscReal dt) const {
   if (kernel_.shape == kernel::Shape::Unresolved) std::snprintf(width, sizeof width, "the cell of the centre");
   else if (kernel_.shape == kernel::Shape::Divided) std::snprintf(width, sizeof width, "the cells the sphere overlaps (32 sample points)");
   else std::snprintf(width, sizeof width, "H = max(%g d, %g cells)", (double)kappa_, (double)minWidthCells_);
+  // K1b's table is zero where the kernel has no self-disturbance model (cell-based deposits, the linear hat).
+  const bool  modelled = std::any_of(selfTable_.begin(), selfTable_.end(), [](PetscReal c) { return c != 0; });
+  const char *k1b      = !selfCorrection_ ? "off" : modelled ? "on" : "off (none for this kernel)";
   PetscCall(PetscViewerASCIIPrintf(viewer, "coupling: kernel %s, %s%s, drag %s%s (fluid side %s), pressure-gradient force %s, self-disturbance correction (K1b) %s, added mass C_vm %g (Du/Dt: %s), d(eps)/dt in continuity %s, ghost width %d cells\n",
                                    kernelName_.c_str(), width,
                                    kernel_.shape == kernel::Shape::Truncated ? (", cut at " + std::to_string((double)kernel_.truncation) + " H").c_str() : "",
                                    drag::Name(law_), law_ == drag::Law::Gidaspow ? (" (switch at eps " + std::to_string((double)dragSwitch_) + ")").c_str() : "", implicitFluid_ ? "implicit" : "explicit",
-                                   pressureForce_ ? "on" : "off", selfCorrection_ ? "on" : "off", (double)addedMass_, addedMassAccel_ == FluidAcceleration::Pressure ? "pressure balance" : addedMassAccel_ == FluidAcceleration::None ? "none: fluid at rest" : "velocity read", epsRate_ ? "on" : "off", (int)avg_.GhostWidth()));
+                                   pressureForce_ ? "on" : "off", k1b, (double)addedMass_, addedMassAccel_ == FluidAcceleration::Pressure ? "pressure balance" : addedMassAccel_ == FluidAcceleration::None ? "none: fluid at rest" : "velocity read", epsRate_ ? "on" : "off", (int)avg_.GhostWidth()));
   PetscCall(PetscViewerASCIIPrintf(viewer, "coupling: Magnus lift %s, rotational drag torque %s, lubrication (P8) with the fluid's viscosity %s\n", rotation::LiftName(lift_),
                                    !rotationalDrag_ ? "off" : rotationalDragDennis_ ? "on (pi mu d^3, Dennis et al. Re_r factor; no reaction torque on the fluid)" : "on (pi mu d^3; no reaction torque on the fluid)",
                                    lubrication_ ? "on" : "off"));
