@@ -422,9 +422,9 @@ int main(int argc, char **argv) {
   test:
     suffix: divided_1
     nsize: 1
-    args: -grate 0 -width 0.006 -height 0.036 -cell 0.002 -particles 576 -settle_time 0.25 -coupling_kernel divided -coupling_eps_rate 0 -velocities 0.008 -steps 100 -average_steps 40 -dt_response_fraction 0.3 -check_steady
+    args: -grate 0 -width 0.006 -height 0.036 -cell 0.002 -particles 576 -settle_time 0.25 -coupling_kernel divided -velocities 0.008 -steps 100 -average_steps 40 -dt_response_fraction 0.3 -check_steady
   test:
     suffix: divided_2
     nsize: 2
-    args: -grate 0 -width 0.006 -height 0.036 -cell 0.002 -particles 576 -settle_time 0.25 -coupling_kernel divided -coupling_eps_rate 0 -velocities 0.008 -steps 100 -average_steps 40 -dt_response_fraction 0.3 -check_steady
+    args: -grate 0 -width 0.006 -height 0.036 -cell 0.002 -particles 576 -settle_time 0.25 -coupling_kernel divided -velocities 0.008 -steps 100 -average_steps 40 -dt_response_fraction 0.3 -check_steady
 TEST*/

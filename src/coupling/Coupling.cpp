@@ -20,7 +20,7 @@ PetscErrorCode Coupling::SetFromOptions(MPI_Comm comm) {
   {
     OptionReader             opt(PetscOptionsObject);
     std::vector<std::string> k = {kernelName_};
-    PetscCall(opt.NameList("-kernel", "Kernel of averaging and projection: smooth ((1 - r^2/rc^2)^4, rc = sqrt(8) H), truncated (Gaussian cut at -coupling_kernel_truncation H, seed 000), unresolved (the cell that contains the particle: unresolved CFD-DEM, cells of 3 d or more), divided (the cells the particle's volume overlaps, by 32 sample points: CFDEM's divided void fraction, smoother than unresolved when a cell holds few particles)",
+    PetscCall(opt.NameList("-kernel", "Kernel of averaging and projection: smooth ((1 - r^2/rc^2)^4, rc = sqrt(8) H), truncated (Gaussian cut at -coupling_kernel_truncation H, seed 000), unresolved (the cell that contains the particle: unresolved CFD-DEM, cells of 3 d or more), divided (the cells the particle's volume overlaps: 32 cubes of side R/2 split among cells by overlap, CFDEM's divided void fraction made continuous in the particle's position; for cells that hold few particles)",
                            {"smooth", "truncated", "unresolved", "divided"}, &k));
     if (k.size() != 1) VofdemInputError(comm, "option -coupling_kernel: give one kernel");
     kernelName_   = k[0];
@@ -193,7 +193,7 @@ PetscErrorCode Coupling::View(PetscViewer viewer, PetscReal dt) const {
   const PetscReal  rho = flow_->ReferenceDensity(), mu = flow_->ReferenceViscosity();
   char width[96];
   if (kernel_.shape == kernel::Shape::Unresolved) std::snprintf(width, sizeof width, "the cell of the centre");
-  else if (kernel_.shape == kernel::Shape::Divided) std::snprintf(width, sizeof width, "the cells the sphere overlaps (32 sample points)");
+  else if (kernel_.shape == kernel::Shape::Divided) std::snprintf(width, sizeof width, "the cells the sphere overlaps (32 cubes of side R/2, split by overlap)");
   else std::snprintf(width, sizeof width, "H = max(%g d, %g cells)", (double)kappa_, (double)minWidthCells_);
   // K1b's table is zero where the kernel has no self-disturbance model (cell-based deposits, the linear hat).
   const bool  modelled = std::any_of(selfTable_.begin(), selfTable_.end(), [](PetscReal c) { return c != 0; });

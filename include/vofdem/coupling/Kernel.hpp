@@ -8,8 +8,10 @@
 //  - Truncated (seed 000): the Gaussian exp(-r^2/(2 H^2)) cut off at rc = c H (c = 1.2-1.5 in the
 //    seed): weights jump as cells cross rc.
 //  - Unresolved: no kernel; the cell that contains the particle (Kernel.hpp users handle it).
-//  - Divided: no kernel; the particle's volume divided among the cells it overlaps, by 32 sample points of
-//    equal volume inside the sphere (KernelAverager handles it; CFDEM's "divided" void fraction, PHYSICS.md K3).
+//  - Divided: no kernel; the particle's volume divided among the cells it overlaps: 32 cubes of side R/2 and
+//    equal volume (centres inside the sphere), each split among the cells by its overlap with them, so eps is
+//    continuous in the particle's position (KernelAverager handles it; CFDEM's "divided" void fraction, whose
+//    sample points go whole to a cell, PHYSICS.md K3).
 //    Its width H is the particle's radius: the farthest the volume reaches.
 //  - Linear: no kernel; the tent (cloud-in-cell) weight prod_e (1 - |x_e - x_J,e|/h_e) to the 2x2x2
 //    nearest points (KernelAverager handles it): the compact weight of the diffusion smoothing

@@ -65,7 +65,7 @@ private:
     PetscReal              sumAll = 0, sumInner = 0;
   };
   bool Gather(int loc, const PetscReal x[3], PetscReal H, Points &pts) const;
-  // Divided shape (KernelAveragerDivided.cpp): the cells (and faces) of the 32 sample points of a sphere of radius R.
+  // Divided shape (KernelAveragerDivided.cpp): the cells (and faces) the 32 cubes of a sphere of radius R overlap.
   bool GatherDivided(int loc, const PetscReal x[3], PetscReal R, Points &pts) const;
   // One point of a gather: local offset, raw weight, wall flag; the weight counted in the sums (wall faces apart).
   static void Append(PetscInt at, PetscReal w, bool onWall, PetscInt *off, PetscReal *raw, char *wall, size_t &m, PetscReal &sumAll, PetscReal &sumInner) {
