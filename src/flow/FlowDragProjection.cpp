@@ -18,9 +18,10 @@
 // every face f the correction moves, gamma = 1.5: A >= T/gamma at each of the cell's faces, hence at their
 // harmonic means, and the error factor stays in [-0.5, 1). Within a uniform bed the bound is inactive
 // (the default packed bed's drop: 27.707 -> 27.707 Pa after 200 steps). Taking c_cell = min c_f
-// (gamma = 1) never overshoots, but the faces it under-asks converge over hundreds of steps. A second
-// step-to-step flip, of d(eps)/dt in the continuity and the particles' pressure force (the bed breathes),
-// can remain in the cell-based kernels; it is not this one (results/c2-packed-bed.md).
+// (gamma = 1) never overshoots, but the faces it under-asks converge over hundreds of steps. Another
+// flip, of d(eps)/dt in the continuity and the particles' pressure force, is not this one: a relay where
+// eps jumps as a particle crosses a face (the centred rule; the divided rule is continuous since e9e281d;
+// results/c2-packed-bed.md).
 #include "vofdem/flow/Flow.hpp"
 
 namespace vofdem {
