@@ -12,6 +12,10 @@ set_tests_properties(${_unit_tests} PROPERTIES LABELS "quick;unit")
 add_test(NAME unit/outputcompare COMMAND ${VOFDEM_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/test/unit/test_outputcompare.py)
 set_tests_properties(unit/outputcompare PROPERTIES LABELS "quick;unit")
 
+# -stop_kinetic_energy: a DEM run ends once its particles are at rest; a signal-stopped run is not analysed.
+add_test(NAME dem/stop_at_rest COMMAND ${VOFDEM_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/test/dem/test_stop_at_rest.py $<TARGET_FILE:vofdem_app>)
+set_tests_properties(dem/stop_at_rest PROPERTIES LABELS "quick;dem" PROCESSORS 2 TIMEOUT 300)
+
 # ---- example tests: one CTest test per /*TEST*/ block -----------------------------------------
 set(_runner ${CMAKE_CURRENT_SOURCE_DIR}/scripts/run-examples)
 file(GLOB _example_sources ${CMAKE_CURRENT_SOURCE_DIR}/examples/ex*.cpp)
@@ -58,6 +62,9 @@ vofdem_bad_input(out_of_range       "option -dem_restitution: 1.5 is out of rang
 vofdem_bad_input(sort_every_negative "option -dem_sort_every: -1 is out of range" ${_dem} -dem_sort_every -1)
 vofdem_bad_input(vector_length      "option -gravity: needs 3 comma-separated"     ${_dem} -gravity 0,-9.81)
 vofdem_bad_input(unused_option      "unknown or unused option -dem_radus"          ${_dem} -dem_radus 1e-3)
+vofdem_bad_input(stop_kinetic_no_dem "option -stop_kinetic_energy: it is the particles' energy" -physics flow -grid_upper 0.01,0.01,0.01 -stop_kinetic_energy 1e-9)
+vofdem_bad_input(stop_kinetic_after_alone "option -stop_kinetic_energy_after: no -stop_kinetic_energy" ${_dem} -stop_kinetic_energy_after 0.1)
+vofdem_bad_input(stop_kinetic_negative "option -stop_kinetic_energy: -1e-09 is out of range" ${_dem} -stop_kinetic_energy -1e-9)
 vofdem_bad_input(box_inverted       "upper corner must exceed lower corner in z"   ${_dem} -grid_lower 0,0,0.02)
 vofdem_bad_input(dt_above_limit     "option -dt: 1\\.? s exceeds the stable limit" ${_dem} -dt 1)
 vofdem_bad_input(fill_cannot_fit    "option -dem_fill_count: cannot fit 100000"    ${_dem} -dem_fill_count 100000)

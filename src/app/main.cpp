@@ -26,7 +26,9 @@ static PetscErrorCode Run() {
     PetscCall(analysis.SetUp(&box));
     PetscCall(sim.View(PETSC_VIEWER_STDOUT_WORLD));
     PetscCall(sim.Run());
-    if (analysis.Enabled()) {
+    if (analysis.Enabled() && sim.Interrupted())
+      PetscCall(PetscPrintf(PETSC_COMM_WORLD, "vofdem: the run was stopped before its end: no analysis (-restart latest goes on)\n"));
+    else if (analysis.Enabled()) {
       vofdem::analysis::Spheres s;
       PetscCall(vofdem::PowderAnalysis::Gather(*sim.Particles(), sim.GetGrid(), &s));
       PetscCall(analysis.Run(s, box, "the particles at the end of the run"));

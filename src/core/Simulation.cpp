@@ -37,6 +37,8 @@ PetscErrorCode Simulation::SetFromOptions() {
     PetscCall(opt.Real("-dt_max", "Largest step of an adaptive run (0: no bound but the modules' limits), e.g. a fraction of the particles' drag response time m/K in a dense bed: fluid and particles exchange momentum once per step", "s", &dtMax_, RealRange::NonNegative()));
     if (dtInitial_ > 0 && dtUser_ > 0) VofdemInputError(comm_, "option -dt_initial: a fixed -dt is given; -dt_initial is the first step of an adaptive run (leave one out)");
     if (dtMax_ > 0 && dtUser_ > 0) VofdemInputError(comm_, "option -dt_max: a fixed -dt is given; -dt_max bounds an adaptive run (leave one out)");
+    PetscCall(opt.Real("-stop_kinetic_energy", "End the run once the particles' kinetic energy (translational and rotational) is below this at a monitor line (a pile at rest; 0: never)", "J", &stopKinetic_, RealRange::NonNegative()));
+    PetscCall(opt.Real("-stop_kinetic_energy_after", "Check -stop_kinetic_energy only from this simulated time on (particles at rest before they fall)", "s", &stopKineticAfter_, RealRange::NonNegative()));
     PetscCall(opt.Int("-monitor_every", "Print a monitor line every this many steps", &monitorEvery_, 1));
     PetscCall(opt.Bool("-monitor_timing", "Show wall time and ETA in monitor lines (off for reproducible output)", &monitorTiming_));
     PetscCall(opt.RealVector("-gravity", "Gravitational acceleration x,y,z", "m/s^2", gravity_, 3));
@@ -48,6 +50,8 @@ PetscErrorCode Simulation::SetFromOptions() {
   if (!physicsSet && !help) VofdemInputError(comm_, "option -physics is missing: name the modules to run, e.g. -physics dem");
   if (!finalSet) finalTime_ = PETSC_MAX_REAL;
   if (physicsSet) PetscCall(MakePhysicsSet(comm_, names, &physics_));
+  if (stopKinetic_ > 0 && !physics_.dem && !help) VofdemInputError(comm_, "option -stop_kinetic_energy: it is the particles' energy; -physics has no dem");
+  if (stopKineticAfter_ > 0 && stopKinetic_ == 0) VofdemInputError(comm_, "option -stop_kinetic_energy_after: no -stop_kinetic_energy to check");
   PetscCall(grid_.SetFromOptions(comm_));
   // With -help, every available module registers its options so that -help lists them all.
   if (physics_.dem || help) {
@@ -321,11 +325,21 @@ PetscErrorCode Simulation::Run() {
   while (step_ < maxSteps_ && time_ < finalTime_ * (1 - 1e-12)) {
     if (physics_.flow && dtUser_ == 0) PetscCall(ChooseTimeStep());  // the flow's limit moves with the flow
     PetscCall(Step());
-    const bool last = step_ == maxSteps_ || time_ >= finalTime_ * (1 - 1e-12);
-    if (step_ % monitorEvery_ == 0 || last) PetscCall(Monitor());
-    bool stop;
-    PetscCall(checkpoint_.AfterStep(*this, last, &stop));
-    if (stop) PetscFunctionReturn(0);  // a signal: checkpoint written, the run ends cleanly
+    const bool end     = step_ == maxSteps_ || time_ >= finalTime_ * (1 - 1e-12);
+    const bool monitor = step_ % monitorEvery_ == 0 || end;
+    if (monitor) PetscCall(Monitor());
+    // At rest: the monitor's energy (the same on every rank) below the bound, once the particles had time to move.
+    const bool settled = monitor && stopKinetic_ > 0 && time_ >= stopKineticAfter_ && lastKinetic_ < stopKinetic_;
+    bool       stop;
+    PetscCall(checkpoint_.AfterStep(*this, end || settled, &stop));
+    if (stop) {  // a signal: checkpoint written, the run ends cleanly
+      interrupted_ = true;
+      PetscFunctionReturn(0);
+    }
+    if (settled) {
+      PetscCall(PetscPrintf(comm_, "vofdem: the particles' kinetic energy %g J is below -stop_kinetic_energy %g J at t = %g s: at rest\n", (double)lastKinetic_, (double)stopKinetic_, (double)time_));
+      break;
+    }
   }
   if (physics_.dem && !dem_->SaveParticlesPath().empty()) PetscCall(dem_->SaveParticles(dem_->SaveParticlesPath()));
   if (physics_.flow && !flow_->ProfilePath().empty()) PetscCall(flow_->WriteProfile(flow_->ProfilePath()));
@@ -343,6 +357,7 @@ PetscErrorCode Simulation::Monitor() {
   const double wall = now - wallStart_;
   std::string extraCsv, extraScreen;
   if (physics_.dem) PetscCall(dem_->Summarize(&s));
+  if (physics_.dem) lastKinetic_ = s.kinetic + s.rotational;
   if (physics_.dem) PetscCall(dem_->MonitorValues(&extraCsv, &extraScreen));
   FlowSummary fs;
   std::string flowScreen;

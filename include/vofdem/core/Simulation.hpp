@@ -24,7 +24,9 @@ public:
   PetscErrorCode Create(MPI_Comm comm);
   PetscErrorCode SetFromOptions();
   PetscErrorCode SetUp();          // unused-option check, then modules and the time step
-  PetscErrorCode Run();            // steps until -max_steps or -final_time
+  PetscErrorCode Run();            // steps until -max_steps, -final_time or -stop_kinetic_energy
+  // True when Run() ended on a signal (Checkpoint.hpp) before its end: the state is not the run's result.
+  bool Interrupted() const { return interrupted_; }
   PetscErrorCode Step();           // one coupled step of size Dt()
   // The time step Run() takes next (the modules' stable limits, or -dt): call before Step() to step
   // as Run() does.
@@ -69,6 +71,9 @@ private:
   PetscBool dtForce_ = PETSC_FALSE, monitorTiming_ = PETSC_TRUE;
   PetscInt  step_ = 0, maxSteps_ = 100, monitorEvery_ = 10;
   PetscReal gravity_[3] = {0, 0, -9.81};
+  PetscReal stopKinetic_ = 0, stopKineticAfter_ = 0;  // -stop_kinetic_energy, -stop_kinetic_energy_after
+  PetscReal lastKinetic_ = PETSC_MAX_REAL;            // the particles' kinetic energy at the last monitor line
+  bool      interrupted_ = false;
   PetscInt  seed_ = 12345;
   std::string outputDir_;
   std::string dtLimitName_;
