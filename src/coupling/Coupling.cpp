@@ -231,6 +231,11 @@ PetscErrorCode Coupling::View(PetscViewer viewer, PetscReal dt) const {
       PetscCall(PetscViewerASCIIPrintf(viewer, "vofdem: warning: coupling: cells of %.3g particle volumes with -coupling_kernel %s: a particle fills most of its cell (use a kernel)\n", (double)(Vc / V),
                                        kernelName_.c_str()));
   }
+  // The centred rule moves a whole particle's volume when its centre crosses a face: with d(eps)/dt in the continuity a
+  // particle rattling across a face gets a pressure impulse back each time (results/c2-packed-bed.md, 2026-11-27).
+  if (kernel_.shape == kernel::Shape::Unresolved && epsRate_)
+    PetscCall(PetscViewerASCIIPrintf(viewer, "coupling: note: with -coupling_kernel unresolved eps jumps by a particle's volume when its centre crosses a face; in a dense bed of a few "
+                                             "particles per cell the drop can chatter (-coupling_kernel divided is continuous)\n"));
   if (dem_->StableTimeStep() > dt)
     PetscCall(PetscViewerASCIIPrintf(viewer, "coupling: the DEM step %.3g s exceeds the fluid step: one DEM step per fluid step\n", (double)dem_->StableTimeStep()));
   else
