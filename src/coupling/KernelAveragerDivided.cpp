@@ -79,11 +79,19 @@ bool KernelAverager::GatherDivided(int loc, const PetscReal x[3], PetscReal R, P
   PetscReal *w = pts.dx2.data();  // the box's weights (dx2 is the kernel shapes' scratch)
   std::fill(w, w + box, 0.0);
   const PetscInt step = loc == 0 ? 1 : loc == 1 ? nx : nx * ny;  // to a cell's upper face along loc
+  const PetscInt *N = grid.Cells();
+  auto            clampCell = [&](int e, PetscInt c) { return grid.Periodic(e) ? c : std::min(std::max(c, (PetscInt)0), N[e] - 1); };
   for (int p = 0; p < kPoints; ++p) {
     // The cube's share of each cell it overlaps: the product of the overlaps along the axes (a cell beyond a
     // wall gives its share to the cell at the wall, as a point beyond it went to that cell).
     PetscInt c0[3], c1[3];
     for (int e = 0; e < 3; ++e) c0[e] = (PetscInt)std::floor(lo[p][e]), c1[e] = (PetscInt)std::floor(hi[p][e]);
+    if (c0[0] == c1[0] && c0[1] == c1[1] && c0[2] == c1[2]) {  // inside one cell: most cubes when cells are larger than R/2
+      const PetscInt at = (clampCell(0, c0[0]) - q0[0]) + nx * ((clampCell(1, c0[1]) - q0[1]) + ny * (clampCell(2, c0[2]) - q0[2]));
+      w[at] += 1;
+      if (loc != 3) w[at + step] += 1;  // the unresolved rule per cube: both faces of its cell along loc
+      continue;
+    }
     for (PetscInt k = c0[2]; k <= c1[2]; ++k) {
       const PetscReal fz = Overlap(lo[p][2], hi[p][2], k);
       if (fz <= 0) continue;
@@ -93,13 +101,10 @@ bool KernelAverager::GatherDivided(int loc, const PetscReal x[3], PetscReal R, P
         for (PetscInt i = c0[0]; i <= c1[0]; ++i) {
           const PetscReal fx = Overlap(lo[p][0], hi[p][0], i);
           if (fx <= 0) continue;
-          const PetscInt ci[3] = {i, j, k};
-          PetscInt       r[3];
-          for (int e = 0; e < 3; ++e) r[e] = grid.Periodic(e) ? ci[e] : std::min(std::max(ci[e], (PetscInt)0), grid.Cells()[e] - 1);
-          const PetscInt at = (r[0] - q0[0]) + nx * ((r[1] - q0[1]) + ny * (r[2] - q0[2]));
-          const PetscReal f = fx * fy * fz;
+          const PetscInt  at = (clampCell(0, i) - q0[0]) + nx * ((clampCell(1, j) - q0[1]) + ny * (clampCell(2, k) - q0[2]));
+          const PetscReal f  = fx * fy * fz;
           w[at] += f;
-          if (loc != 3) w[at + step] += f;  // the unresolved rule per cube: both faces of its cell along loc
+          if (loc != 3) w[at + step] += f;
         }
       }
     }
