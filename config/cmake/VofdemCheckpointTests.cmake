@@ -42,3 +42,6 @@ set_tests_properties(checkpoint/bitwise_demclumps_2 checkpoint/ranks_demclumps_2
 # Spheres on an STL funnel across a restart: the saved wall candidates and springs (Walls.hpp ArchiveState).
 vofdem_checkpoint_test(bitwise_demfunnel_1 1 bitwise demfunnel 1)
 vofdem_checkpoint_test(bitwise_demfunnel_2 2 bitwise demfunnel 2)
+# ... and on another rank count: the candidates' springs carried by particle id (DemSaveLoad.cpp).
+vofdem_checkpoint_test(ranks_demfunnel_2to1 2 ranks demfunnel 2 1)
+vofdem_checkpoint_test(ranks_demfunnel_1to2 2 ranks demfunnel 1 2)

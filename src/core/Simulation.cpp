@@ -317,6 +317,8 @@ PetscErrorCode Simulation::Step() {
 PetscErrorCode Simulation::Run() {
   PetscFunctionBeginUser;
   PetscCall(PetscTime(&wallStart_));
+  runStartStep_ = step_;
+  runStartTime_ = time_;
   if (!checkpoint_.Restarting()) {  // a restart's first state was output by the run it continues
     if (physics_.dem) PetscCall(dem_->WriteOutput(time_));
     if (physics_.flow) PetscCall(flow_->WriteOutput(step_, time_));
@@ -434,8 +436,9 @@ PetscErrorCode Simulation::Monitor() {
   }
   line += flowScreen;
   if (monitorTiming_) {
-    double fraction = maxSteps_ > 0 ? (double)step_ / maxSteps_ : 0;
-    if (finalTime_ < PETSC_MAX_REAL) fraction = std::max(fraction, (double)(time_ / finalTime_));
+    // the fraction of this run's own span done (from the step and time it started at, so a restart's ETA is right)
+    double fraction = maxSteps_ > runStartStep_ ? (double)(step_ - runStartStep_) / (maxSteps_ - runStartStep_) : 0;
+    if (finalTime_ < PETSC_MAX_REAL && finalTime_ > runStartTime_) fraction = std::max(fraction, (double)((time_ - runStartTime_) / (finalTime_ - runStartTime_)));
     std::snprintf(buf, sizeof buf, "  | wall %.2f s  ETA %.1f s", wall, fraction > 0 ? wall * (1 - fraction) / fraction : 0.0);
     line += buf;
   }

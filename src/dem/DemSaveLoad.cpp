@@ -66,7 +66,7 @@ PetscErrorCode CopyField(DM swarm, const char *name, std::vector<PetscReal> *out
 struct Dem::SavedState {
   std::vector<std::vector<PetscReal>> fields;  // swarm fields, kSwarmFields order
   std::vector<PetscInt>               fieldBs;
-  std::vector<PetscReal> pairIds, wallIds, haloRanks, haloImages, sendCounts, send, stats;
+  std::vector<PetscReal> pairIds, wallIds, wallSetIds, haloRanks, haloImages, sendCounts, send, stats;
   std::vector<PetscReal> particleOutputs, contactOutputs;  // the XDMF index entries, on rank 0
 };
 
@@ -105,6 +105,9 @@ PetscErrorCode Dem::ArchiveState(RankArchive &ar, SavedState &st) {
   PetscCall(ar.Array("stats", &st.stats, kStatsWidth));
   PetscCall(ar.Array("output_particles", &st.particleOutputs, 3));  // step, time, count of each output so far (rank 0)
   PetscCall(ar.Array("output_contacts", &st.contactOutputs, 3));
+  // Appended 2026-11-27 (files written before it load without it: a restart of theirs on another rank
+  // count starts the -dem_walls contacts without their springs).
+  if (ar.HasMore()) PetscCall(ar.Array("wallset_ids", &st.wallSetIds));
   PetscFunctionReturn(0);
 }
 
@@ -123,7 +126,8 @@ PetscErrorCode Dem::SavedBytes(PetscInt64 *bytes) const {
     perParticle += bs;
   }
   PetscCall(DMSwarmGetLocalSize(swarm_.Dm(), &n));
-  values = perParticle * n + (PetscInt64)list_.Size() * (2 + 2 + kSpringWidth + 4) + (PetscInt64)walls_.Size() * (4 + kSpringWidth);
+  values = perParticle * n + (PetscInt64)list_.Size() * (2 + 2 + kSpringWidth + 4) + (PetscInt64)walls_.Size() * (4 + kSpringWidth) +
+           (PetscInt64)wallSet_.Candidates() * (5 + kSpringWidth);
   for (const auto &s : halo_.SendLists()) values += 1 + (PetscInt64)s.size();
   if (out_.particleEntries.size() + out_.contactEntries.size()) values += 3 * (PetscInt64)(out_.particleEntries.size() + out_.contactEntries.size());
   PetscCallMPI(MPI_Allreduce(&values, &all, 1, MPIU_INT64, MPI_SUM, comm_));
@@ -148,6 +152,7 @@ PetscErrorCode Dem::Save(PetscViewer viewer) {
     auto idOf = [&](PetscInt j) { return j < a.n ? a.id[j] : halo_.id[j - a.n]; };
     for (size_t k = 0; k < list_.Size(); ++k) st.pairIds.push_back((PetscReal)idOf(list_.first[k])), st.pairIds.push_back((PetscReal)idOf(list_.second[k]));
     for (size_t k = 0; k < walls_.Size(); ++k) st.wallIds.push_back((PetscReal)a.id[walls_.particle[k]]);
+    wallSet_.CandidateIds(a, &st.wallSetIds);
     PetscCall(swarm_.RestoreArrays(&a));
   }
   st.haloRanks.assign(halo_.Ranks().begin(), halo_.Ranks().end());
@@ -321,7 +326,9 @@ PetscErrorCode Dem::Load(PetscViewer viewer) {
     list_.first.clear(), list_.second.clear(), list_.spring.clear(), list_.touching.clear(), list_.rstar.clear(), list_.sqrtMstar.clear();
     walls_.Clear();
     list_.material.clear();
-    wallSet_.ClearCandidates();  // their indices are the saving ranks' (their springs are not carried: a limitation)
+    if (!wallSet_.CarrySprings(st.wallSetIds, local, &springs_))
+      PetscCall(PetscPrintf(comm_, "Dem::Load: the checkpoint predates the -dem_walls candidates' ids: on another rank count their contacts restart without tangential springs\n"));
+    wallSet_.ClearCandidates();  // their indices are the saving ranks'
     const PetscInt rebuilds = rebuilds_;
     PetscCall(Rebuild());
     rebuilds_ = rebuilds;

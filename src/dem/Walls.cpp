@@ -231,6 +231,11 @@ void WallSet::SaveSprings(const ParticleArrays &a, ContactHistory *springs) cons
   }
 }
 
+void WallSet::CandidateIds(const ParticleArrays &a, std::vector<PetscReal> *ids) const {
+  ids->clear();
+  for (PetscInt p : part_) ids->push_back((PetscReal)a.id[p]);
+}
+
 void WallSet::BuildCandidates(const ParticleArrays &a, PetscReal reach, const ContactHistory &springs) {
   part_.clear(), elem_.clear(), group_.clear(), wallOf_.clear(), touching_.clear(), spring_.clear();
   rebuildTime_ = time_;

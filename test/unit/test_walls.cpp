@@ -67,6 +67,7 @@ struct MemoryArchive {
   size_t                              next    = 0;
   std::vector<std::vector<PetscReal>> entries;
   bool                                Loading() const { return loading; }
+  bool                                SameRanks() const { return true; }
   template <class T>
   PetscErrorCode Scalar(T *value) {
     if (!loading) entries.push_back({(PetscReal)*value});

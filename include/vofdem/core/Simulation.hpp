@@ -79,6 +79,8 @@ private:
   std::string dtLimitName_;
   FILE     *csv_ = nullptr;
   PetscLogDouble wallStart_ = 0;
+  PetscInt       runStartStep_ = 0;  // step and time at Run() (a restart's ETA counts from here)
+  PetscReal      runStartTime_ = 0;
   PetscLogStage  demStage_  = -1, flowStage_ = -1, vofStage_ = -1, couplingStage_ = -1;
 };
 

@@ -86,6 +86,22 @@ public:
 
   // Rebuild step 1: the springs of touching contacts into `springs`, keyed by particle id.
   void SaveSprings(const ParticleArrays &a, ContactHistory *springs) const;
+  // Dem::Save: the particle id of each candidate, the key that carries its spring to another rank count.
+  void CandidateIds(const ParticleArrays &a, std::vector<PetscReal> *ids) const;
+  // Dem::Load on another rank count (the candidates are then all saving ranks' concatenated, `ids` their
+  // particle ids): the springs of touching candidates whose particle `holds(id)` says this rank now owns
+  // go into `springs` under WallElementKey, where the first rebuild takes them up. False if `ids` does
+  // not match the candidates (a file written before the ids were saved: the springs are then lost).
+  template <class Holds>
+  bool CarrySprings(const std::vector<PetscReal> &ids, Holds holds, ContactHistory *springs) const {
+    if (ids.size() != part_.size()) return part_.empty();
+    for (size_t k = 0; k < part_.size(); ++k) {
+      if (!touching_[k] || !holds(ids[k])) continue;
+      const PetscReal *s = &spring_[kSpringWidth * k];
+      std::copy(s, s + kSpringWidth, (*springs)[WallElementKey((PetscInt64)ids[k], wallOf_[k], elem_[k])].begin());
+    }
+    return true;
+  }
   // Rebuild step 6: candidates within r + reach of each wall element; springs from `springs`.
   void BuildCandidates(const ParticleArrays &a, PetscReal reach, const ContactHistory &springs);
 
@@ -113,7 +129,10 @@ public:
     PetscCall(ar.Array("walls_spring", &spring_, kSpringWidth));
     PetscCall(ar.Array("walls_load", &load_, 6));
     PetscCall(ar.Array("walls_load_contacts", &loadContacts_));
-    if (ar.Loading()) SizeScratch();  // the loop's scratch is not saved: a restart evaluates before its first rebuild
+    // The loop's scratch is not saved: a restart evaluates before its first rebuild. Only for the saving
+    // decomposition: on other ranks the arrays are every saving rank's concatenated (their group offsets
+    // restart at each rank's block) and Dem::Load clears them.
+    if (ar.Loading() && ar.SameRanks()) SizeScratch();
     PetscFunctionReturn(0);
   }
   // Forgets the candidates (their particle indices belong to another decomposition).

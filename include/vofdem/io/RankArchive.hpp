@@ -28,6 +28,9 @@ public:
   // True when loading on the rank count that saved: segments come back per rank.
   bool SameRanks() const { return savedRanks_ == ranks_ && !gatherAll_; }
   int  SavedRanks() const { return savedRanks_; }
+  // Loading: whether the saved rows hold another entry. State appended to the end of a layout reads it
+  // only then, so files written before the addition still load (saving: always true).
+  bool HasMore() const { return !loading_ || next_ < rowLength_; }
 
   // One value per rank (loading on another rank count: the value of saved rank 0).
   template <class T>
