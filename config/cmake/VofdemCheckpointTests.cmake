@@ -35,6 +35,7 @@ vofdem_checkpoint_test(signal_usr1_2 2 signal 2 SIGUSR1 mpiexec)
 vofdem_checkpoint_test(diskfull_1 1 diskfull 1)
 vofdem_checkpoint_test(diskfull_2 2 diskfull 2)
 vofdem_checkpoint_test(bad_input 2 badinput)
+vofdem_checkpoint_test(final_only_2 2 final 2)
 # Inserted regolith clumps (P10) across a restart: bitwise on 2 ranks, and 2 -> 1 ranks.
 vofdem_checkpoint_test(bitwise_demclumps_2 2 bitwise demclumps 2)
 vofdem_checkpoint_test(ranks_demclumps_2to1 2 ranks demclumps 2 1)

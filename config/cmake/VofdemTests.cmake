@@ -114,6 +114,8 @@ vofdem_bad_input(wall_zero_normal   "option -dem_wall_tilt_normal: the normal mu
 vofdem_bad_input(wall_zero_axis     "option -dem_wall_drum_axis: the axis must not be zero" ${_dem} -dem_walls drum -dem_wall_drum_type cylinder -dem_wall_drum_axis 0,0,0 -dem_wall_drum_radius 1e-3)
 vofdem_bad_input(wall_radius        "option -dem_wall_drum_radius: -0.001 is out of range" ${_dem} -dem_walls drum -dem_wall_drum_type cylinder -dem_wall_drum_axis 0,0,1 -dem_wall_drum_radius -1e-3)
 vofdem_bad_input(wall_stl_missing   "option -dem_wall_blade_file: cannot read '.*none\\.stl'" ${_dem} -dem_walls blade -dem_wall_blade_type stl -dem_wall_blade_file ${_bad}/none.stl)
+vofdem_bad_input(wall_stl_relative  "option -dem_wall_blade_file: cannot read 'no/such\\.stl' \\(a relative path starts at the working directory '/.*'\\)" ${_dem} -dem_walls blade -dem_wall_blade_type stl -dem_wall_blade_file no/such.stl)
+vofdem_bad_input(particles_relative "option -dem_particles_file: cannot open 'no/such\\.csv' \\(a relative path starts at the working directory '/.*'\\)" ${_dem} -dem_particles_file no/such.csv)
 vofdem_bad_input(wall_stl_malformed "option -dem_wall_blade_file: '.*malformed\\.stl': ASCII STL line 5: expected 'vertex x y z'" ${_dem} -dem_walls blade -dem_wall_blade_type stl -dem_wall_blade_file ${_bad}/malformed.stl)
 vofdem_bad_input(wall_stl_truncated "truncated\\.stl': binary STL: the header announces 2 triangles \\(184 bytes\\), the file has 134 bytes" ${_dem} -dem_walls blade -dem_wall_blade_type stl -dem_wall_blade_file ${_bad}/truncated.stl)
 include(VofdemOutputTests)  # DEM output and analysis

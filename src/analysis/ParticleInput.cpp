@@ -8,6 +8,7 @@
 #include "vofdem/dem/ParticleSwarm.hpp"
 #include "vofdem/grid/Grid.hpp"
 #include "vofdem/io/ReadAll.hpp"
+#include "vofdem/io/InputPath.hpp"
 
 #include <petscviewerhdf5.h>
 
@@ -82,7 +83,7 @@ PetscErrorCode PowderAnalysis::Read(MPI_Comm comm, const std::string &path, anal
   PetscFunctionBeginUser;
   // The HDF5 signature first, so that a wrong file is one line, not HDF5's and PETSc's traces.
   std::ifstream f(path, std::ios::binary);
-  if (!f.good()) VofdemInputError(comm, "option -analysis_input: cannot open '%s'", path.c_str());
+  if (!f.good()) VofdemInputError(comm, "option -analysis_input: cannot open '%s'%s", path.c_str(), RelativePathNote(path).c_str());
   char sig[8] = {0};
   f.read(sig, 8);
   if (std::string(sig, 8) != std::string("\x89HDF\r\n\x1a\n", 8)) VofdemInputError(comm, "option -analysis_input: '%s' is not an HDF5 file", path.c_str());

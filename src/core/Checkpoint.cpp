@@ -118,12 +118,12 @@ PetscErrorCode Agree(MPI_Comm comm, bool *ok, std::string *why) {
 }  // namespace
 
 PetscErrorCode Checkpoint::SetFromOptions(MPI_Comm comm, const std::string &outputDir) {
-  PetscBool everySet = PETSC_FALSE, minutesSet = PETSC_FALSE, dirSet = PETSC_FALSE;
+  PetscBool everySet = PETSC_FALSE, minutesSet = PETSC_FALSE, dirSet = PETSC_FALSE, finalSet = PETSC_FALSE;
 
   PetscFunctionBeginUser;
   comm_ = comm;
   dir_  = outputDir.empty() ? "checkpoints" : outputDir + "/checkpoints";
-  PetscOptionsBegin(comm_, nullptr, "Checkpoint/restart (on when any -checkpoint_* or -restart is given)", "Checkpoint");
+  PetscOptionsBegin(comm_, nullptr, "Checkpoint/restart (on when -checkpoint_every, -checkpoint_minutes, -checkpoint_dir, -checkpoint_final 1 or -restart is given)", "Checkpoint");
   {
     OptionReader opt(PetscOptionsObject);
     PetscCall(opt.Int("-checkpoint_every", "Write a checkpoint every this many steps (0: never by step count)", &every_, 0, PETSC_MAX_INT, &everySet));
@@ -131,12 +131,12 @@ PetscErrorCode Checkpoint::SetFromOptions(MPI_Comm comm, const std::string &outp
                        RealRange::NonNegative(), &minutesSet));
     PetscCall(opt.Int("-checkpoint_keep", "Number of newest checkpoints kept; older ones are removed", &keep_, 1));
     PetscCall(opt.String("-checkpoint_dir", "Folder of the checkpoints (default: <-output_dir>/checkpoints, or checkpoints)", &dir_, &dirSet));
-    PetscCall(opt.Bool("-checkpoint_final", "Write a checkpoint at the end of the run", &final_));
+    PetscCall(opt.Bool("-checkpoint_final", "Write a checkpoint at the end of the run (given alone: only that one)", &final_, &finalSet));
     PetscCall(opt.Bool("-checkpoint_space_check", "Before each checkpoint, make sure the disk has room for it (posix_fallocate of its estimated size)", &spaceCheck_));
     PetscCall(opt.String("-restart", "Continue the run from this checkpoint file, or from the newest valid one in -checkpoint_dir (latest)", &restart_));
   }
   PetscOptionsEnd();
-  enabled_ = everySet || minutesSet || dirSet || !restart_.empty();
+  enabled_ = everySet || minutesSet || dirSet || (finalSet && final_) || !restart_.empty();
   PetscFunctionReturn(0);
 }
 

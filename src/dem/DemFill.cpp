@@ -4,6 +4,7 @@
 #include "vofdem/core/Runtime.hpp"
 #include "vofdem/dem/RandomFill.hpp"
 #include "vofdem/io/TextFile.hpp"
+#include "vofdem/io/InputPath.hpp"
 
 #include <algorithm>
 #include <array>
@@ -161,7 +162,7 @@ PetscErrorCode Dem::ReadParticles() {
   PetscFunctionBeginUser;
   if (particlesFile_.empty()) PetscFunctionReturn(0);
   std::ifstream in(particlesFile_);
-  if (!in) VofdemInputError(comm_, "option -dem_particles_file: cannot open '%s'", particlesFile_.c_str());
+  if (!in) VofdemInputError(comm_, "option -dem_particles_file: cannot open '%s'%s", particlesFile_.c_str(), RelativePathNote(particlesFile_).c_str());
   auto cells = [](const std::string &line) {
     std::vector<std::string> out;
     std::stringstream        ss(line);

@@ -2,6 +2,7 @@
 #include "vofdem/dem/StlMesh.hpp"
 
 #include "vofdem/core/Runtime.hpp"
+#include "vofdem/io/InputPath.hpp"
 
 #include <array>
 #include <cmath>
@@ -163,7 +164,7 @@ PetscErrorCode ReadStlMesh(MPI_Comm comm, const std::string &path, PetscReal sca
     }
   }
   PetscCallMPI(MPI_Bcast(&size, 1, MPI_LONG_LONG, 0, comm));
-  if (size < 0) VofdemInputError(comm, "option %s: cannot read '%s'", option, path.c_str());
+  if (size < 0) VofdemInputError(comm, "option %s: cannot read '%s'%s", option, path.c_str(), RelativePathNote(path).c_str());
   bytes.resize((size_t)size);
   PetscCallMPI(MPI_Bcast(bytes.data(), (int)size, MPI_CHAR, 0, comm));
   if (!ParseStl(bytes, scale, offset, &corners, &error)) VofdemInputError(comm, "option %s: '%s': %s", option, path.c_str(), error.c_str());

@@ -14,6 +14,7 @@
                         ends bitwise equal to the uninterrupted run.
   diskfull RANKS        a checkpoint that does not fit (file-size limit; a full tmpfs where mounting is
                         allowed): one line, non-zero exit, the previous checkpoint intact.
+  final RANKS           -checkpoint_final 1 alone: the last step's checkpoint only, and a run goes on from it.
   badinput              -restart of a missing, truncated, corrupted, other-version and other-scene file,
                         -restart latest with nothing valid, an unwritable -checkpoint_dir: one line, non-
                         zero exit on every rank (test/badinput/expect-error); -restart latest skips a
@@ -373,6 +374,22 @@ def case_badinput(exe):
     shutil.rmtree(tmp)
 
 
+def case_final(exe, ranks):
+    """-checkpoint_final 1 alone turns checkpointing on, writes only the last step's file into
+    <-output_dir>/checkpoints, and a run goes on from it (until 2026-11-27 it was ignored unless
+    another -checkpoint_* option was given: the run ended without a checkpoint)."""
+    tmp = tempfile.mkdtemp(prefix="vofdem-ckpt-")
+    out = os.path.join(tmp, "out")
+    run(exe, ranks, "dem", ["-max_steps", "20", "-output_dir", out, "-checkpoint_final", "1"])
+    files = sorted(os.listdir(os.path.join(out, "checkpoints"))) if os.path.isdir(os.path.join(out, "checkpoints")) else []
+    check(files == ["checkpoint_00000020.h5"], "-checkpoint_final 1 alone: only the step-20 checkpoint in <-output_dir>/checkpoints (found %s)" % files)
+    p = run(exe, ranks, "dem", ["-max_steps", "30", "-output_dir", out, "-restart", "latest"], expect_ok=False)
+    check(p.returncode == 0 and "at step 20," in p.stdout, "a run goes on from it with -restart latest")
+    run(exe, ranks, "dem", ["-max_steps", "20", "-output_dir", os.path.join(tmp, "none")])
+    check(not os.path.exists(os.path.join(tmp, "none", "checkpoints")), "without any -checkpoint_* option no checkpoint is written")
+    shutil.rmtree(tmp)
+
+
 def main():
     exe, case, args = os.path.abspath(sys.argv[1]), sys.argv[2], sys.argv[3:]
     work = tempfile.mkdtemp(prefix="vofdem-ckpt-")
@@ -387,6 +404,8 @@ def main():
         case_diskfull(exe, int(args[0]))
     elif case == "badinput":
         case_badinput(exe)
+    elif case == "final":
+        case_final(exe, int(args[0]))
     else:
         raise SystemExit("unknown case " + case)
     if failures:
