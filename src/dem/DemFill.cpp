@@ -118,6 +118,8 @@ PetscErrorCode Dem::FillRandom(std::uint64_t seed) {
     if (req.lower[d] < grid_->Lower()[d] || req.upper[d] > grid_->Upper()[d] || !(req.upper[d] > req.lower[d]))
       VofdemInputError(comm_, "options -dem_fill_lower/-dem_fill_upper: the region [%g, %g] in %c must be non-empty and inside the box [%g, %g]",
                        (double)req.lower[d], (double)req.upper[d], "xyz"[d], (double)grid_->Lower()[d], (double)grid_->Upper()[d]);
+    // Across a whole periodic direction the fill has no faces: no radius-wide gap at the seam.
+    req.periodic[d] = grid_->Periodic(d) && req.lower[d] == grid_->Lower()[d] && req.upper[d] == grid_->Upper()[d];
   }
   req.count    = fillCount_;
   req.fraction = fillFraction_;

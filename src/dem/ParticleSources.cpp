@@ -81,10 +81,16 @@ PetscErrorCode ParticleSources::SetUp(const Grid &grid, const ParticleSwarm &swa
     // A stream of keys of its own per source: the sources draw independent numbers.
     s.seed             = random::Mix(seed ^ random::Mix(0x5eed0000ULL + k));
     const PetscReal r  = Reach(s);
-    for (int d = 0; d < 3; ++d)
-      if (!(s.upper[d] >= s.lower[d]) || s.lower[d] - r < grid.Lower()[d] || s.upper[d] + r > grid.Upper()[d])
+    for (int d = 0; d < 3; ++d) {
+      // Along a periodic direction the region may reach the faces (a feed slot across the whole width):
+      // new particles are kept apart from the old ones across the faces (SphereHash::SetPeriodic).
+      if (grid.Periodic(d) && !(s.upper[d] >= s.lower[d] && s.lower[d] >= grid.Lower()[d] && s.upper[d] <= grid.Upper()[d]))
+        VofdemInputError(comm_, "options -dem_insert_%s_lower/-dem_insert_%s_upper: the region [%g, %g] in %c must be ordered and inside the periodic box [%g, %g]",
+                         s.name.c_str(), s.name.c_str(), (double)s.lower[d], (double)s.upper[d], "xyz"[d], (double)grid.Lower()[d], (double)grid.Upper()[d]);
+      if (!grid.Periodic(d) && (!(s.upper[d] >= s.lower[d]) || s.lower[d] - r < grid.Lower()[d] || s.upper[d] + r > grid.Upper()[d]))
         VofdemInputError(comm_, "options -dem_insert_%s_lower/-dem_insert_%s_upper: the region [%g, %g] in %c must be ordered and at least the largest radius %g m inside the box [%g, %g]",
                          s.name.c_str(), s.name.c_str(), (double)s.lower[d], (double)s.upper[d], "xyz"[d], (double)r, (double)grid.Lower()[d], (double)grid.Upper()[d]);
+    }
     // A moving region stops inserting before it would leave the box.
     for (int d = 0; d < 3; ++d) {
       const PetscReal v = s.regionVelocity[d];
@@ -223,6 +229,8 @@ PetscErrorCode ParticleSources::Insert(PetscReal t, InsertionSource &s, Particle
     const PetscReal shift = s.regionVelocity[d] * std::max((PetscReal)0, std::min(t, s.end) - s.start);
     s.now[d] = s.lower[d] + shift, s.now[3 + d] = s.upper[d] + shift;
     lo[d] = s.now[d] - reach, hi[d] = s.now[3 + d] + reach;
+    // Reaching past a periodic face: the particles near the opposite face count too (all along d).
+    if (grid_->Periodic(d) && (lo[d] < grid_->Lower()[d] || hi[d] > grid_->Upper()[d])) lo[d] = grid_->Lower()[d] - reach, hi[d] = grid_->Upper()[d] + reach;
   }
   near_.clear();
   PetscCall(swarm.GetArrays(&a));
@@ -242,6 +250,8 @@ PetscErrorCode ParticleSources::Insert(PetscReal t, InsertionSource &s, Particle
   // Whether a candidate overlaps is a yes/no over the same set on every rank: the order does not matter.
   SphereHash hash;
   hash.Reset(lo, hi, rHi + rMax, total / 4 + 64);
+  for (int d = 0; d < 3; ++d)
+    if (grid_->Periodic(d)) hash.SetPeriodic(d, grid_->Lower()[d], grid_->Upper()[d]);
   for (PetscMPIInt k = 0; k < total; k += 4) hash.Add(&all[k], all[k + 3]);
   newParticles_.clear();  // kRow reals per new sphere or clump member
   while (Due(s, t)) {

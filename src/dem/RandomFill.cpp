@@ -17,6 +17,8 @@ void RandomFill(const SizeDistribution &sizes, const RandomFillRequest &req, Ran
   SphereHash   hash;
   hash.Reset(req.lower, req.upper, 2 * sizes.MaxRadius(), expected);
   hash.Reserve((size_t)(1.1 * expected) + 16);
+  for (int d = 0; d < 3; ++d)
+    if (req.periodic[d]) hash.SetPeriodic(d, req.lower[d], req.upper[d]);
   out->x.clear(), out->radius.clear();
   out->candidates = 0;
   out->complete   = false;
@@ -44,8 +46,10 @@ void RandomFill(const SizeDistribution &sizes, const RandomFillRequest &req, Ran
     for (int d = 0; d < 3; ++d) fits = fits && req.upper[d] - req.lower[d] >= 2 * r;
     for (PetscInt t = 0; fits && t < req.attempts && !placed; ++t) {  // candidate centres on streams 16, 17, ...
       ++out->candidates;
-      for (int d = 0; d < 3; ++d)
-        x[d] = req.lower[d] + r + (req.upper[d] - req.lower[d] - 2 * r) * random::Uniform(req.seed, (std::uint64_t)k, 16 + 3 * (std::uint64_t)t + d);
+      for (int d = 0; d < 3; ++d) {
+        const PetscReal u = random::Uniform(req.seed, (std::uint64_t)k, 16 + 3 * (std::uint64_t)t + d);
+        x[d]              = req.periodic[d] ? req.lower[d] + (req.upper[d] - req.lower[d]) * u : req.lower[d] + r + (req.upper[d] - req.lower[d] - 2 * r) * u;
+      }
       placed = !hash.Overlaps(x, r);
     }
     if (!placed) break;

@@ -2,10 +2,12 @@
 // the analytic moments against a numerical integral of the truncated density, cut-offs respected.
 #include "vofdem/core/Random.hpp"
 #include "vofdem/dem/RandomFill.hpp"
+#include "vofdem/dem/SphereHash.hpp"
 #include "vofdem/dem/SizeDistribution.hpp"
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <functional>
 
@@ -136,4 +138,62 @@ TEST(RandomFill, NoOverlapsInsideAndFractionReached) {
   vofdem::RandomFill(s, req, &again);
   EXPECT_FALSE(again.complete);
   EXPECT_LT(again.fraction, 0.5);
+}
+
+// A fill across a periodic direction: centres reach the faces (no radius-wide gap at the seam) and no
+// two spheres overlap through the faces either (minimum-image distances, brute force). Without the
+// periodic hash a pair across the seam is not seen (checked on the hash below).
+TEST(RandomFill, PeriodicDirectionsHaveNoSeam) {
+  SizeDistribution s;
+  s.SetUniform(2e-4, 4e-4);
+  vofdem::RandomFillRequest req;
+  const double L = 0.006;
+  for (int d = 0; d < 3; ++d) req.lower[d] = 0, req.upper[d] = L;
+  req.periodic[0] = req.periodic[1] = true;  // x and y periodic, z walls
+  req.fraction    = 0.25;
+  req.seed        = 5;
+  auto overlapsAcross = [&](const vofdem::RandomFillResult &res) {
+    int          pairs = 0;
+    const size_t n     = res.radius.size();
+    for (size_t i = 0; i < n; ++i)
+      for (size_t j = 0; j < i; ++j) {
+        double d2 = 0;
+        for (int d = 0; d < 3; ++d) {
+          double dx = res.x[3 * i + d] - res.x[3 * j + d];
+          if (d < 2) dx -= L * std::round(dx / L);
+          d2 += dx * dx;
+        }
+        const double rs = res.radius[i] + res.radius[j];
+        pairs += d2 < rs * rs * (1 - 1e-12);
+      }
+    return pairs;
+  };
+  vofdem::RandomFillResult res;
+  vofdem::RandomFill(s, req, &res);
+  ASSERT_TRUE(res.complete);
+  EXPECT_EQ(overlapsAcross(res), 0);
+  double nearFace[2] = {1, 1};  // the closest centre to x = 0 and to y = 0, in radii of that sphere
+  for (size_t i = 0; i < res.radius.size(); ++i) {
+    const double *x = &res.x[3 * i], r = res.radius[i];
+    for (int d = 0; d < 2; ++d) ASSERT_TRUE(x[d] >= 0 && x[d] < L);
+    ASSERT_TRUE(x[2] - r >= 0 && x[2] + r <= L);  // the walls keep the margin
+    for (int d = 0; d < 2; ++d) nearFace[d] = std::min({nearFace[d], x[d] / r, (L - x[d]) / r});
+  }
+  EXPECT_LT(nearFace[0], 0.2);  // centres closer to the faces than a radius: no gap
+  EXPECT_LT(nearFace[1], 0.2);
+  // The hash itself on pairs placed across the seam: without SetPeriodic they do not meet.
+  vofdem::SphereHash hash;
+  const PetscReal lo[3] = {0, 0, 0}, hi[3] = {L, L, L}, a[3] = {1e-4, 3e-3, 3e-3}, b[3] = {L - 1e-4, 3e-3, 3e-3};
+  hash.Reset(lo, hi, 8e-4, 1000);
+  hash.Add(a, 3e-4);
+  EXPECT_FALSE(hash.Overlaps(b, 3e-4));  // 5.8 mm apart in the box
+  hash.Reset(lo, hi, 8e-4, 1000);
+  hash.SetPeriodic(0, 0, L);
+  hash.Add(a, 3e-4);
+  EXPECT_TRUE(hash.Overlaps(b, 3e-4));  // 0.2 mm apart across the face x = 0
+  const PetscReal c[3] = {L - 1e-4, 3e-3 + 7e-4, 3e-3};
+  EXPECT_FALSE(hash.Overlaps(c, 3e-4));  // across the face but 0.73 mm apart
+  const PetscReal past[3] = {-2e-4, 1e-3, 1e-3}, near[3] = {L - 2e-4, 1e-3, 1e-3};
+  hash.Add(past, 2e-4);  // a centre that moved past the face since its last wrap
+  EXPECT_TRUE(hash.Overlaps(near, 2e-4));  // 0.4 mm from its image, radii 0.4 mm
 }

@@ -17,7 +17,10 @@
 namespace vofdem {
 
 struct RandomFillRequest {
-  PetscReal     lower[3] = {0, 0, 0}, upper[3] = {0, 0, 0};  // particles lie entirely inside
+  PetscReal     lower[3] = {0, 0, 0}, upper[3] = {0, 0, 0};  // particles lie entirely inside, but along a periodic direction
+  // periodic[d]: the region spans a periodic direction of the domain (lower and upper are its faces):
+  // centres anywhere in [lower, upper), spheres kept apart across the faces too (no gap at the seam)
+  bool          periodic[3] = {false, false, false};
   PetscInt      count    = 0;  // target number of particles; 0: fill to `fraction`
   PetscReal     fraction = 0;  // target solid volume fraction of the box
   PetscInt      attempts = 1000;  // candidate centres per particle before giving up
