@@ -51,7 +51,16 @@ PetscErrorCode Dem::Rebuild() {
   wallSet_.SaveSprings(a, &springs_);
   PetscCall(swarm_.RestoreArrays(&a));
   // 1b. Deletion boxes and insertion sources (their springs go with deleted particles).
-  if (sources_.Active()) PetscCall(sources_.Apply(time_, swarm_, &springs_, rMax_));
+  if (sources_.Active()) {
+    PetscCall(sources_.Apply(time_, swarm_, &springs_, rMax_));
+    // A clump inserted across a periodic face has members past it: into the box too, or the
+    // migration below would drop them.
+    if (halo_.Images().Any()) {
+      PetscCall(swarm_.GetArrays(&a));
+      halo_.Images().Wrap(a.n, a.x);
+      PetscCall(swarm_.RestoreArrays(&a));
+    }
+  }
   PetscBool repartitioned;
   PetscCall(Balance(&repartitioned));  // -dem_balance: new ownership ranges when the counts are uneven
   // 2. Particles to their owners; 3. ghosts within the cut-off.

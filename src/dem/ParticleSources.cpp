@@ -270,12 +270,13 @@ PetscErrorCode ParticleSources::Insert(PetscReal t, InsertionSource &s, Particle
   }
   // Each rank keeps the new particles it owns; a clump's members all go to the owner of its first.
   PetscInt local = 0, first;
-  for (size_t k = 0; k < newParticles_.size(); k += kRow) local += grid_->OwnsPoint(&newParticles_[k + 10]);
+  // OwnsParticle: a clump across a periodic face may have its first member (the lead) past the face.
+  for (size_t k = 0; k < newParticles_.size(); k += kRow) local += grid_->OwnsParticle(&newParticles_[k + 10]);
   PetscCall(swarm.AddLocal(local, &first));
   PetscCall(swarm.GetArrays(&a));
   for (size_t k = 0, p = first; k < newParticles_.size(); k += kRow) {
     const PetscReal *q = &newParticles_[k];
-    if (!grid_->OwnsPoint(q + 10)) continue;
+    if (!grid_->OwnsParticle(q + 10)) continue;
     for (int d = 0; d < 3; ++d) a.x[3 * p + d] = a.reference[3 * p + d] = q[d], a.v[3 * p + d] = q[3 + d], a.f[3 * p + d] = a.omega[3 * p + d] = a.torque[3 * p + d] = 0;
     a.radius[p] = q[6];
     a.id[p]     = (PetscInt64)q[7];
