@@ -9,7 +9,6 @@
   - the saved end state (spheres in the box) reads back and gives the same state after zero steps.
   On 1 and 2 ranks.
   test_periodic_file.py VOFDEM"""
-import csv
 import os
 import shutil
 import sys
@@ -19,7 +18,7 @@ import numpy as np
 
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 sys.path.insert(0, os.path.join(ROOT, "scripts", "lib"))
-from testcheck import check, failures, run_vofdem  # noqa: E402
+from testcheck import check, failures, read_particles as read, run_vofdem  # noqa: E402
 
 R, L = 1e-4, 2e-3
 BASE = ["-physics", "dem", "-grid_lower", "0,0,0", "-grid_upper", "%g,%g,%g" % (L, L, L), "-grid_cells", "4,4,4", "-grid_periodic", "x",
@@ -32,13 +31,6 @@ def write(path, rows):
         f.write("x,y,z,vx,vy,vz,wx,wy,wz,radius,clump\n")
         for r in rows:
             f.write(",".join("%.17g" % v for v in r) + "\n")
-
-
-def read(path):
-    if not os.path.exists(path):  # the run failed (reported by run_vofdem)
-        return []
-    with open(path) as f:
-        return [{k: float(v) for k, v in r.items()} for r in csv.DictReader(f)]
 
 
 def image(dx):
