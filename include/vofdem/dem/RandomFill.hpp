@@ -17,7 +17,7 @@
 namespace vofdem {
 
 struct RandomFillRequest {
-  PetscReal     lower[3] = {0, 0, 0}, upper[3] = {0, 0, 0};  // particles lie entirely inside, but along a periodic direction
+  PetscReal     lower[3] = {0, 0, 0}, upper[3] = {0, 0, 0};  // particles lie entirely inside (but see `periodic`)
   // periodic[d]: the region spans a periodic direction of the domain (lower and upper are its faces):
   // centres anywhere in [lower, upper), spheres kept apart across the faces too (no gap at the seam)
   bool          periodic[3] = {false, false, false};
