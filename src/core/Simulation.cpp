@@ -94,6 +94,14 @@ PetscErrorCode Simulation::SetFromOptions() {
 
 PetscErrorCode Simulation::SetUp() {
   PetscFunctionBeginUser;
+  // The output folder first: the modules check at their set-up that their own files (-dem_save_particles
+  // out/p.csv) can be written, and a fresh run's folder must not fail that. Its errors are reported below.
+  if (!outputDir_.empty()) {
+    PetscMPIInt rank;
+    PetscCallMPI(MPI_Comm_rank(comm_, &rank));
+    std::error_code ec;
+    if (rank == 0) std::filesystem::create_directories(outputDir_, ec);
+  }
   PetscCall(grid_.SetUp(physics_.dem ? PETSC_TRUE : PETSC_FALSE));
   if (physics_.flow) {
     PetscCall(PetscLogStageGetId("Flow", &flowStage_));

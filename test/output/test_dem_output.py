@@ -6,7 +6,9 @@
     2 x pair contacts + wall contacts, segments = pair contacts, ids 0..N-1 in order, type 0,
     |F| = |F_n + F_t|, F_n along the line of centres, F_t normal to it;
   - 1 and 2 ranks give the same files (ids and counts exactly, reals within 1e-10 relative);
-  - ParaView reads both indices (scripts/check-paraview), when pvpython is installed.
+  - ParaView reads both indices (scripts/check-paraview), when pvpython is installed;
+  - -dem_save_particles may name a file inside the run's own new -output_dir (it was refused as
+    unwritable: the folder was made after the check), and the CSV holds the last step's particles.
   test_dem_output.py VOFDEM_EXECUTABLE"""
 import csv
 import os
@@ -28,7 +30,7 @@ SCENE = ("-physics dem -grid_cells 4,4,4 -grid_upper 0.01,0.01,0.01 -dem_radius 
 
 def run(exe, n, out):
     cut = ["-grid_ranks", "2,1,1"] if n == 2 else []  # the particles lie at the bottom: cut across x
-    run_vofdem(exe, n, SCENE + cut + ["-output_dir", out])
+    run_vofdem(exe, n, SCENE + cut + ["-output_dir", out, "-dem_save_particles", os.path.join(out, "final.csv")])
 
 
 def monitor(out):
@@ -59,6 +61,17 @@ def contents(out):
                 check(np.allclose(f["force_magnitude"][()], np.linalg.norm(fn + ft, axis=1), rtol=1e-12), "%s: |F| = |F_n + F_t|" % name)
                 check(np.abs(np.cross(fn, u)).max() <= 1e-9 * scale, "%s: F_n along the line of centres" % name)
                 check(np.abs((ft * u).sum(axis=1)).max() <= 1e-9 * scale, "%s: F_t normal to it" % name)
+
+
+def saved(out):
+    """The CSV of -dem_save_particles against the particle file of the last step (200)."""
+    with open(os.path.join(out, "final.csv")) as f:
+        rows = list(csv.DictReader(f))
+    check(len(rows) == 200, "final.csv: %d particles (200)" % len(rows))
+    with h5py.File(os.path.join(out, "particles_000200.h5"), "r") as f:
+        h5 = np.sort(f["position"][()].reshape(-1, 3)[:, 0])
+    x = np.sort([float(r["x"]) for r in rows])
+    check(len(x) == len(h5) and np.allclose(x, h5, rtol=0, atol=1e-15), "final.csv: x of the particles as in particles_000200.h5")
 
 
 def compare(a, b):
@@ -98,6 +111,7 @@ def main():
                 print(p.stdout, end="")
                 check(p.returncode == 0, "check-xdmf %s" % index)
             contents(out)
+            saved(out)
         compare(outs[1], outs[2])
         # The checker must be able to fail: a wrong dimension in a copy of the index.
         bad = os.path.join(outs[1], "bad.xmf")
