@@ -248,6 +248,12 @@ void WallSet::BuildCandidates(const ParticleArrays &a, PetscReal reach, const Co
       touching_.back() = 1;
     }
   };
+  // The meshes' bins must cover the largest reach asked for below (with room for larger particles
+  // inserted later, so that they are not built again at every rebuild).
+  PetscReal largest = 0;
+  for (PetscInt p = 0; p < a.n; ++p) largest = std::max(largest, a.radius[p] + reach);
+  for (Wall &w : walls_)
+    if (w.kind == WallKind::Mesh && w.bins.Reach() < largest) w.bins.Build(w.mesh.corner.data(), w.mesh.Triangles(), w.meshLo, w.meshHi, 1.25 * largest);
   for (PetscInt p = 0; p < a.n; ++p) {
     const PetscReal *x = &a.x[3 * p], limit = a.radius[p] + reach;
     for (int wi = 0; wi < (int)walls_.size(); ++wi) {
@@ -269,8 +275,11 @@ void WallSet::BuildCandidates(const ParticleArrays &a, PetscReal reach, const Co
         for (int d = 0; d < 3; ++d) near = near && x0[d] > w.meshLo[d] - limit && x0[d] < w.meshHi[d] + limit;
         if (!near) break;
         const PetscReal *c = w.mesh.corner.data();
-        for (PetscInt t = 0; t < w.mesh.Triangles(); ++t) {
-          PetscReal q[3], s[3];
+        const PetscInt  *tb, *te;
+        w.bins.Near(x0, &tb, &te);  // the triangles that may be within reach, in increasing order
+        for (const PetscInt *it = tb; it != te; ++it) {
+          const PetscInt t = *it;
+          PetscReal      q[3], s[3];
           int       which;
           wall::ClosestOnTriangle(&c[9 * t], &c[9 * t + 3], &c[9 * t + 6], x0, q, &which);
           for (int d = 0; d < 3; ++d) s[d] = x0[d] - q[d];

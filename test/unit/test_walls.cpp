@@ -1,10 +1,14 @@
 // Walls beyond the box faces: triangle regions, STL reading, and the "counted once" rule for a
 // sphere touching a mesh where triangles meet (its total force must equal a single plane's).
+#include "vofdem/dem/TriangleBins.hpp"
 #include "vofdem/dem/WallContacts.hpp"
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <vector>
 
 using namespace vofdem;
 
@@ -309,4 +313,59 @@ TEST(Walls, MovingWallTriggersRebuild) {
   EXPECT_TRUE(set.MovedBeyond(5e-5));
   set.BuildCandidates(p.Arrays(), 1e-4, {});
   EXPECT_FALSE(set.MovedBeyond(5e-5));
+}
+
+// The mesh walls' binning (TriangleBins) must offer every triangle within reach of a point, in
+// increasing order, as a search through all triangles finds them: random slivers and points, some
+// outside the mesh's box (up to the reach), and a reach smaller than the bins were built for.
+TEST(Walls, TriangleBinsOfferEveryTriangleWithinReach) {
+  std::uint64_t state = 12345;
+  auto          uniform = [&]() {  // xorshift, reproducible on any platform
+    state ^= state << 13, state ^= state >> 7, state ^= state << 17;
+    return (state >> 11) * (1.0 / 9007199254740992.0);
+  };
+  const PetscInt         triangles = 300;
+  std::vector<PetscReal> corner(9 * triangles);
+  PetscReal              lo[3] = {1e9, 1e9, 1e9}, hi[3] = {-1e9, -1e9, -1e9};
+  for (PetscInt t = 0; t < triangles; ++t) {
+    // Long slivers (a cone's facets) and small triangles, in a 2 x 1 x 1 box.
+    const PetscReal a[3] = {2 * uniform(), uniform(), uniform()}, len = t % 3 ? 0.05 : 1.0;
+    for (int v = 0; v < 3; ++v)
+      for (int d = 0; d < 3; ++d) {
+        const PetscReal c = a[d] + (v ? len * (uniform() - 0.5) : 0);
+        corner[9 * t + 3 * v + d] = c, lo[d] = std::min(lo[d], c), hi[d] = std::max(hi[d], c);
+      }
+  }
+  const PetscReal reach = 0.03;
+  TriangleBins    bins;
+  bins.Build(corner.data(), triangles, lo, hi, reach);
+  long found = 0;
+  for (int k = 0; k < 20000; ++k) {
+    PetscReal x[3];
+    for (int d = 0; d < 3; ++d) x[d] = lo[d] - reach + (hi[d] - lo[d] + 2 * reach) * uniform();
+    const PetscReal        limit = (k % 2 ? 1.0 : 0.5) * reach;
+    std::vector<PetscInt> all, offered;
+    for (PetscInt t = 0; t < triangles; ++t) {
+      PetscReal q[3];
+      int       which;
+      wall::ClosestOnTriangle(&corner[9 * t], &corner[9 * t + 3], &corner[9 * t + 6], x, q, &which);
+      const PetscReal s[3] = {x[0] - q[0], x[1] - q[1], x[2] - q[2]};
+      if (s[0] * s[0] + s[1] * s[1] + s[2] * s[2] < limit * limit) all.push_back(t);
+    }
+    const PetscInt *b, *e;
+    bins.Near(x, &b, &e);
+    ASSERT_TRUE(std::is_sorted(b, e));
+    for (const PetscInt *it = b; it != e; ++it) {
+      PetscReal q[3];
+      int       which;
+      wall::ClosestOnTriangle(&corner[9 * *it], &corner[9 * *it + 3], &corner[9 * *it + 6], x, q, &which);
+      const PetscReal s[3] = {x[0] - q[0], x[1] - q[1], x[2] - q[2]};
+      if (s[0] * s[0] + s[1] * s[1] + s[2] * s[2] < limit * limit) offered.push_back(*it);
+    }
+    ASSERT_EQ(offered, all) << "point " << k;
+    found += (long)all.size();
+    // And the bins are much shorter than the mesh (they are the point of it).
+    ASSERT_LT(e - b, triangles / 2);
+  }
+  EXPECT_GT(found, 1000);  // the points did meet triangles
 }

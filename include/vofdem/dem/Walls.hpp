@@ -26,6 +26,7 @@
 #include "vofdem/dem/NeighbourList.hpp"
 #include "vofdem/dem/ParticleSwarm.hpp"
 #include "vofdem/dem/StlMesh.hpp"
+#include "vofdem/dem/TriangleBins.hpp"
 #include "vofdem/dem/WallGeometry.hpp"
 
 #include <string>
@@ -160,6 +161,7 @@ private:
     PetscReal    scale = 1, offset[3] = {0, 0, 0};
     StlMesh      mesh;
     PetscReal    meshLo[3] = {0, 0, 0}, meshHi[3] = {0, 0, 0};  // bounding box, reference frame
+    TriangleBins bins;                                           // the triangles near each point, reference frame
     wall::Motion motion;
     wall::Pose   pose;
     bool         centerGiven = false;       // -dem_wall_<name>_rotation_point given
