@@ -346,6 +346,12 @@ def case_badinput(exe):
                  ["-restart", f20, "-dem_radius", "4e-4", "-max_steps", "30"])
     p = run(exe, 2, "dem", ["-restart", f20, "-dem_radius", "0.00050", "-max_steps", "21", "-checkpoint_dir", os.path.join(tmp, "spelled")])
     check("restarted from" in p.stdout, "a number spelled differently (-dem_radius 0.00050 for 5e-4) is the same scene")
+    # What only reads the run (the end-of-run analysis, particle and contact files) may change at a restart.
+    out = os.path.join(tmp, "readers")
+    p = run(exe, 2, "dem", ["-restart", f20, "-analysis_metrics", "packing", "-dem_output_every", "1", "-dem_contacts_every", "1", "-max_steps", "21",
+                            "-output_dir", out, "-checkpoint_dir", os.path.join(tmp, "readers-ckpt")])
+    check("restarted from" in p.stdout and "packing density" in p.stdout and os.path.exists(os.path.join(out, "particles.xmf")),
+          "a restart may add the analysis and particle/contact output (%s)" % p.stdout.strip().splitlines()[-1][:80])
     expect_error(exe, (E % "checkpoint_00000020\\.h5") + "it is of physics dem, this run flow", ["-restart", f20, "-max_steps", "30"], scene="flow")
     # latest: nothing valid (the two files of `bad` renamed as checkpoints)
     junk = os.path.join(tmp, "junk")
