@@ -181,8 +181,14 @@ std::string Canonical(const std::string &line) {
 std::string FirstDifference(const std::string &saved, const std::string &current) {
   std::istringstream a(saved), b(current);
   std::string        la, lb;
+  // A checkpoint of an older vofdem may list options that are free now (-analysis_* since 2026-11-27).
+  auto next = [](std::istringstream &in, std::string *line) {
+    while (std::getline(in, *line))
+      if (!IsFree(line->substr(0, line->find(' ')))) return true;
+    return false;
+  };
   while (true) {
-    const bool ha = (bool)std::getline(a, la), hb = (bool)std::getline(b, lb);
+    const bool ha = next(a, &la), hb = next(b, &lb);
     if (!ha && !hb) return "";
     if (ha && hb && Canonical(la) == Canonical(lb)) continue;
     // Sorted lists: the smaller line is the one missing from the other side.
