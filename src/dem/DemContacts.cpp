@@ -5,7 +5,6 @@
 #include "vofdem/dem/WallContacts.hpp"
 
 #include <algorithm>
-#include <cstdint>
 #include <cstring>
 #include <type_traits>
 #include <unordered_set>
@@ -287,108 +286,83 @@ PetscErrorCode Dem::ComputeForcesWith(PetscReal dt) {
   }
   PetscReal *__restrict__ force = a.f, *__restrict__ torque = a.torque;
   const PeriodicImages &images = halo_.Images();
-  // Two passes per chunk of the list: the first finds the pairs in contact (or in reach of the near
-  // forces) and writes their indices without a branch, the second evaluates only those, in the list's
-  // order (so sums and springs are as with one pass). Whether a neighbour pair touches is close to a
-  // coin toss in a dense pile, and branching on it per pair cost ~18 % of this loop in mispredictions.
-  constexpr size_t kChunk = 256, kPrefetch = 8, kPrefetchAhead = 16;
-  std::uint32_t    kept[kChunk];  // offsets into the chunk
-  const size_t     pairs = list_.Size();
-  for (size_t k0 = 0; k0 < pairs; k0 += kChunk) {
-    const size_t kn = std::min(pairs - k0, kChunk);
-    size_t       m  = 0;
-    for (size_t q = 0; q < kn; ++q) {
-      const size_t     k = k0 + q;
-      if (k + kPrefetchAhead < pairs) {  // the second particle of a pair further on: its x and r (two lines)
-        const HotParticle &f = hot_[list_.second[k + kPrefetchAhead]];
-        __builtin_prefetch(f.x), __builtin_prefetch(&f.r);
-      }
-      const PetscReal *xa = hot_[list_.first[k]].x, *xb = hot_[list_.second[k]].x, *sh = images.Shift(pairImage_[k]);
-      const PetscReal  dx[3] = {(xa[0] - xb[0]) + sh[0], (xa[1] - xb[1]) + sh[1], (xa[2] - xb[2]) + sh[2]};
-      const PetscReal  dist2 = dx[0] * dx[0] + dx[1] * dx[1] + dx[2] * dx[2], rsum = hot_[list_.first[k]].r + hot_[list_.second[k]].r;
-      const PetscReal  reach = NEAR ? rsum + adhesionRange_ : rsum;
-      // A bonded JKR pair beyond touching is decided in the second pass.
-      const bool keep = (dist2 < reach * reach) | (JKR && list_.touching[k]);
-      kept[m] = (std::uint32_t)q;
-      m += keep;
-      // Pairs that left contact: their springs are cleared here (rare: predicted).
-      if (!keep && list_.touching[k]) std::fill(&list_.spring[kSpringWidth * k], &list_.spring[kSpringWidth * (k + 1)], 0), list_.touching[k] = 0;
+  // Prefetches a few pairs ahead: the springs' line (loaded for touching pairs only, so the hardware
+  // does not see a stream) and the second particle's x and r (two lines of HotParticle).
+  constexpr size_t kSpringsAhead = 8, kParticleAhead = 16;
+  const size_t     pairs         = list_.Size();
+  for (size_t k = 0; k < pairs; ++k) {
+    if (k + kParticleAhead < pairs) {
+      const HotParticle &f = hot_[list_.second[k + kParticleAhead]];
+      __builtin_prefetch(f.x), __builtin_prefetch(&f.r);
     }
-    for (size_t c = 0; c < m; ++c) {
-      const size_t   k  = k0 + kept[c];
-      if (c + kPrefetch < m) {  // the springs' line of a pair a few ahead (the loads that stalled)
-        const size_t kf = k0 + kept[c + kPrefetch];
-        __builtin_prefetch(&list_.spring[kSpringWidth * kf]);
-        if constexpr (JKR) __builtin_prefetch(&jkrPairs_[kf]);
+    if (k + kSpringsAhead < pairs) __builtin_prefetch(&list_.spring[kSpringWidth * (k + kSpringsAhead)]);
+    const PetscInt ia = list_.first[k], ib = list_.second[k];  // lower id first
+    const PetscReal *xa = hot_[ia].x, *xb = hot_[ib].x, *sh = images.Shift(pairImage_[k]);
+    const PetscReal  dx[3] = {(xa[0] - xb[0]) + sh[0], (xa[1] - xb[1]) + sh[1], (xa[2] - xb[2]) + sh[2]};
+    const PetscReal  dist2 = dx[0] * dx[0] + dx[1] * dx[1] + dx[2] * dx[2], rsum = hot_[ia].r + hot_[ib].r;
+    PetscReal       *stored = &list_.spring[kSpringWidth * k];
+    const hertz::PairMaterial &pm = MULTI ? table_.Pair(list_.material[k]) : pair_;
+    // In contact from touching on; a JKR bond holds until its break overlap (P6). A bonded pair touched
+    // at the last evaluation: the byte is read first, so the springs' line is loaded only for those.
+    const bool inContact =
+      dist2 < rsum * rsum ||
+      (JKR && list_.touching[k] && stored[kJkrBonded] != 0 && rsum - std::sqrt(dist2) > jkrPairs_[k].breakOverlap);
+    if constexpr (NEAR) {  // along the line of centres across the gap: van der Waals (P7) and lubrication (P8)
+      const PetscReal rangeSum = rsum + adhesionRange_;
+      if (dist2 < rangeSum * rangeSum) {
+        const PetscReal dist = std::sqrt(dist2), gap = dist - rsum, *va = hot_[ia].v, *vb = hot_[ib].v;
+        // f = -(c v_n) n on a, with v_n = (v_a - v_b) . dx / dist > 0 separating: divided by dist once more below.
+        const PetscReal vnDist = (va[0] - vb[0]) * dx[0] + (va[1] - vb[1]) * dx[1] + (va[2] - vb[2]) * dx[2];
+        // The lubrication's viscosity: the pair's mean of the fluid's with -coupling_lubrication, else 1 (lubrication_ holds it).
+        const PetscReal mu = 0.5 * (hot_[ia].mu + hot_[ib].mu);
+        const PetscReal fv = (hertz::VdwAttraction(vdw_, gap, list_.rstar[k]) + mu * hertz::LubricationCoefficient(lubrication_, gap, list_.rstar[k]) * vnDist / dist) / dist;
+        if (ia < n)
+          for (int e = 0; e < 3; ++e) force[3 * ia + e] -= fv * dx[e];
+        if (ib < n)
+          for (int e = 0; e < 3; ++e) force[3 * ib + e] += fv * dx[e];
       }
-      const PetscInt ia = list_.first[k], ib = list_.second[k];  // lower id first
-      const PetscReal *xa = hot_[ia].x, *xb = hot_[ib].x, *sh = images.Shift(pairImage_[k]);
-      const PetscReal  dx[3] = {(xa[0] - xb[0]) + sh[0], (xa[1] - xb[1]) + sh[1], (xa[2] - xb[2]) + sh[2]};
-      const PetscReal  dist2 = dx[0] * dx[0] + dx[1] * dx[1] + dx[2] * dx[2], rsum = hot_[ia].r + hot_[ib].r;
-      PetscReal       *stored = &list_.spring[kSpringWidth * k];
-      const hertz::PairMaterial &pm = MULTI ? table_.Pair(list_.material[k]) : pair_;
-      // In contact from touching on; a JKR bond holds until its break overlap (P6). A bonded pair touched
-      // at the last evaluation: the byte is read first, so the springs' line is loaded only for those.
-      const bool inContact =
-        dist2 < rsum * rsum ||
-        (JKR && list_.touching[k] && stored[kJkrBonded] != 0 && rsum - std::sqrt(dist2) > jkrPairs_[k].breakOverlap);
-      if constexpr (NEAR) {  // along the line of centres across the gap: van der Waals (P7) and lubrication (P8)
-        const PetscReal rangeSum = rsum + adhesionRange_;
-        if (dist2 < rangeSum * rangeSum) {
-          const PetscReal dist = std::sqrt(dist2), gap = dist - rsum, *va = hot_[ia].v, *vb = hot_[ib].v;
-          // f = -(c v_n) n on a, with v_n = (v_a - v_b) . dx / dist > 0 separating: divided by dist once more below.
-          const PetscReal vnDist = (va[0] - vb[0]) * dx[0] + (va[1] - vb[1]) * dx[1] + (va[2] - vb[2]) * dx[2];
-          // The lubrication's viscosity: the pair's mean of the fluid's with -coupling_lubrication, else 1 (lubrication_ holds it).
-          const PetscReal mu = 0.5 * (hot_[ia].mu + hot_[ib].mu);
-          const PetscReal fv = (hertz::VdwAttraction(vdw_, gap, list_.rstar[k]) + mu * hertz::LubricationCoefficient(lubrication_, gap, list_.rstar[k]) * vnDist / dist) / dist;
-          if (ia < n)
-            for (int e = 0; e < 3; ++e) force[3 * ia + e] -= fv * dx[e];
-          if (ib < n)
-            for (int e = 0; e < 3; ++e) force[3 * ib + e] += fv * dx[e];
-        }
-      }
-      if (!inContact) {
-        if (list_.touching[k]) std::fill(stored, stored + kSpringWidth, 0), list_.touching[k] = 0;
-        continue;
-      }
-      list_.touching[k] = 1;
-      // The springs are worked on in a local copy and stored once: through the pointer, every store
-      // would make the compiler reload what it might alias.
-      PetscReal xi[kSpringWidth];
-      std::copy(stored, stored + kSpringWidth, xi);
-      // Copies, not references: stores into the force arrays below cannot alias them.
-      const HotParticle A = hot_[ia], B = hot_[ib];
-      const PetscReal   dist = std::sqrt(dist2), inv = 1 / dist, delta = rsum - dist, Rstar = list_.rstar[k];
-      PetscReal         nrm[3], rw[3], wxn[3], vrel[3], F[3], Ft[3], nxF[3], wrel[3], M[3];
-      for (int e = 0; e < 3; ++e) nrm[e] = dx[e] * inv, rw[e] = A.r * A.w[e] + B.r * B.w[e], wrel[e] = A.w[e] - B.w[e];
-      Cross(rw, nrm, wxn);
-      for (int e = 0; e < 3; ++e) vrel[e] = A.v[e] - B.v[e] - wxn[e];  // surface of A against surface of B
-      hertz::NormalLaw law = NormalLawAt<COH, LIN>(pm, linearKn_, delta, Rstar, xi, JKR ? &jkrPairs_[k] : nullptr);
-      if constexpr (SJKR) law.Fel -= sjkrDensity_ * hertz::SjkrPairArea(A.r, B.r, dist);
-      const PetscReal        Sn = law.Sn, Fn = hertz::Contact(pm, law, nrm, list_.sqrtMstar[k], vrel, dt, xi, F, Ft);
-      Cross(nrm, Ft, nxF);
-      if constexpr (RM != hertz::Rolling::None) {
-        const PetscReal Ia = 1.4 * A.m * A.r * A.r, Ib = 1.4 * B.m * B.r * B.r;  // about the contact point
-        hertz::RollingTorque<RM>(MULTI ? table_.Rolling(list_.material[k]) : rollingParams_, Fn, law.frictionOffset, 2.0 / 3.0 * Sn, Rstar, Ia * Ib / (Ia + Ib), nrm, wrel, dt, xi + 3, M);
-      } else {
-        M[0] = M[1] = M[2] = 0;
-      }
-      std::copy(xi, xi + kSpringWidth, stored);
-      if (record_.on) ContactRecord::Store(&record_.pair[ContactRecord::kWidth * k], F, Ft);
-      // Torques: -R n x F_t on both, +M on A and -M on B; forces +F on A, -F on B; only local
-      // particles are written.
-      if (ia < n)
-        for (int e = 0; e < 3; ++e) force[3 * ia + e] += F[e], torque[3 * ia + e] += M[e] - A.r * nxF[e];
-      if (ib < n)
-        for (int e = 0; e < 3; ++e) force[3 * ib + e] -= F[e], torque[3 * ib + e] -= M[e] + B.r * nxF[e];
-      // A pair with a ghost is counted by both ranks: count it half on each.
-      const bool both = ia < n && ib < n;
-      stats_.pairContacts += both ? 2 : 1;
-      if (LIN) stats_.elastic += (both ? 1.0 : 0.5) * 0.5 * linearKn_ * delta * delta;
-      else if (!JKR) stats_.elastic += (both ? 1.0 : 0.5) * hertz::ElasticEnergy(Sn, delta);
-      const PetscReal twoRmin = 2 * std::min(A.r, B.r);
-      if (delta > stats_.maxOverlap * twoRmin) stats_.maxOverlap = delta / twoRmin;  // rarely: no division per contact
     }
+    if (!inContact) {
+      if (list_.touching[k]) std::fill(stored, stored + kSpringWidth, 0), list_.touching[k] = 0;
+      continue;
+    }
+    list_.touching[k] = 1;
+    // The springs are worked on in a local copy and stored once: through the pointer, every store
+    // would make the compiler reload what it might alias.
+    PetscReal xi[kSpringWidth];
+    std::copy(stored, stored + kSpringWidth, xi);
+    // Copies, not references: stores into the force arrays below cannot alias them.
+    const HotParticle A = hot_[ia], B = hot_[ib];
+    const PetscReal   dist = std::sqrt(dist2), inv = 1 / dist, delta = rsum - dist, Rstar = list_.rstar[k];
+    PetscReal         nrm[3], rw[3], wxn[3], vrel[3], F[3], Ft[3], nxF[3], wrel[3], M[3];
+    for (int e = 0; e < 3; ++e) nrm[e] = dx[e] * inv, rw[e] = A.r * A.w[e] + B.r * B.w[e], wrel[e] = A.w[e] - B.w[e];
+    Cross(rw, nrm, wxn);
+    for (int e = 0; e < 3; ++e) vrel[e] = A.v[e] - B.v[e] - wxn[e];  // surface of A against surface of B
+    hertz::NormalLaw law = NormalLawAt<COH, LIN>(pm, linearKn_, delta, Rstar, xi, JKR ? &jkrPairs_[k] : nullptr);
+    if constexpr (SJKR) law.Fel -= sjkrDensity_ * hertz::SjkrPairArea(A.r, B.r, dist);
+    const PetscReal        Sn = law.Sn, Fn = hertz::Contact(pm, law, nrm, list_.sqrtMstar[k], vrel, dt, xi, F, Ft);
+    Cross(nrm, Ft, nxF);
+    if constexpr (RM != hertz::Rolling::None) {
+      const PetscReal Ia = 1.4 * A.m * A.r * A.r, Ib = 1.4 * B.m * B.r * B.r;  // about the contact point
+      hertz::RollingTorque<RM>(MULTI ? table_.Rolling(list_.material[k]) : rollingParams_, Fn, law.frictionOffset, 2.0 / 3.0 * Sn, Rstar, Ia * Ib / (Ia + Ib), nrm, wrel, dt, xi + 3, M);
+    } else {
+      M[0] = M[1] = M[2] = 0;
+    }
+    std::copy(xi, xi + kSpringWidth, stored);
+    if (record_.on) ContactRecord::Store(&record_.pair[ContactRecord::kWidth * k], F, Ft);
+    // Torques: -R n x F_t on both, +M on A and -M on B; forces +F on A, -F on B; only local
+    // particles are written.
+    if (ia < n)
+      for (int e = 0; e < 3; ++e) force[3 * ia + e] += F[e], torque[3 * ia + e] += M[e] - A.r * nxF[e];
+    if (ib < n)
+      for (int e = 0; e < 3; ++e) force[3 * ib + e] -= F[e], torque[3 * ib + e] -= M[e] + B.r * nxF[e];
+    // A pair with a ghost is counted by both ranks: count it half on each.
+    const bool both = ia < n && ib < n;
+    stats_.pairContacts += both ? 2 : 1;
+    if (LIN) stats_.elastic += (both ? 1.0 : 0.5) * 0.5 * linearKn_ * delta * delta;
+    else if (!JKR) stats_.elastic += (both ? 1.0 : 0.5) * hertz::ElasticEnergy(Sn, delta);
+    const PetscReal twoRmin = 2 * std::min(A.r, B.r);
+    if (delta > stats_.maxOverlap * twoRmin) stats_.maxOverlap = delta / twoRmin;  // rarely: no division per contact
   }
   PetscCall(swarm_.RestoreArrays(&a));
   PetscFunctionReturn(0);
