@@ -18,7 +18,7 @@ void TriangleBins::Build(const PetscReal *corner, PetscInt triangles, const Pets
   for (int d = 0; d < 3; ++d) {
     const PetscReal len = hi[d] - lo[d] + 2 * reach;
     n_[d]               = std::max(1, std::min(64, (int)std::ceil(len / target)));
-    h_[d]               = len / n_[d];
+    h_[d]               = len > 0 ? len / n_[d] : 1;  // a flat mesh with no reach: one layer of cells
     halfDiagonal2 += 0.25 * h_[d] * h_[d];
   }
   // (a hair more than the half diagonal: a point on a cell's face may round into its neighbour)

@@ -253,7 +253,7 @@ void WallSet::BuildCandidates(const ParticleArrays &a, PetscReal reach, const Co
   PetscReal largest = 0;
   for (PetscInt p = 0; p < a.n; ++p) largest = std::max(largest, a.radius[p] + reach);
   for (Wall &w : walls_)
-    if (w.kind == WallKind::Mesh && w.bins.Reach() < largest) w.bins.Build(w.mesh.corner.data(), w.mesh.Triangles(), w.meshLo, w.meshHi, 1.25 * largest);
+    if (w.kind == WallKind::Mesh && largest > 0 && w.bins.Reach() < largest) w.bins.Build(w.mesh.corner.data(), w.mesh.Triangles(), w.meshLo, w.meshHi, 1.25 * largest);
   for (PetscInt p = 0; p < a.n; ++p) {
     const PetscReal *x = &a.x[3 * p], limit = a.radius[p] + reach;
     for (int wi = 0; wi < (int)walls_.size(); ++wi) {
