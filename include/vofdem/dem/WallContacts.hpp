@@ -27,7 +27,9 @@ void WallSet::Evaluate(const ParticleArrays &a, const WallContactLaw &law, Petsc
     const PetscReal r = a.radius[p], *x = &a.x[3 * p], *v = &a.v[3 * p], *om = &a.omega[3 * p];
     const hertz::PairMaterial  &mat     = MULTI ? law.table->Wall(a.type[p]) : *law.material;
     const hertz::RollingParams &rolling = MULTI ? law.table->WallRolling(a.type[p]) : *law.rolling;
-    const PetscReal breakGap = JKR ? r - hertz::JkrBreakOverlap(mat, r) : r;  // beyond this centre-surface distance no contact force
+    // JKR's constants depend on the material and R* = r only: once per particle and wall, not per contact and step.
+    const hertz::JkrPair jkr      = JKR ? hertz::JkrConstants(mat, r) : hertz::JkrPair{};
+    const PetscReal      breakGap = JKR ? r - jkr.breakOverlap : r;  // beyond this centre-surface distance no contact force
     const PetscReal presentGap = NEAR ? r + law.range : breakGap;
     PetscReal       x0[3];
     wall::ToReference(w.pose, w.motion, x, x0);
@@ -132,7 +134,7 @@ void WallSet::Evaluate(const ParticleArrays &a, const WallContactLaw &law, Petsc
         for (int e = 0; e < 3; ++e) load[e] += F[e], load[3 + e] += Tw[e];
       }
       // In contact from touching on; a JKR bond holds until its break overlap (P6).
-      const bool inContact = delta > 0 || (JKR && xi[kJkrBonded] != 0 && delta > hertz::JkrBreakOverlap(mat, r));
+      const bool inContact = delta > 0 || (JKR && xi[kJkrBonded] != 0 && delta > jkr.breakOverlap);
       if (!inContact) {
         if (touching_[b + k]) std::fill(xi, xi + kSpringWidth, 0), touching_[b + k] = 0;
         continue;
@@ -142,7 +144,7 @@ void WallSet::Evaluate(const ParticleArrays &a, const WallContactLaw &law, Petsc
       wall::SurfaceVelocity(w.motion, w.pose, pc, u);
       wall::CrossProduct(om, rn, wxr);
       for (int e = 0; e < 3; ++e) vrel[e] = v[e] + wxr[e] - u[e], wrel[e] = om[e] - w.pose.moving * w.motion.omega * w.motion.axis[e];
-      hertz::NormalLaw nl = NormalLawAt<COH, LIN>(mat, law.linearKn, delta, r, xi);
+      hertz::NormalLaw nl = NormalLawAt<COH, LIN>(mat, law.linearKn, delta, r, xi, JKR ? &jkr : nullptr);
       if constexpr (COH == kSjkr) nl.Fel -= law.sjkrDensity * hertz::SjkrWallArea(r, delta);
       const PetscReal        Sn = nl.Sn, Fn = hertz::Contact(mat, nl, n, std::sqrt(a.mass[p]), vrel, dt, xi, F, Ft);
       wall::CrossProduct(rn, Ft, tq);
