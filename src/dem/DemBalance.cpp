@@ -227,6 +227,7 @@ PetscErrorCode Dem::Balance(PetscBool *repartitioned) {
     PetscInt total0, total1;
     PetscCall(DMSwarmGetSize(swarm_.Dm(), &total0));
     PetscCall(DMSwarmMigrate(swarm_.Dm(), PETSC_TRUE));
+    PetscCall(swarm_.FieldsMoved());
     impl->migrate_type = type;
     PetscCall(DMSwarmGetSize(swarm_.Dm(), &total1));
     PetscCheck(total0 == total1, comm_, PETSC_ERR_PLIB, "repartition lost %" PetscInt_FMT " of %" PetscInt_FMT " particles", total0 - total1, total0);

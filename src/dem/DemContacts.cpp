@@ -66,6 +66,7 @@ PetscErrorCode Dem::Rebuild() {
   // 2. Particles to their owners; 3. ghosts within the cut-off.
   PetscCall(swarm_.Migrate());
   PetscCall(sort_.Apply(rebuilds_, swarm_.Dm(), *grid_));  // -dem_sort_every: before any local index is taken (MortonOrder.hpp)
+  PetscCall(swarm_.FieldsMoved());                          // the sort's spare point may have resized the swarm
   // A JKR bond may hold adhesionRange_ beyond touching: the cut-offs include it.
   const PetscReal cutoff = 2 * rMax_ + skin_ + adhesionRange_;
   if (halo_.Images().Any()) PetscCall(halo_.Images().Check(comm_, cutoff, "2 R_max + skin + adhesion range"));

@@ -286,6 +286,7 @@ PetscErrorCode Dem::Load(PetscViewer viewer) {
     }
   }
   PetscCall(DMSwarmSetLocalSizes(dm, (PetscInt)keep.size(), 64));
+  PetscCall(swarm_.FieldsMoved());
   for (int f = 0; f < kNumSwarmFields; ++f) {
     const PetscInt bs = st.fieldBs[f];
     for (size_t j = 0; j < keep.size(); ++j)  // in place: j <= keep[j]

@@ -178,6 +178,7 @@ PetscErrorCode ParticleSources::Delete(ParticleSwarm &swarm, ContactHistory *spr
       remove.push_back(p), gone.insert(a.id[p]), local[0] += 1, local[1] += a.mass[p];
   PetscCall(swarm.RestoreArrays(&a));
   for (PetscInt p : remove) PetscCall(DMSwarmRemovePointAtIndex(swarm.Dm(), p));
+  PetscCall(swarm.FieldsMoved());  // a removal may shrink the fields' storage
   // Their contact histories go too (pairs with a ghost partner would be dropped at the next list
   // anyway, as they are in no list).
   if (!gone.empty() && springs)

@@ -39,6 +39,7 @@ PetscErrorCode ParticleSwarm::Create(const Grid &grid) {
 
   PetscCall(DMSwarmFinalizeFieldRegister(swarm_));
   PetscCall(DMSwarmSetLocalSizes(swarm_, 0, 64));
+  PetscCall(FieldsMoved());
   PetscFunctionReturn(0);
 }
 
@@ -48,72 +49,81 @@ PetscErrorCode ParticleSwarm::Destroy() {
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode ParticleSwarm::GetArrays(ParticleArrays *a) const {
+namespace {
+
+// One field's address: taken and given back at once (the address stays valid until the swarm is resized).
+template <typename T>
+PetscErrorCode FieldAddress(DM swarm, const char *name, T **p) {
   PetscFunctionBeginUser;
-  PetscCall(DMSwarmGetLocalSize(swarm_, &a->n));
-  PetscCall(DMSwarmGetField(swarm_, field::position, nullptr, nullptr, (void **)&a->x));
-  PetscCall(DMSwarmGetField(swarm_, field::velocity, nullptr, nullptr, (void **)&a->v));
-  PetscCall(DMSwarmGetField(swarm_, field::force, nullptr, nullptr, (void **)&a->f));
-  PetscCall(DMSwarmGetField(swarm_, field::radius, nullptr, nullptr, (void **)&a->radius));
-  PetscCall(DMSwarmGetField(swarm_, field::mass, nullptr, nullptr, (void **)&a->mass));
-  PetscCall(DMSwarmGetField(swarm_, field::id, nullptr, nullptr, (void **)&a->id));
-  PetscCall(DMSwarmGetField(swarm_, field::reference, nullptr, nullptr, (void **)&a->reference));
-  PetscCall(DMSwarmGetField(swarm_, field::omega, nullptr, nullptr, (void **)&a->omega));
-  PetscCall(DMSwarmGetField(swarm_, field::torque, nullptr, nullptr, (void **)&a->torque));
-  PetscCall(DMSwarmGetField(swarm_, field::type, nullptr, nullptr, (void **)&a->type));
-  PetscCall(DMSwarmGetField(swarm_, field::clump, nullptr, nullptr, (void **)&a->clump));
-  PetscCall(DMSwarmGetField(swarm_, field::rigid, nullptr, nullptr, (void **)&a->rigid));
-  // The fluid's fields only with a coupling (Dem::SetFluidCoupled): each lookup is a scan of the
-  // registered names (PetscStrcmp), and a DEM-only step takes the arrays several times.
+  PetscCall(DMSwarmGetField(swarm, name, nullptr, nullptr, (void **)p));
+  T *q = *p;
+  PetscCall(DMSwarmRestoreField(swarm, name, nullptr, nullptr, (void **)&q));
+  PetscFunctionReturn(0);
+}
+
+}  // namespace
+
+PetscErrorCode ParticleSwarm::RefreshCache() const {
+  ParticleArrays &c = cache_;
+
+  PetscFunctionBeginUser;
+  PetscCall(DMSwarmGetLocalSize(swarm_, &c.n));
+  PetscCall(FieldAddress(swarm_, field::position, &c.x));
+  PetscCall(FieldAddress(swarm_, field::velocity, &c.v));
+  PetscCall(FieldAddress(swarm_, field::force, &c.f));
+  PetscCall(FieldAddress(swarm_, field::radius, &c.radius));
+  PetscCall(FieldAddress(swarm_, field::mass, &c.mass));
+  PetscCall(FieldAddress(swarm_, field::id, &c.id));
+  PetscCall(FieldAddress(swarm_, field::reference, &c.reference));
+  PetscCall(FieldAddress(swarm_, field::omega, &c.omega));
+  PetscCall(FieldAddress(swarm_, field::torque, &c.torque));
+  PetscCall(FieldAddress(swarm_, field::type, &c.type));
+  PetscCall(FieldAddress(swarm_, field::clump, &c.clump));
+  PetscCall(FieldAddress(swarm_, field::rigid, &c.rigid));
+  PetscCall(FieldAddress(swarm_, field::fluidDrag, &c.fluidDrag));
+  PetscCall(FieldAddress(swarm_, field::fluidVelocity, &c.fluidVelocity));
+  PetscCall(FieldAddress(swarm_, field::fluidForce, &c.fluidForce));
+  PetscCall(FieldAddress(swarm_, field::fluidImpulse, &c.fluidImpulse));
+  PetscCall(FieldAddress(swarm_, field::fluidAddedMass, &c.fluidAddedMass));
+  PetscCall(FieldAddress(swarm_, field::fluidExplicitImpulse, &c.fluidExplicitImpulse));
+  PetscCall(FieldAddress(swarm_, field::fluidCapillaryImpulse, &c.fluidCapillaryImpulse));
+  PetscCall(FieldAddress(swarm_, field::fluidSurfacePlane, &c.fluidSurfacePlane));
+  PetscCall(FieldAddress(swarm_, field::fluidRotationalDrag, &c.fluidRotationalDrag));
+  PetscCall(FieldAddress(swarm_, field::fluidRotation, &c.fluidRotation));
+  PetscCall(FieldAddress(swarm_, field::fluidViscosity, &c.fluidViscosity));
+  cacheN_     = c.n;
+  cacheValid_ = true;
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode ParticleSwarm::GetArrays(ParticleArrays *a) const {
+  PetscInt n;
+
+  PetscFunctionBeginUser;
+  PetscCall(DMSwarmGetLocalSize(swarm_, &n));
+  if (!cacheValid_ || n != cacheN_) PetscCall(RefreshCache());
+  *a = cache_;
+  // The fluid's fields only with a coupling (Dem::SetFluidCoupled).
   if (!fluidFields_) {
     a->fluidDrag = a->fluidVelocity = a->fluidForce = a->fluidImpulse = a->fluidAddedMass = a->fluidExplicitImpulse = nullptr;
     a->fluidCapillaryImpulse = a->fluidSurfacePlane = a->fluidRotationalDrag = a->fluidRotation = a->fluidViscosity = nullptr;
-    PetscFunctionReturn(0);
   }
-  PetscCall(DMSwarmGetField(swarm_, field::fluidDrag, nullptr, nullptr, (void **)&a->fluidDrag));
-  PetscCall(DMSwarmGetField(swarm_, field::fluidVelocity, nullptr, nullptr, (void **)&a->fluidVelocity));
-  PetscCall(DMSwarmGetField(swarm_, field::fluidForce, nullptr, nullptr, (void **)&a->fluidForce));
-  PetscCall(DMSwarmGetField(swarm_, field::fluidImpulse, nullptr, nullptr, (void **)&a->fluidImpulse));
-  PetscCall(DMSwarmGetField(swarm_, field::fluidAddedMass, nullptr, nullptr, (void **)&a->fluidAddedMass));
-  PetscCall(DMSwarmGetField(swarm_, field::fluidExplicitImpulse, nullptr, nullptr, (void **)&a->fluidExplicitImpulse));
-  PetscCall(DMSwarmGetField(swarm_, field::fluidCapillaryImpulse, nullptr, nullptr, (void **)&a->fluidCapillaryImpulse));
-  PetscCall(DMSwarmGetField(swarm_, field::fluidSurfacePlane, nullptr, nullptr, (void **)&a->fluidSurfacePlane));
-  PetscCall(DMSwarmGetField(swarm_, field::fluidRotationalDrag, nullptr, nullptr, (void **)&a->fluidRotationalDrag));
-  PetscCall(DMSwarmGetField(swarm_, field::fluidRotation, nullptr, nullptr, (void **)&a->fluidRotation));
-  PetscCall(DMSwarmGetField(swarm_, field::fluidViscosity, nullptr, nullptr, (void **)&a->fluidViscosity));
-
+  ++held_;
   PetscFunctionReturn(0);
 }
 
 PetscErrorCode ParticleSwarm::RestoreArrays(ParticleArrays *a) const {
   PetscFunctionBeginUser;
-
-  PetscCall(DMSwarmRestoreField(swarm_, field::rigid, nullptr, nullptr, (void **)&a->rigid));
-  if (fluidFields_) {
-    PetscCall(DMSwarmRestoreField(swarm_, field::fluidViscosity, nullptr, nullptr, (void **)&a->fluidViscosity));
-    PetscCall(DMSwarmRestoreField(swarm_, field::fluidRotation, nullptr, nullptr, (void **)&a->fluidRotation));
-    PetscCall(DMSwarmRestoreField(swarm_, field::fluidRotationalDrag, nullptr, nullptr, (void **)&a->fluidRotationalDrag));
-    PetscCall(DMSwarmRestoreField(swarm_, field::fluidSurfacePlane, nullptr, nullptr, (void **)&a->fluidSurfacePlane));
-    PetscCall(DMSwarmRestoreField(swarm_, field::fluidCapillaryImpulse, nullptr, nullptr, (void **)&a->fluidCapillaryImpulse));
-    PetscCall(DMSwarmRestoreField(swarm_, field::fluidExplicitImpulse, nullptr, nullptr, (void **)&a->fluidExplicitImpulse));
-    PetscCall(DMSwarmRestoreField(swarm_, field::fluidAddedMass, nullptr, nullptr, (void **)&a->fluidAddedMass));
-    PetscCall(DMSwarmRestoreField(swarm_, field::fluidImpulse, nullptr, nullptr, (void **)&a->fluidImpulse));
-    PetscCall(DMSwarmRestoreField(swarm_, field::fluidForce, nullptr, nullptr, (void **)&a->fluidForce));
-    PetscCall(DMSwarmRestoreField(swarm_, field::fluidVelocity, nullptr, nullptr, (void **)&a->fluidVelocity));
-    PetscCall(DMSwarmRestoreField(swarm_, field::fluidDrag, nullptr, nullptr, (void **)&a->fluidDrag));
-  }
-  PetscCall(DMSwarmRestoreField(swarm_, field::clump, nullptr, nullptr, (void **)&a->clump));
-  PetscCall(DMSwarmRestoreField(swarm_, field::type, nullptr, nullptr, (void **)&a->type));
-  PetscCall(DMSwarmRestoreField(swarm_, field::torque, nullptr, nullptr, (void **)&a->torque));
-  PetscCall(DMSwarmRestoreField(swarm_, field::omega, nullptr, nullptr, (void **)&a->omega));
-  PetscCall(DMSwarmRestoreField(swarm_, field::reference, nullptr, nullptr, (void **)&a->reference));
-  PetscCall(DMSwarmRestoreField(swarm_, field::id, nullptr, nullptr, (void **)&a->id));
-  PetscCall(DMSwarmRestoreField(swarm_, field::mass, nullptr, nullptr, (void **)&a->mass));
-  PetscCall(DMSwarmRestoreField(swarm_, field::radius, nullptr, nullptr, (void **)&a->radius));
-  PetscCall(DMSwarmRestoreField(swarm_, field::force, nullptr, nullptr, (void **)&a->f));
-  PetscCall(DMSwarmRestoreField(swarm_, field::velocity, nullptr, nullptr, (void **)&a->v));
-  PetscCall(DMSwarmRestoreField(swarm_, field::position, nullptr, nullptr, (void **)&a->x));
+  PetscCheck(held_ > 0, PETSC_COMM_SELF, PETSC_ERR_ORDER, "ParticleSwarm::RestoreArrays without GetArrays");
+  --held_;
   *a = ParticleArrays{};
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode ParticleSwarm::FieldsMoved() const {
+  PetscFunctionBeginUser;
+  PetscCheck(held_ == 0, PETSC_COMM_SELF, PETSC_ERR_ORDER, "the particle swarm was resized while %d set(s) of its arrays were in use", held_);
+  cacheValid_ = false;
   PetscFunctionReturn(0);
 }
 
@@ -127,7 +137,9 @@ PetscErrorCode ParticleSwarm::AddLocal(PetscInt n, PetscInt *first) {
   PetscFunctionBeginUser;
   PetscReal *rigid;
   PetscCall(DMSwarmGetLocalSize(swarm_, first));
+  PetscCall(FieldsMoved());  // no arrays in use while the swarm grows
   PetscCall(DMSwarmAddNPoints(swarm_, n));
+  PetscCall(FieldsMoved());
   // Not in a clump: identity orientation, zeros (defined bytes for checkpoints).
   PetscCall(DMSwarmGetField(swarm_, field::rigid, nullptr, nullptr, (void **)&rigid));
   for (PetscInt p = *first; p < *first + n; ++p)
@@ -185,6 +197,7 @@ PetscErrorCode ParticleSwarm::Migrate() {
   }
   PetscCall(RestoreArrays(&a));
   PetscCall(DMSwarmMigrate(swarm_, PETSC_TRUE));
+  PetscCall(FieldsMoved());
   PetscCall(DMSwarmGetSize(swarm_, &after));
   PetscCheck(after == before, grid_->Comm(), PETSC_ERR_PLIB,
              "migration lost %" PetscInt_FMT " of %" PetscInt_FMT " particles (a particle left the box or jumped past a neighbouring rank)",

@@ -69,9 +69,17 @@ public:
   DM       Dm() const { return swarm_; }
   PetscErrorCode GlobalCount(PetscInt *n) const;
 
+  // The arrays come from a cache of the fields' addresses: DMSwarmGetField finds a field by comparing its
+  // name with every registered one (twice), and the 23 lookups of one GetArrays took ~10 us, which a DEM
+  // step with few particles pays several times (70 % of a single settling sphere's run). The addresses
+  // change only when the swarm is resized, so the cache is refreshed when the local count differs and
+  // after FieldsMoved(), which whatever resizes the swarm must call (migration, insertion, deletion, load,
+  // sorting). Between GetArrays and RestoreArrays the swarm must not be resized (as DMSwarm's own access
+  // rule); FieldsMoved() checks it.
   PetscErrorCode GetArrays(ParticleArrays *a) const;  // the fluid_* arrays are null unless SetFluidFields(true)
   void           SetFluidFields(bool on) { fluidFields_ = on; }
   PetscErrorCode RestoreArrays(ParticleArrays *a) const;
+  PetscErrorCode FieldsMoved() const;  // after any DMSwarm call that may reallocate (resize) the fields
 
   // Appends n particles locally (fields left for the caller to fill); returns the first new index.
   PetscErrorCode AddLocal(PetscInt n, PetscInt *first);
@@ -86,7 +94,13 @@ public:
   PetscErrorCode Migrate();
 
 private:
+  PetscErrorCode RefreshCache() const;
+
   bool fluidFields_ = false;  // GetArrays takes the fluid_* fields too (a coupled scene)
+  mutable ParticleArrays cache_;         // every field's address (fluid ones included) for cacheN_ local particles
+  mutable bool           cacheValid_ = false;
+  mutable PetscInt       cacheN_     = -1;
+  mutable int            held_       = 0;  // GetArrays without RestoreArrays yet
   const Grid *grid_  = nullptr;
   DM          swarm_ = nullptr;
 };
