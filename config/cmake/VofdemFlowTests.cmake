@@ -35,6 +35,7 @@ vofdem_bad_input(flow_wall_normal     "option -flow_bc_xlo_velocity: a wall cann
 vofdem_bad_input(flow_inflow_outward  "option -flow_bc_xlo_velocity: an inflow must point into the box \\(x component -1\\.? m/s\\)" ${_flow} -flow_bc_xlo inflow -flow_bc_xlo_velocity -1,0,0 -flow_bc_xhi outflow)
 vofdem_bad_input(flow_periodic_face   "option -flow_bc_xlo: 'periodic' needs x in -grid_periodic" ${_flow} -flow_bc_xlo periodic)
 vofdem_bad_input(flow_face_of_periodic "option -flow_bc_xlo: 'wall' on a face of the periodic direction x" ${_flow} -grid_periodic x -flow_bc_xlo wall)
+vofdem_bad_input(flow_pfmg_one_cell_y "option -flow_pressure_pc: pfmg cannot take one cell across y" ${_flow} -grid_cells 8,1,8 -flow_pressure_pc pfmg)
 vofdem_bad_input(flow_pressure_bc     "option -flow_pressure_bc_xlo: with -physics flow the pressure boundaries follow -flow_bc_xlo \\(wall\\). do not set them" ${_flow} -flow_pressure_bc_xlo dirichlet)
 # -physics dem,flow: the coupling's input (issue 7)
 set(_coupled -physics dem,flow -grid_cells 8,8,8 -grid_upper 0.01,0.01,0.01 -dem_radius 2e-4 -dem_fill_count 1 -max_steps 1)

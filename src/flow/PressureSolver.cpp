@@ -124,6 +124,13 @@ PetscErrorCode PressureSolver::SetFromOptions() {
     }
   }
   PetscOptionsEnd();
+  // PETSc 3.18's hyprestruct matrix finds a stencil entry's direction from the column's offset in the
+  // ghosted local box: 1 (x), gnx (y), gnx gny (z). With one cell across y (gny = 1) a z neighbour has the
+  // offset of a y neighbour, and with one across x a y neighbour that of an x one; the entries land in
+  // the wrong slots and CG stops with an indefinite preconditioner (a 2-D x-z sessile drop: DIVERGED_INDEFINITE_PC).
+  if (pc_ == PressurePreconditioner::PFMG && (cells_[0] == 1 || cells_[1] == 1))
+    VofdemInputError(comm_, "option -flow_pressure_pc: pfmg cannot take one cell across %c (PETSc's hyprestruct matrix would mix up the stencil's directions); make z the one-cell direction or use boomeramg",
+                     cells_[0] == 1 ? 'x' : 'y');
   for (int d = 0; d < 3; ++d)
     if (bc_[2 * d] == PressureBoundary::Periodic && cells_[d] < 3)
       // With 2 cells both neighbours are the same cell: the stencil would need to add, not insert.
