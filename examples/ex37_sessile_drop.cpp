@@ -184,6 +184,8 @@ PetscErrorCode Run() {
     PetscCall(Default("-grid_upper", "2.5," + Str(h) + ",2"));
     PetscCall(Default("-flow_bc_yhi", "slip"));
   } else {  // a quarter of the drop: x = 0 and y = 0 are symmetry planes
+    // PFMG: the 2-D drop cannot have it (one cell across y, PressureSolver.cpp); here it is 1.4x faster than BoomerAMG
+    PetscCall(Default("-flow_pressure_pc", "pfmg"));
     PetscCall(Default("-grid_cells", std::to_string(2 * N) + "," + std::to_string(2 * N) + "," + std::to_string((int)(1.5 * N))));
     PetscCall(Default("-grid_upper", "2,2," + Str(1.5)));
   }
