@@ -172,10 +172,36 @@ PetscErrorCode DiffusionSmoother::Work(int loc, size_t count) {
   PetscFunctionReturn(0);
 }
 
+PetscErrorCode DiffusionSmoother::TentPlanes(int loc, PetscInt n, const PetscReal *x, PetscInt planes[2]) const {
+  const Grid     &grid = sg_->Base();
+  const PetscReal h = grid.Spacing()[2], z0 = grid.Lower()[2] + (loc == 2 ? 0 : 0.5 * h);  // plane k at z0 + k h
+  PetscReal       ext[2] = {-PETSC_MAX_REAL, -PETSC_MAX_REAL};                                 // -min z, max z
+
+  PetscFunctionBeginUser;
+  for (PetscInt p = 0; p < n; ++p) ext[0] = std::max(ext[0], -x[3 * p + 2]), ext[1] = std::max(ext[1], x[3 * p + 2]);
+  PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, ext, 2, MPIU_REAL, MPIU_MAX, grid.Comm()));
+  if (ext[1] < -ext[0]) {
+    planes[0] = 1, planes[1] = 0;
+    PetscFunctionReturn(0);
+  }
+  // The tent's two points along z are floor((z - z0)/h) and the next; two planes more each side for the
+  // mirror images at walls and round-off.
+  const PetscInt last = sg_->Points(loc, 2) - 1;
+  planes[0]           = std::max((PetscInt)0, (PetscInt)std::floor((-ext[0] - z0) / h) - 2);
+  planes[1]           = std::min(last, (PetscInt)std::floor((ext[1] - z0) / h) + 3);
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode DiffusionSmoother::Smooth(int loc, Vec v) {
   PetscFunctionBeginUser;
+  PetscCall(Smooth(loc, v, nullptr, nullptr));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode DiffusionSmoother::Smooth(int loc, Vec v, const PetscInt inPlanes[2], const PetscInt outPlanes[2]) {
+  PetscFunctionBeginUser;
   if (op_ == Operator::Gaussian) {
-    PetscCall(filter_[loc].Apply(v));
+    PetscCall(filter_[loc].Apply(v, inPlanes, outPlanes));
     PetscFunctionReturn(0);
   }
   for (PetscInt step = 0; step < steps_; ++step) {
@@ -229,8 +255,15 @@ PetscErrorCode DiffusionSmoother::Deposit(int loc, PetscInt n, const PetscReal *
   PetscCall(Work(loc, nf));
   for (PetscInt f = 0; f < nf; ++f) PetscCall(VecSet(work_[loc][f], 0));
   PetscCall(compact_.Deposit(loc, n, x, H, nf, value, stride, work_[loc].data(), walls));
+  // The deposits are zero beyond the particles' tent planes, their smoothed fields beyond those widened by the taps.
+  PetscInt from[2] = {0, -1}, to[2] = {0, -1};
+  if (op_ == Operator::Gaussian && filter_[loc].Restricts()) {
+    PetscCall(TentPlanes(loc, n, x, from));
+    to[0] = from[0] - filter_[loc].Radius(2), to[1] = from[1] + filter_[loc].Radius(2);
+  }
   for (PetscInt f = 0; f < nf; ++f) {
-    PetscCall(Smooth(loc, work_[loc][f]));
+    if (to[0] <= to[1]) PetscCall(Smooth(loc, work_[loc][f], from, to));
+    else PetscCall(Smooth(loc, work_[loc][f]));
     PetscCall(VecAXPY(out[f], 1, work_[loc][f]));
   }
   PetscFunctionReturn(0);
@@ -247,6 +280,17 @@ PetscErrorCode DiffusionSmoother::Average(int loc, PetscInt nf, const Vec field[
   PetscCall(Work(loc, 2 * nf));
   std::vector<Vec>  g(nf), c(nf, nullptr), source, smoothed;
   size_t            next = 0;
+  // Read only at the particles: the smoothed fields are needed on their tent planes only (the work vectors
+  // are this call's; beyond those planes they hold partly smoothed values nobody reads).
+  PetscInt all[2] = {0, sg_->Points(loc, 2) - 1}, at[2] = {0, -1};
+  if (op_ == Operator::Gaussian && filter_[loc].Restricts()) PetscCall(TentPlanes(loc, n, x, at));
+  const bool part = at[0] <= at[1];
+  auto       smoothAt = [&](Vec v) -> PetscErrorCode {
+    PetscFunctionBeginUser;
+    if (part) PetscCall(Smooth(loc, v, all, at));
+    else PetscCall(Smooth(loc, v));
+    PetscFunctionReturn(0);
+  };
   auto constant = [](Vec v, bool *is, PetscReal *value) -> PetscErrorCode {  // min == max: one reduction; the local scan stops at the first value that differs
     const PetscScalar *a;
     PetscInt           m;
@@ -276,7 +320,7 @@ PetscErrorCode DiffusionSmoother::Average(int loc, PetscInt nf, const Vec field[
       }
     *s = work_[loc][next++];
     PetscCall(VecCopy(v, *s));
-    PetscCall(Smooth(loc, *s));
+    PetscCall(smoothAt(*s));
     source.push_back(v), smoothed.push_back(*s);
     PetscFunctionReturn(0);
   };
@@ -303,7 +347,7 @@ PetscErrorCode DiffusionSmoother::Average(int loc, PetscInt nf, const Vec field[
     PetscCall(smooth(weight[f], &c[f]));
     g[f] = work_[loc][next++];
     PetscCall(VecPointwiseMult(g[f], field[f], weight[f]));
-    PetscCall(Smooth(loc, g[f]));
+    PetscCall(smoothAt(g[f]));
     PetscScalar       *ga;
     const PetscScalar *ca;
     PetscInt           m;

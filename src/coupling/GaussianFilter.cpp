@@ -187,12 +187,44 @@ PetscErrorCode GaussianFilter::Destroy() {
 // current values and writes the other buffer (v or copy_), so that no pass copies the vector; one that needs
 // ghosts reads a ghost update and writes in place. The result ends in v (one copy if the last pass wrote copy_).
 PetscErrorCode GaussianFilter::Apply(Vec v) {
+  PetscFunctionBeginUser;
+  PetscCall(Apply(v, nullptr, nullptr));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode GaussianFilter::Apply(Vec v, const PetscInt inPlanes[2], const PetscInt outPlanes[2]) {
   PetscInt s[3], n[3];
   Vec      cur = v;  // where the values are now
 
   PetscFunctionBeginUser;
+  if (inPlanes && inPlanes[0] > inPlanes[1]) PetscFunctionReturn(0);  // v is zero
   PetscCall(PetscLogEventBegin(evApply, 0, 0, 0, 0));
   PetscCall(DMDAGetCorners(dm_, &s[0], &s[1], &s[2], &n[0], &n[1], &n[2]));
+  // Restricted (z whole on every rank): the z pass computes the planes O = outPlanes (active ones) and reads the
+  // active planes within R_z of them (folding stays inside: the mirror images of planes beyond a wall end lie
+  // between the wall and O's far end + R_z); the x and y passes compute X = those planes where v may be
+  // non-zero; the planes the z pass reads beyond X are zeroed in copy_ (the y pass's output). The passes'
+  // copies of the points they do not take are made only where needed: v keeps those values itself (the x pass works in
+  // place, the z pass writes v back) but on the planes computed: the z pass sums whole x rows.
+  const bool restrict_ = inPlanes && outPlanes && Restricts();
+  PetscInt   O[2] = {s[2], s[2] + n[2]}, X[2] = {s[2], s[2] + n[2]};  // [begin, end)
+  if (restrict_) {
+    O[0] = std::max({outPlanes[0], lo_[2], s[2]}), O[1] = std::min({outPlanes[1], hi_[2], s[2] + n[2] - 1}) + 1;
+    const PetscInt need0 = std::max(lo_[2], O[0] - R_[2]), need1 = std::min(hi_[2], O[1] - 1 + R_[2]) + 1;
+    X[0] = std::max(need0, inPlanes[0]), X[1] = std::min(need1, inPlanes[1] + 1);
+    if (O[0] >= O[1]) {
+      PetscCall(PetscLogEventEnd(evApply, 0, 0, 0, 0));
+      PetscFunctionReturn(0);
+    }
+    if (X[1] < X[0]) X[1] = X[0];
+    // copy_'s planes in [need0, need1) outside X read as zero
+    PetscScalar ***c;
+    PetscCall(DMDAVecGetArray(dm_, copy_, &c));
+    for (PetscInt k = need0; k < need1; ++k)
+      if (k < X[0] || k >= X[1])
+        for (PetscInt j = s[1]; j < s[1] + n[1]; ++j) std::fill(&c[k][j][s[0]], &c[k][j][s[0]] + n[0], 0.0);
+    PetscCall(DMDAVecRestoreArray(dm_, copy_, &c));
+  }
   for (int e = 0; e < 3; ++e) {
     if (!R_[e]) continue;
     const PetscScalar ***in;
@@ -214,6 +246,10 @@ PetscErrorCode GaussianFilter::Apply(Vec v) {
     for (int d = 0; d < 3; ++d) {
       a[d] = periodic_[d] ? s[d] : std::max(s[d], lo_[d]);
       b[d] = periodic_[d] ? s[d] + n[d] : std::min(s[d] + n[d], hi_[d] + 1);
+    }
+    if (restrict_) {  // the planes this pass computes
+      const PetscInt *P = e == 2 ? O : X;
+      a[2] = std::max(a[2], P[0]), b[2] = std::max(a[2], std::min(b[2], P[1]));
     }
     const bool foldAll = !periodic_[e];
     // Every output row is a sum of 2R + 1 shifted source rows: along x the row itself, laid out once with its
@@ -282,7 +318,9 @@ PetscErrorCode GaussianFilter::Apply(Vec v) {
     }
     if (swap) {
       // The points the pass does not take (wall faces: whole planes, lines, the x ends of rows) keep their value.
-      for (PetscInt k = s[2]; k < s[2] + n[2]; ++k)
+      // Restricted: only on the planes computed (the z pass sums whole x rows, so the x ends must be right in
+      // copy_ on the planes it reads and put back in v on the planes it writes).
+      for (PetscInt k = restrict_ ? a[2] : s[2]; k < (restrict_ ? b[2] : s[2] + n[2]); ++k)
         for (PetscInt j = s[1]; j < s[1] + n[1]; ++j) {
           const PetscScalar *src = &in[k][j][0];
           PetscScalar       *dst = &out[k][j][0];

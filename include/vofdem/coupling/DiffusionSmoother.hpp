@@ -68,8 +68,14 @@ public:
 
   // v <- S v on location loc (global vector of the location), total kept. Collective.
   PetscErrorCode Smooth(int loc, Vec v);
+  // The same where v is zero outside the z planes inPlanes and only the planes outPlanes are wanted
+  // (GaussianFilter::Apply; the diffusion smooths all). Collective.
+  PetscErrorCode Smooth(int loc, Vec v, const PetscInt inPlanes[2], const PetscInt outPlanes[2]);
 
 private:
+  // The z planes (inclusive, the same on all ranks) that the tent weights of these particles touch on location
+  // loc, with a margin; first > last when there are no particles. Collective.
+  PetscErrorCode TentPlanes(int loc, PetscInt n, const PetscReal *x, PetscInt planes[2]) const;
   PetscErrorCode Assemble(int loc);
   PetscErrorCode Work(int loc, size_t count);
 

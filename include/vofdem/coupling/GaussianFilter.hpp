@@ -29,6 +29,16 @@ public:
   PetscErrorCode Destroy();
   // v <- G v (v: a global vector of the location). Collective.
   PetscErrorCode Apply(Vec v);
+  // The same where only part of it is needed, with the planes (z indices, inclusive) given alike on all
+  // ranks: v is zero outside inPlanes, and the result is wanted on outPlanes only. Where the
+  // layout allows it (z and y neither split nor periodic, all three directions filtered) the x and y passes
+  // run only on the planes the z pass reads and the z pass only on `out`: the points there are bitwise those
+  // of Apply(v); elsewhere v keeps what it had, partly filtered (zero where the whole result is zero, i.e.
+  // outPlanes covering inPlanes widened by the z taps). Otherwise the whole Apply. inPlanes empty (first >
+  // last): nothing to do.
+  PetscErrorCode Apply(Vec v, const PetscInt inPlanes[2], const PetscInt outPlanes[2]);
+  // Whether Apply(v, in, out) restricts the work for this layout.
+  bool           Restricts() const { return !needGhosts_[1] && !needGhosts_[2] && !periodic_[2] && R_[0] > 0 && R_[1] > 0 && R_[2] > 0; }
   PetscInt       Radius(int e) const { return R_[e]; }
 
   // Whether SetUp would accept this layout: every rank holds at least max_e R_e points along each
