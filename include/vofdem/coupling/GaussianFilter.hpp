@@ -32,7 +32,7 @@ public:
   // The same where only part of it is needed, with the planes (z indices, inclusive) given alike on all
   // ranks: v is zero outside inPlanes, and the result is wanted on outPlanes only. Where the
   // layout allows it (z and y neither split nor periodic, all three directions filtered) the x and y passes
-  // run only on the planes the z pass reads and the z pass only on `out`: the points there are bitwise those
+  // run only on the planes the z pass reads and the z pass only on outPlanes: the points there are bitwise those
   // of Apply(v); elsewhere v keeps what it had, partly filtered (zero where the whole result is zero, i.e.
   // outPlanes covering inPlanes widened by the z taps). Otherwise the whole Apply. inPlanes empty (first >
   // last): nothing to do.
