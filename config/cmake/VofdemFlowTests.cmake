@@ -98,3 +98,8 @@ foreach(ranks 1 2 amg)
 endforeach()
 # A solve that does not converge (two iterations allowed) ends every rank with one line, not a trace or a hang.
 vofdem_bad_input_pressure(pressure_not_converged "pressure solve did not converge: DIVERGED_ITS after 2 iterations" -flow_pressure_ksp_max_it 2)
+
+# A coupled run's first step when an inflow meets particles present at the start (Simulation::SetUp): the initial
+# velocity projected with the particles' eps, the first step chosen from the pores' speed (bubbling-bed scene, 1 and 2 ranks).
+add_test(NAME coupling/first_step_cfl COMMAND ${VOFDEM_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/test/coupling/test_first_step_cfl.py $<TARGET_FILE:vofdem_app>)
+set_tests_properties(coupling/first_step_cfl PROPERTIES LABELS "quick;coupling" PROCESSORS 2 TIMEOUT 300)
