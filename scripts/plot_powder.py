@@ -107,7 +107,10 @@ def plot(d):
         ax.plot(dist * 1e3, col(r, "z_m") * 1e3, ".", ms=1, alpha=0.4)
         xs = np.array([0, dist.max()])
         slope = -np.tan(np.radians(s["repose_angle"]))
-        ax.plot(xs * 1e3, (s["repose_intercept"] + slope * xs) * 1e3, "r-", label="%.2f deg" % s["repose_angle"])
+        label = "fitted %.2f deg" % s["repose_angle"]
+        if "repose_angle_height" in s:  # seed 001's measure, atan(2 H/D)
+            label += "; atan(2H/D) %.2f deg" % s["repose_angle_height"]
+        ax.plot(xs * 1e3, (s["repose_intercept"] + slope * xs) * 1e3, "r-", label=label)
         ax.set_xlabel("distance from the pile axis (mm)")
         ax.set_ylabel("height (mm)")
         ax.legend()

@@ -65,6 +65,8 @@ PetscErrorCode PowderAnalysis::SetFromOptions(MPI_Comm comm, const std::vector<s
     PetscCall(opt.Real("-reference_radius", "Reference mean radius of the segregation index (default: the mean of all particles analysed)", "m", &referenceRadius_, RealRange::Positive()));
     PetscCall(opt.RealVector("-repose_axis", "x,y of the pile's axis (default: the centroid of the heights above the substrate)", "m", reposeAxis_, 2, RealRange::Any(), &reposeAxisSet_));
     PetscCall(opt.RealVector("-repose_fit", "Fractions of the pile height between which the slope is fitted", "", reposeFit_, 2, RealRange::Closed(0, 1)));
+    PetscCall(opt.Real("-repose_base", "Diameter D of the pile's base for seed 001's angle atan(2 H/D), H the pile's height (default: the window's smaller horizontal extent)", "m",
+                       &reposeBase_, RealRange::Positive()));
     PetscCall(opt.Int("-bins", "Bins of the pore histograms", &bins_, 1, 100000));
     PetscCall(opt.Int("-clump_resolution", "Quadrature columns per largest member diameter for the overlaps of clump members cut by the window or a ring (64: ~4e-4 of the volume where two members overlap)",
                       &clumpResolution_, 4, 4096));
@@ -214,12 +216,15 @@ PetscErrorCode PowderAnalysis::Run(const Spheres &s, const Window &box, const st
       if (fit.points < 2) VofdemInputError(comm_, "analysis of %s: no pile surface between %g and %g of the pile height to fit an angle of repose", what.c_str(), reposeFit_[0], reposeFit_[1]);
       add("repose_angle", fit.angleDeg, "deg"), add("repose_axis_x", fit.axis[0], "m"), add("repose_axis_y", fit.axis[1], "m");
       add("repose_pile_height", fit.height, "m"), add("repose_points", (double)fit.points, "1"), add("repose_intercept", fit.intercept, "m");
+      // Seed 001's definition of its measured angle (fig. 6): atan(2 H/D), the pile's height over the cup's radius.
+      const double base = reposeBase_ > 0 ? reposeBase_ : std::min(w.hi[0] - w.lo[0], w.hi[1] - w.lo[1]);
+      add("repose_base", base, "m"), add("repose_angle_height", HeightReposeAngleDeg(fit.height, base), "deg");
       std::string  t      = "distance_m,z_m\n";
       const size_t stride = std::max<size_t>(1, fit.distance.size() / 5000);
       for (size_t i = 0; i < fit.distance.size(); i += stride) t += Num(fit.distance[i]) + "," + Num(fit.z[i]) + "\n";
       PetscCall(Write("repose.csv", t));
-      PetscCall(PetscPrintf(comm_, "  angle of repose %.3f deg (line fitted to %ld surface points between %g and %g of the pile height %g m)\n", fit.angleDeg, fit.points,
-                            reposeFit_[0], reposeFit_[1], fit.height));
+      PetscCall(PetscPrintf(comm_, "  angle of repose %.3f deg (line fitted to %ld surface points between %g and %g of the pile height %g m); atan(2 H/D) %.3f deg (seed 001's, D = %g m)\n",
+                            fit.angleDeg, fit.points, reposeFit_[0], reposeFit_[1], fit.height, HeightReposeAngleDeg(fit.height, base), base));
     }
   }
   if (Wants("segregation")) {

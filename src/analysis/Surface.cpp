@@ -137,4 +137,6 @@ ReposeFit FitRepose(const Surface &surface, double substrate, const double *axis
   return fit;
 }
 
+double HeightReposeAngleDeg(double height, double base) { return base > 0 ? std::atan(2 * height / base) * 180 / kPi : 0; }
+
 }  // namespace vofdem::analysis

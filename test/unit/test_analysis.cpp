@@ -194,7 +194,13 @@ TEST(AnalysisMetrics, ConePileAngle) {
     EXPECT_NEAR(fit.axis[0], 0, 2 * r);
     EXPECT_NEAR(fit.axis[1], 0, 2 * r);
     EXPECT_GT(fit.points, 1000);
+    // Seed 001's measure from the height and the base's diameter 2B: the same angle for a whole cone (H: the
+    // top sphere's top, within a lattice spacing of the cone's apex).
+    EXPECT_NEAR(fit.height, H, a);
+    EXPECT_NEAR(HeightReposeAngleDeg(fit.height, 2 * B), alpha, 0.5) << "alpha " << alpha;
   }
+  EXPECT_NEAR(HeightReposeAngleDeg(1.0, 2.0), 45.0, 1e-12);
+  EXPECT_EQ(HeightReposeAngleDeg(1.0, 0.0), 0.0);
 }
 
 TEST(AnalysisPores, DelaunayTetrahedra) {

@@ -51,6 +51,7 @@ private:
   PetscBool                substrateSet_ = PETSC_FALSE;
   PetscInt                 rings_ = 9, lineRays_ = 500, bins_ = 30, cells_[3] = {10, 1, 1}, clumpResolution_ = analysis::kClumpResolution;
   PetscReal                reposeAxis_[2] = {0, 0}, reposeFit_[2] = {0.2, 0.8};
+  PetscReal                reposeBase_    = 0;  // -analysis_repose_base; 0: the window's smaller horizontal extent
   PetscBool                reposeAxisSet_ = PETSC_FALSE, surfaceGrid_ = PETSC_TRUE;
 };
 

@@ -117,6 +117,9 @@ struct ReposeFit {
 // substrate when axis is null), least squares over the points between fitLo and fitHi of the pile's
 // height above the substrate. angleDeg = atan(-slope).
 ReposeFit FitRepose(const Surface &surface, double substrate, const double *axis, double fitLo, double fitHi);
+// Seed 001's funnel-test angle (its fig. 6): alpha = atan(2 H/D) of the pile's height H above the cup's top and the
+// diameter D of its base (the cup), in degrees; the measured 32.81 deg of D7 is this angle, not a fitted slope.
+double HeightReposeAngleDeg(double height, double base);
 
 struct Histogram {
   std::vector<double> lo, hi;
