@@ -75,6 +75,10 @@ PetscErrorCode Dem::SetFromOptions(MPI_Comm comm) {
       PetscCall(opt.Real("-vdw_min_gap", "Gap z0 below which the van der Waals force is held constant (P7)", "m", &vdw_.minGap, RealRange::Positive()));
       PetscCall(opt.Real("-vdw_range", "Gap beyond which van der Waals attraction is dropped", "m", &vdw_.range, RealRange::Positive()));
       if (vdw_.hamaker > 0 && (jkr_ || sjkr_)) VofdemInputError(comm, "options -dem_hamaker and -dem_cohesion %s: choose one adhesion model", jkr_ ? "jkr" : "sjkr");
+      // Seed 002 writes its eq. 8 for pairs of spheres ("between rigid spheres") and does not say whether the walls
+      // (rigid shells) attract: both readings are offered, walls attracting by default (R* = R, as a sphere of
+      // infinite radius).
+      PetscCall(opt.Bool("-vdw_walls", "Van der Waals attraction (P7) between particles and walls as well as between particles", &vdwWalls_));
       PetscCall(opt.Real("-lubrication_viscosity", "Viscosity of the liquid between particles for lubrication (P8); 0: none", "Pa s", &lubrication_.viscosity,
                          RealRange::NonNegative()));
       lubrication_.minGap = 0.01 * radius_;
@@ -474,8 +478,8 @@ PetscErrorCode Dem::View(PetscViewer viewer) const {
     PetscCall(PetscViewerASCIIPrintf(viewer, "dem: lubrication (P8): viscosity %g Pa s across gaps from %g m (held below) to %g m\n", (double)lubrication_.viscosity,
                                      (double)lubrication_.minGap, (double)lubrication_.maxGap));
   if (vdw_.hamaker > 0)
-    PetscCall(PetscViewerASCIIPrintf(viewer, "dem: van der Waals (P7): Hamaker constant %g J, held below a gap of %g m, dropped beyond %g m\n", (double)vdw_.hamaker,
-                                     (double)vdw_.minGap, (double)vdw_.range));
+    PetscCall(PetscViewerASCIIPrintf(viewer, "dem: van der Waals (P7): Hamaker constant %g J, held below a gap of %g m, dropped beyond %g m; %s\n", (double)vdw_.hamaker,
+                                     (double)vdw_.minGap, (double)vdw_.range, vdwWalls_ ? "walls attract too" : "between particles only (-dem_vdw_walls 0)"));
   const PetscReal g = std::sqrt(gravity_[0] * gravity_[0] + gravity_[1] * gravity_[1] + gravity_[2] * gravity_[2]);
   if ((jkr_ || vdw_.hamaker > 0) && g > 0 && rMax_ > 0) {
     // Bond number K = pull-off force of two equal spheres / weight of one (P7): 1.5 pi w R* for JKR,

@@ -240,7 +240,7 @@ PetscErrorCode Dem::ComputeForcesWith(PetscReal dt) {
     if constexpr (NEAR) {  // across the gap -delta: van der Waals attraction (P7) and lubrication (P8), R* = R
       const PetscReal sgn = face % 2 ? -1 : 1;  // the inward normal is sgn e_d
       const PetscReal mu = fluidLubrication_ ? (lubricationUniform_ > 0 ? lubricationUniform_ : a.fluidViscosity[p]) : 1;  // -coupling_lubrication
-      const PetscReal fv = hertz::VdwAttraction(vdw_, -delta, r) + mu * hertz::LubricationCoefficient(lubrication_, -delta, r) * sgn * v[d];
+      const PetscReal fv = hertz::VdwAttraction(vdwWalls_ ? vdw_ : noVdw_, -delta, r) + mu * hertz::LubricationCoefficient(lubrication_, -delta, r) * sgn * v[d];
       a.f[3 * p + d] -= sgn * fv;
       stats_.wallForce[face][d] += sgn * fv;
     }
@@ -268,7 +268,7 @@ PetscErrorCode Dem::ComputeForcesWith(PetscReal dt) {
     else if (!JKR) stats_.elastic += hertz::ElasticEnergy(Sn, delta);
     stats_.maxOverlap = std::max(stats_.maxOverlap, delta / (2 * r));
   }
-  wallSet_.Evaluate<RM, COH, NEAR, LIN, MULTI>(a, {&wall_, linearKn_, &rollingParams_, &vdw_, &table_, sjkrDensity_, &lubrication_, adhesionRange_, fluidLubrication_, lubricationUniform_}, dt,
+  wallSet_.Evaluate<RM, COH, NEAR, LIN, MULTI>(a, {&wall_, linearKn_, &rollingParams_, vdwWalls_ ? &vdw_ : &noVdw_, &table_, sjkrDensity_, &lubrication_, adhesionRange_, fluidLubrication_, lubricationUniform_}, dt,
                                                &stats_.wallContacts, &stats_.elastic, &stats_.maxOverlap);
   const PetscInt n = a.n, ng = halo_.Count();
   hot_.resize(n + ng);

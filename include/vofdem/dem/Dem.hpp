@@ -192,6 +192,8 @@ private:
   PetscReal            surfaceEnergy_ = 0, wallSurfaceEnergy_ = -1;  // J/m^2, one surface
   PetscReal            adhesionRange_ = 0;                    // m, JKR break distance or vdW range: widens the cut-offs
   hertz::VanDerWaals   vdw_{};                                // -dem_hamaker > 0 switches it on (P7)
+  PetscBool            vdwWalls_ = PETSC_TRUE;                // -dem_vdw_walls: walls attract too
+  hertz::VanDerWaals   noVdw_{0, 1, 0};                       // what the walls get with -dem_vdw_walls 0 (A = 0; z0 > 0: no 0/0 in contact)
   PetscBool            sjkr_ = PETSC_FALSE;                   // -dem_cohesion sjkr (P6, LIGGGHTS' definition)
   PetscReal            sjkrDensity_ = 0;                      // J/m^3
   PetscReal            surfaceEnergyModulus_ = 0;             // Pa; > 0: scale surface energies (P9)
