@@ -11,6 +11,7 @@ vofdem_bad_input(analysis_window_empty "option -analysis_upper: the analysis win
 vofdem_bad_input(analysis_outside_box "options -analysis_lower/-analysis_upper: the window \\[0.5, 0.6\\] m in z lies outside the box" ${_an}
                  -analysis_lower 0,0,0.5 -analysis_upper 0.01,0.01,0.6)
 vofdem_bad_input(analysis_one_corner "option -analysis_lower: give both -analysis_lower and -analysis_upper" ${_an} -analysis_lower 0,0,0)
+vofdem_bad_input(analysis_repose_base_negative "option -analysis_repose_base: -1. is out of range, must be in \\(0, inf\\]" ${_an} -analysis_repose_base -1)
 vofdem_bad_input(analysis_unknown_metric "option -analysis_metrics: unknown name 'porosity'" ${_dem} -analysis_metrics porosity)
 vofdem_bad_input(analysis_without_dir "option -analysis_metrics: give -analysis_dir or -output_dir" ${_dem} -analysis_metrics packing)
 vofdem_bad_input(analysis_without_particles "option -analysis_metrics: the analysis needs particles" -physics flow -grid_cells 8,8,8
