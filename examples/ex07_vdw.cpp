@@ -45,7 +45,8 @@ static PetscErrorCode ForceAtGap(Partner partner, PetscReal gap, PetscReal *forc
     *realised = x[2] - base - R;
   }
   PetscCall(sim.Destroy());
-  if (partner == Partner::Plane) PetscCall(PetscOptionsClearValue(nullptr, "-dem_walls"));
+  if (partner == Partner::Plane)  // the plane's options out again: the next runs have no such wall
+    for (const char *name : {"-dem_walls", "-dem_wall_plane_type", "-dem_wall_plane_point", "-dem_wall_plane_normal"}) PetscCall(PetscOptionsClearValue(nullptr, name));
   PetscFunctionReturn(0);
 }
 
