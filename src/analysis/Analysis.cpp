@@ -60,6 +60,8 @@ PetscErrorCode PowderAnalysis::SetFromOptions(MPI_Comm comm, const std::vector<s
     PetscCall(opt.Real("-ray_spacing", "Spacing of the ray grid cast down onto the layer (seed 001: 2 um)", "m", &spacing_, RealRange::Positive()));
     PetscCall(opt.Int("-line_rays", "Rays along x on the window's centre line, for Ra (seed 002: 500)", &lineRays_, 2, 100000000));
     PetscCall(opt.Real("-substrate", "Height a ray reads when it meets no sphere (default: the window's lower z)", "m", &substrate_, RealRange::Any(), &substrateSet_));
+    PetscCall(opt.Bool("-allow_empty", "A window holding no particle centre at the end is a result (particles_in_window 0 and the packing density in summary.csv, no other metric), not an error: for sweeps whose fast blades may leave the layer bare",
+                       &allowEmpty_));
     PetscCall(opt.Bool("-surface_grid", "Write every ray height (surface_grid.csv) as well as the centre line", &surfaceGrid_));
     PetscCall(opt.IntVector("-segregation_cells", "Cells of the window in x,y,z for the segregation index (seed 001: 10,1,1)", cells_, 3, 1, 100000));
     PetscCall(opt.Real("-reference_radius", "Reference mean radius of the segregation index (default: the mean of all particles analysed)", "m", &referenceRadius_, RealRange::Positive()));
@@ -127,14 +129,23 @@ PetscErrorCode PowderAnalysis::Run(const Spheres &s, const Window &box, const st
     for (int d = 0; d < 3; ++d) w.lo[d] = lower_[d], w.hi[d] = upper_[d];
   if (w.Empty()) VofdemInputError(comm_, "analysis: the window [%g,%g]x[%g,%g]x[%g,%g] m is empty", w.lo[0], w.hi[0], w.lo[1], w.hi[1], w.lo[2], w.hi[2]);
   const std::vector<std::size_t> in = CentresIn(s, w);
-  if (in.empty())
-    VofdemInputError(comm_, "analysis of %s: no particle centre in the window [%g,%g]x[%g,%g]x[%g,%g] m (%ld particles in all); move it with -analysis_lower/-analysis_upper",
+  if (in.empty() && !allowEmpty_)
+    VofdemInputError(comm_, "analysis of %s: no particle centre in the window [%g,%g]x[%g,%g]x[%g,%g] m (%ld particles in all); move it with -analysis_lower/-analysis_upper (or -analysis_allow_empty)",
                      what.c_str(), w.lo[0], w.hi[0], w.lo[1], w.hi[1], w.lo[2], w.hi[2], (long)s.Size());
   PetscCall(PetscPrintf(comm_, "analysis of %s: %ld of %ld particles in the window [%g,%g]x[%g,%g]x[%g,%g] m; files in %s\n", what.c_str(), (long)in.size(), (long)s.Size(), w.lo[0],
                         w.hi[0], w.lo[1], w.hi[1], w.lo[2], w.hi[2], dir_.c_str()));
   add("particles_total", (double)s.Size(), "1");
   add("particles_in_window", (double)in.size(), "1");
   for (int d = 0; d < 3; ++d) add(std::string("window_lower_") + "xyz"[d], w.lo[d], "m"), add(std::string("window_upper_") + "xyz"[d], w.hi[d], "m");
+  if (in.empty()) {
+    // -analysis_allow_empty: a spreading sweep's fast blade can leave the window bare. That layer's packing
+    // is the solid volume of the spheres reaching into it (often 0); the metrics of particles in it do not exist.
+    const double phi = PackingDensity(s, w, (int)clumpResolution_);
+    add("packing_density", phi, "1");
+    PetscCall(PetscPrintf(comm_, "  an empty layer (-analysis_allow_empty): packing density %.6f, no other metric\n", phi));
+    PetscCall(WriteSummary(summary));
+    PetscFunctionReturn(0);
+  }
   add("mean_radius_in_window", [&] { double m = 0; for (std::size_t i : in) m += s.r[i]; return m / in.size(); }(), "m");
 
   if (Wants("packing")) {
@@ -243,7 +254,14 @@ PetscErrorCode PowderAnalysis::Run(const Spheres &s, const Window &box, const st
     add("segregation_reference_radius", ref, "m"), add("segregation_index_min", lo, "1"), add("segregation_index_max", hi, "1");
     PetscCall(PetscPrintf(comm_, "  segregation index per cell (%d x %d x %d, reference radius %g m): %.4f to %.4f\n", cells[0], cells[1], cells[2], ref, lo, hi));
   }
+  PetscCall(WriteSummary(summary));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode PowderAnalysis::WriteSummary(const std::vector<std::pair<std::string, std::string>> &summary) const {
   std::string t = "metric,value,unit\n";
+
+  PetscFunctionBeginUser;
   for (const auto &[name, value] : summary) t += name + "," + value + "\n";
   PetscCall(Write("summary.csv", t));
   PetscFunctionReturn(0);

@@ -6,7 +6,8 @@ and again from its particles_000000.h5 by vofdem-analyze; checks
     the window, periodic images counted), every particle with coordination 6, segregation index 1 in
     every cell, cutting-ring packing of the known value;
   - 1 and 2 ranks, and the run and vofdem-analyze, give the same summary.csv; a window with no particle
-    centre is refused in one line;
+    centre is refused in one line, and with -analysis_allow_empty recorded with the packing of the spheres
+    reaching into it;
   - scripts/plot_powder.py makes its PNG files.
   test_powder_analysis.py VOFDEM VOFDEM_ANALYZE"""
 import csv
@@ -86,6 +87,16 @@ def main():
             errors = [x for x in (p.stdout + p.stderr).splitlines() if x.startswith("vofdem: error:")]
             check(p.returncode != 0 and not p.stdout.strip() and len(errors) == 1 and errors[0].startswith(msg),
                   "vofdem-analyze refuses a window without particles in one line: %s" % " | ".join(errors))
+            # ... unless told that an empty layer is a result (a sweep's bare layer): its packing is what the spheres
+            # below reach into it, here the slab 0.2 R to 0.8 R above their centres: pi (0.6 - 0.504/3) R^3 per
+            # 2 R x 2 R x 0.6 R of window, 0.18 pi.
+            p = subprocess.run(["mpiexec", "--oversubscribe", "-n", "2", analyze, "-analysis_input", h5, "-analysis_dir", out + "-empty", "-analysis_allow_empty"] + BOX + gap,
+                               env=ENV, capture_output=True, text=True, timeout=300)
+            print(p.stdout, p.stderr)
+            s = summary(out + "-empty") if p.returncode == 0 else {}
+            check(s.get("particles_in_window") == 0 and abs(s.get("packing_density", -1) - 0.18 * math.pi) < 1e-10 and "mean_coordination" not in s,
+                  "with -analysis_allow_empty the empty window is recorded: exit %d, particles_in_window %s, packing density %s (0.18 pi = %.12f), no coordination"
+                  % (p.returncode, s.get("particles_in_window"), s.get("packing_density"), 0.18 * math.pi))
             p = subprocess.run(["/usr/bin/python3", os.path.join(ROOT, "scripts", "plot_powder.py"), out], capture_output=True, text=True, timeout=300)
             print(p.stdout, p.stderr)
             pngs = sorted(f for f in os.listdir(out) if f.endswith(".png"))

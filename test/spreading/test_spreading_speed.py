@@ -71,7 +71,7 @@ def main():
               "V = %g m/s: layer thickness respected: highest particle top of the layer in the window %.2f um (delta %.0f um), blade's back face at %.2f mm past the window's end %.2f mm"
               % (V, top * 1e6, DELTA * 1e6, edge * 1e3, WINDOW[1] * 1e3))
         print("V = %g m/s: packing density %.4f with %d particle centres in the window, mean coordination %.3f"
-              % (V, packing[V], int(summary["particles_in_window"]), summary["mean_coordination"]))
+              % (V, packing[V], int(summary["particles_in_window"]), summary.get("mean_coordination", 0.0)))
     check(packing[0.05] > 0.1, "the slow layer is not empty: packing %.4f > 0.1" % packing[0.05])
     check(packing[0.2] < packing[0.05], "packing falls as the speed rises: %.4f at 0.05 m/s -> %.4f at 0.2 m/s" % (packing[0.05], packing[0.2]))
     if failures:

@@ -10,6 +10,7 @@
 #include <petscsys.h>
 
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace vofdem {
@@ -41,6 +42,8 @@ public:
 private:
   bool Wants(const char *metric) const;
   PetscErrorCode Write(const std::string &name, const std::string &text) const;
+  // summary.csv: one row per metric, value and unit already formatted.
+  PetscErrorCode WriteSummary(const std::vector<std::pair<std::string, std::string>> &summary) const;
 
   MPI_Comm                 comm_ = MPI_COMM_NULL;
   std::vector<std::string> metrics_;
@@ -52,7 +55,7 @@ private:
   PetscInt                 rings_ = 9, lineRays_ = 500, bins_ = 30, cells_[3] = {10, 1, 1}, clumpResolution_ = analysis::kClumpResolution;
   PetscReal                reposeAxis_[2] = {0, 0}, reposeFit_[2] = {0.2, 0.8};
   PetscReal                reposeBase_    = 0;  // -analysis_repose_base; 0: the window's smaller horizontal extent
-  PetscBool                reposeAxisSet_ = PETSC_FALSE, surfaceGrid_ = PETSC_TRUE;
+  PetscBool                reposeAxisSet_ = PETSC_FALSE, surfaceGrid_ = PETSC_TRUE, allowEmpty_ = PETSC_FALSE;
 };
 
 }  // namespace vofdem
