@@ -60,7 +60,7 @@ PetscErrorCode PowderAnalysis::SetFromOptions(MPI_Comm comm, const std::vector<s
     PetscCall(opt.Real("-ray_spacing", "Spacing of the ray grid cast down onto the layer (seed 001: 2 um)", "m", &spacing_, RealRange::Positive()));
     PetscCall(opt.Int("-line_rays", "Rays along x on the window's centre line, for Ra (seed 002: 500)", &lineRays_, 2, 100000000));
     PetscCall(opt.Real("-substrate", "Height a ray reads when it meets no sphere (default: the window's lower z)", "m", &substrate_, RealRange::Any(), &substrateSet_));
-    PetscCall(opt.Bool("-allow_empty", "A window holding no particle centre at the end is a result (particles_in_window 0 and the packing density in summary.csv, no other metric), not an error: for sweeps whose fast blades may leave the layer bare",
+    PetscCall(opt.Bool("-allow_empty", "A window holding no particle centre at the end is a result (particles_in_window 0 and, if asked for, the packing density in summary.csv; no other metric), not an error: for sweeps whose fast blades may leave the layer bare",
                        &allowEmpty_));
     PetscCall(opt.Bool("-surface_grid", "Write every ray height (surface_grid.csv) as well as the centre line", &surfaceGrid_));
     PetscCall(opt.IntVector("-segregation_cells", "Cells of the window in x,y,z for the segregation index (seed 001: 10,1,1)", cells_, 3, 1, 100000));
@@ -140,9 +140,13 @@ PetscErrorCode PowderAnalysis::Run(const Spheres &s, const Window &box, const st
   if (in.empty()) {
     // -analysis_allow_empty: a spreading sweep's fast blade can leave the window bare. That layer's packing
     // is the solid volume of the spheres reaching into it (often 0); the metrics of particles in it do not exist.
-    const double phi = PackingDensity(s, w, (int)clumpResolution_);
-    add("packing_density", phi, "1");
-    PetscCall(PetscPrintf(comm_, "  an empty layer (-analysis_allow_empty): packing density %.6f, no other metric\n", phi));
+    if (Wants("packing")) {
+      const double phi = PackingDensity(s, w, (int)clumpResolution_);
+      add("packing_density", phi, "1");
+      PetscCall(PetscPrintf(comm_, "  an empty layer (-analysis_allow_empty): packing density %.6f, no other metric\n", phi));
+    } else {
+      PetscCall(PetscPrintf(comm_, "  an empty layer (-analysis_allow_empty): no metric\n"));
+    }
     PetscCall(WriteSummary(summary));
     PetscFunctionReturn(0);
   }
