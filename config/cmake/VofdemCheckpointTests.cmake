@@ -46,3 +46,5 @@ vofdem_checkpoint_test(bitwise_demfunnel_2 2 bitwise demfunnel 2)
 # ... and on another rank count: the candidates' springs carried by particle id (DemSaveLoad.cpp).
 vofdem_checkpoint_test(ranks_demfunnel_2to1 2 ranks demfunnel 2 1)
 vofdem_checkpoint_test(ranks_demfunnel_1to2 2 ranks demfunnel 1 2)
+# The fluid coupling's swarm fields only in coupled scenes; an older DEM-only checkpoint (with them) still restarts bitwise.
+vofdem_checkpoint_test(fluid_fields_2 2 fluidfields)

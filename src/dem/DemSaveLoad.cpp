@@ -25,12 +25,19 @@ namespace vofdem {
 namespace {
 
 // Every swarm field, saved in memory order. A new swarm field is one more name here.
-const char *const kSwarmFields[] = {field::position, field::velocity, field::force,  field::radius,   field::mass,
+constexpr const char *const kSwarmFields[] = {field::position, field::velocity, field::force,  field::radius,   field::mass,
                                     field::id,       field::reference, field::omega, field::torque, field::type, field::clump, field::rigid,
                                     field::fluidDrag, field::fluidVelocity, field::fluidForce, field::fluidImpulse, field::fluidAddedMass, field::fluidExplicitImpulse, field::fluidCapillaryImpulse, field::fluidSurfacePlane,
                                     field::fluidRotationalDrag, field::fluidRotation, field::fluidViscosity,
                                     DMSwarmField_pid, DMSwarmField_rank, DMSwarmPICField_cellid};
 constexpr int kNumSwarmFields = sizeof(kSwarmFields) / sizeof(kSwarmFields[0]);
+// The fluid_* fields (kSwarmFields[kFirstFluid ...]) exist only in a coupled scene (ParticleSwarm::SetFluidFields); a
+// DEM-only run saves them empty, keeping the archive's order, and their block sizes are needed to read an older file
+// that holds them.
+constexpr int      kFirstFluid = 12, kNumFluid = 11;
+constexpr PetscInt kFluidBs[kNumFluid] = {1, 3, 3, 3, 1, 3, 3, 4, 1, 3, 1};
+static_assert(kSwarmFields[kFirstFluid] == field::fluidDrag && kSwarmFields[kFirstFluid + kNumFluid - 1] == field::fluidViscosity, "the fluid_* fields' place");
+bool IsFluidField(int f) { return f >= kFirstFluid && f < kFirstFluid + kNumFluid; }
 constexpr int kStatsWidth     = 4 + 18;  // pair and wall contacts, max overlap, elastic energy, wall forces
 
 // Copies swarm field `name` of local particles into `out` (toSwarm false) or back (true), as doubles.
@@ -121,6 +128,7 @@ PetscErrorCode Dem::SavedBytes(PetscInt64 *bytes) const {
 
   PetscFunctionBeginUser;
   for (int f = 0; f < kNumSwarmFields; ++f) {
+    if (IsFluidField(f) && !swarm_.HasFluidFields()) continue;
     PetscCall(DMSwarmGetField(swarm_.Dm(), kSwarmFields[f], &bs, &type, &data));
     PetscCall(DMSwarmRestoreField(swarm_.Dm(), kSwarmFields[f], &bs, &type, &data));
     perParticle += bs;
@@ -145,7 +153,10 @@ PetscErrorCode Dem::Save(PetscViewer viewer) {
   PetscCheck(hdf5, comm_, PETSC_ERR_SUP, "Dem::Save needs an HDF5 viewer");
   st.fields.resize(kNumSwarmFields);
   st.fieldBs.resize(kNumSwarmFields);
-  for (int f = 0; f < kNumSwarmFields; ++f) PetscCall(CopyField(swarm_.Dm(), kSwarmFields[f], &st.fields[f], &st.fieldBs[f], false));
+  for (int f = 0; f < kNumSwarmFields; ++f) {
+    if (IsFluidField(f) && !swarm_.HasFluidFields()) st.fieldBs[f] = kFluidBs[f - kFirstFluid];  // saved empty
+    else PetscCall(CopyField(swarm_.Dm(), kSwarmFields[f], &st.fields[f], &st.fieldBs[f], false));
+  }
   {  // ids of the pairs (lower first) and of the wall candidates: the keys of a rank-count change
     ParticleArrays a;
     PetscCall(swarm_.GetArrays(&a));
@@ -239,6 +250,10 @@ PetscErrorCode Dem::Load(PetscViewer viewer) {
   for (int f = 0; f < kNumSwarmFields; ++f) {  // block sizes from the swarm itself
     PetscDataType type;
     void         *data;
+    if (IsFluidField(f) && !swarm_.HasFluidFields()) {
+      st.fieldBs[f] = kFluidBs[f - kFirstFluid];
+      continue;
+    }
     PetscCall(DMSwarmGetField(dm, kSwarmFields[f], &st.fieldBs[f], &type, &data));
     PetscCall(DMSwarmRestoreField(dm, kSwarmFields[f], &st.fieldBs[f], &type, &data));
   }
@@ -288,6 +303,13 @@ PetscErrorCode Dem::Load(PetscViewer viewer) {
   PetscCall(DMSwarmSetLocalSizes(dm, (PetscInt)keep.size(), 64));
   PetscCall(swarm_.FieldsMoved());
   for (int f = 0; f < kNumSwarmFields; ++f) {
+    if (IsFluidField(f) && !swarm_.HasFluidFields()) {
+      // A DEM-only run's file written before these fields became optional holds them, all zero; a coupled
+      // run's would not restart as DEM-only (Checkpoint.cpp compares the physics), so a value here is corruption.
+      PetscCheck(std::all_of(st.fields[f].begin(), st.fields[f].end(), [](PetscReal v) { return v == 0; }), PETSC_COMM_SELF, PETSC_ERR_FILE_UNEXPECTED,
+                 "checkpoint: the particles' field %s holds fluid coupling state, but this run has no coupling", kSwarmFields[f]);
+      continue;
+    }
     const PetscInt bs = st.fieldBs[f];
     for (size_t j = 0; j < keep.size(); ++j)  // in place: j <= keep[j]
       std::copy_n(&st.fields[f][bs * keep[j]], bs, &st.fields[f][bs * j]);

@@ -25,18 +25,21 @@ PetscErrorCode ParticleSwarm::Create(const Grid &grid) {
   PetscCall(DMSwarmRegisterPetscDatatypeField(swarm_, field::type, 1, PETSC_INT));
   PetscCall(DMSwarmRegisterPetscDatatypeField(swarm_, field::clump, 1, PETSC_INT64));
   PetscCall(DMSwarmRegisterPetscDatatypeField(swarm_, field::rigid, kRigidWidth, PETSC_REAL));
-  PetscCall(DMSwarmRegisterPetscDatatypeField(swarm_, field::fluidDrag, 1, PETSC_REAL));
-  PetscCall(DMSwarmRegisterPetscDatatypeField(swarm_, field::fluidVelocity, 3, PETSC_REAL));
-  PetscCall(DMSwarmRegisterPetscDatatypeField(swarm_, field::fluidForce, 3, PETSC_REAL));
-  PetscCall(DMSwarmRegisterPetscDatatypeField(swarm_, field::fluidImpulse, 3, PETSC_REAL));
-  PetscCall(DMSwarmRegisterPetscDatatypeField(swarm_, field::fluidAddedMass, 1, PETSC_REAL));
-  PetscCall(DMSwarmRegisterPetscDatatypeField(swarm_, field::fluidExplicitImpulse, 3, PETSC_REAL));
-  PetscCall(DMSwarmRegisterPetscDatatypeField(swarm_, field::fluidCapillaryImpulse, 3, PETSC_REAL));
-  PetscCall(DMSwarmRegisterPetscDatatypeField(swarm_, field::fluidSurfacePlane, 4, PETSC_REAL));
-  PetscCall(DMSwarmRegisterPetscDatatypeField(swarm_, field::fluidRotationalDrag, 1, PETSC_REAL));
-  PetscCall(DMSwarmRegisterPetscDatatypeField(swarm_, field::fluidRotation, 3, PETSC_REAL));
-  PetscCall(DMSwarmRegisterPetscDatatypeField(swarm_, field::fluidViscosity, 1, PETSC_REAL));
-
+  // The fluid's fields only in a coupled scene (nothing of the coupling is allocated without it).
+  fluidRegistered_ = fluidFields_;
+  if (fluidRegistered_) {
+    PetscCall(DMSwarmRegisterPetscDatatypeField(swarm_, field::fluidDrag, 1, PETSC_REAL));
+    PetscCall(DMSwarmRegisterPetscDatatypeField(swarm_, field::fluidVelocity, 3, PETSC_REAL));
+    PetscCall(DMSwarmRegisterPetscDatatypeField(swarm_, field::fluidForce, 3, PETSC_REAL));
+    PetscCall(DMSwarmRegisterPetscDatatypeField(swarm_, field::fluidImpulse, 3, PETSC_REAL));
+    PetscCall(DMSwarmRegisterPetscDatatypeField(swarm_, field::fluidAddedMass, 1, PETSC_REAL));
+    PetscCall(DMSwarmRegisterPetscDatatypeField(swarm_, field::fluidExplicitImpulse, 3, PETSC_REAL));
+    PetscCall(DMSwarmRegisterPetscDatatypeField(swarm_, field::fluidCapillaryImpulse, 3, PETSC_REAL));
+    PetscCall(DMSwarmRegisterPetscDatatypeField(swarm_, field::fluidSurfacePlane, 4, PETSC_REAL));
+    PetscCall(DMSwarmRegisterPetscDatatypeField(swarm_, field::fluidRotationalDrag, 1, PETSC_REAL));
+    PetscCall(DMSwarmRegisterPetscDatatypeField(swarm_, field::fluidRotation, 3, PETSC_REAL));
+    PetscCall(DMSwarmRegisterPetscDatatypeField(swarm_, field::fluidViscosity, 1, PETSC_REAL));
+  }
   PetscCall(DMSwarmFinalizeFieldRegister(swarm_));
   PetscCall(DMSwarmSetLocalSizes(swarm_, 0, 64));
   PetscCall(FieldsMoved());
@@ -80,17 +83,19 @@ PetscErrorCode ParticleSwarm::RefreshCache() const {
   PetscCall(FieldAddress(swarm_, field::type, &c.type));
   PetscCall(FieldAddress(swarm_, field::clump, &c.clump));
   PetscCall(FieldAddress(swarm_, field::rigid, &c.rigid));
-  PetscCall(FieldAddress(swarm_, field::fluidDrag, &c.fluidDrag));
-  PetscCall(FieldAddress(swarm_, field::fluidVelocity, &c.fluidVelocity));
-  PetscCall(FieldAddress(swarm_, field::fluidForce, &c.fluidForce));
-  PetscCall(FieldAddress(swarm_, field::fluidImpulse, &c.fluidImpulse));
-  PetscCall(FieldAddress(swarm_, field::fluidAddedMass, &c.fluidAddedMass));
-  PetscCall(FieldAddress(swarm_, field::fluidExplicitImpulse, &c.fluidExplicitImpulse));
-  PetscCall(FieldAddress(swarm_, field::fluidCapillaryImpulse, &c.fluidCapillaryImpulse));
-  PetscCall(FieldAddress(swarm_, field::fluidSurfacePlane, &c.fluidSurfacePlane));
-  PetscCall(FieldAddress(swarm_, field::fluidRotationalDrag, &c.fluidRotationalDrag));
-  PetscCall(FieldAddress(swarm_, field::fluidRotation, &c.fluidRotation));
-  PetscCall(FieldAddress(swarm_, field::fluidViscosity, &c.fluidViscosity));
+  if (fluidRegistered_) {
+    PetscCall(FieldAddress(swarm_, field::fluidDrag, &c.fluidDrag));
+    PetscCall(FieldAddress(swarm_, field::fluidVelocity, &c.fluidVelocity));
+    PetscCall(FieldAddress(swarm_, field::fluidForce, &c.fluidForce));
+    PetscCall(FieldAddress(swarm_, field::fluidImpulse, &c.fluidImpulse));
+    PetscCall(FieldAddress(swarm_, field::fluidAddedMass, &c.fluidAddedMass));
+    PetscCall(FieldAddress(swarm_, field::fluidExplicitImpulse, &c.fluidExplicitImpulse));
+    PetscCall(FieldAddress(swarm_, field::fluidCapillaryImpulse, &c.fluidCapillaryImpulse));
+    PetscCall(FieldAddress(swarm_, field::fluidSurfacePlane, &c.fluidSurfacePlane));
+    PetscCall(FieldAddress(swarm_, field::fluidRotationalDrag, &c.fluidRotationalDrag));
+    PetscCall(FieldAddress(swarm_, field::fluidRotation, &c.fluidRotation));
+    PetscCall(FieldAddress(swarm_, field::fluidViscosity, &c.fluidViscosity));
+  }
   cacheN_     = c.n;
   cacheValid_ = true;
   PetscFunctionReturn(0);
@@ -101,6 +106,8 @@ PetscErrorCode ParticleSwarm::GetArrays(ParticleArrays *a) const {
 
   PetscFunctionBeginUser;
   PetscCall(DMSwarmGetLocalSize(swarm_, &n));
+  PetscCheck(!fluidFields_ || fluidRegistered_, PETSC_COMM_SELF, PETSC_ERR_ORDER,
+             "the particle swarm was created without the fluid's fields: a coupled scene calls Dem::UseFluidFields() before Dem::SetUp()");
   if (!cacheValid_ || n != cacheN_) PetscCall(RefreshCache());
   *a = cache_;
   // The fluid's fields only with a coupling (Dem::SetFluidCoupled).
@@ -145,14 +152,16 @@ PetscErrorCode ParticleSwarm::AddLocal(PetscInt n, PetscInt *first) {
   for (PetscInt p = *first; p < *first + n; ++p)
     for (int k = 0; k < kRigidWidth; ++k) rigid[kRigidWidth * p + k] = k == 0 ? 1 : 0;
   PetscCall(DMSwarmRestoreField(swarm_, field::rigid, nullptr, nullptr, (void **)&rigid));
-  // New particles feel no fluid until the coupling's next update.
-  for (const char *name : {field::fluidDrag, field::fluidVelocity, field::fluidForce, field::fluidImpulse, field::fluidAddedMass, field::fluidExplicitImpulse, field::fluidCapillaryImpulse, field::fluidSurfacePlane}) {
-    PetscReal *v;
-    PetscInt   bs;
-    PetscCall(DMSwarmGetField(swarm_, name, &bs, nullptr, (void **)&v));
-    for (PetscInt k = *first * bs; k < (*first + n) * bs; ++k) v[k] = 0;
-    PetscCall(DMSwarmRestoreField(swarm_, name, &bs, nullptr, (void **)&v));
-  }
+  // New particles feel no fluid until the coupling's next update (and every byte is defined for checkpoints).
+  if (fluidRegistered_)
+    for (const char *name : {field::fluidDrag, field::fluidVelocity, field::fluidForce, field::fluidImpulse, field::fluidAddedMass, field::fluidExplicitImpulse, field::fluidCapillaryImpulse, field::fluidSurfacePlane,
+                             field::fluidRotationalDrag, field::fluidRotation, field::fluidViscosity}) {
+      PetscReal *v;
+      PetscInt   bs;
+      PetscCall(DMSwarmGetField(swarm_, name, &bs, nullptr, (void **)&v));
+      for (PetscInt k = *first * bs; k < (*first + n) * bs; ++k) v[k] = 0;
+      PetscCall(DMSwarmRestoreField(swarm_, name, &bs, nullptr, (void **)&v));
+    }
   PetscFunctionReturn(0);
 }
 

@@ -15,6 +15,9 @@
   diskfull RANKS        a checkpoint that does not fit (file-size limit; a full tmpfs where mounting is
                         allowed): one line, non-zero exit, the previous checkpoint intact.
   final RANKS           -checkpoint_final 1 alone: the last step's checkpoint only, and a run goes on from it.
+  fluidfields           a DEM-only run's particles hold no fluid_* swarm fields (its checkpoint none of their data), a
+                        coupled run's do; a DEM-only checkpoint written before that (test/checkpoint/data, with the
+                        fields, all zero) still restarts, bitwise the uninterrupted run of today's binary.
   badinput              -restart of a missing, truncated, corrupted, other-version and other-scene file,
                         -restart latest with nothing valid, an unwritable -checkpoint_dir: one line, non-
                         zero exit on every rank (test/badinput/expect-error); -restart latest skips a
@@ -396,6 +399,31 @@ def case_final(exe, ranks):
     shutil.rmtree(tmp)
 
 
+def case_fluidfields(exe):
+    """The fluid coupling's 11 swarm fields (26 reals per particle) exist only in a coupled scene (ParticleSwarm::
+    SetFluidFields before Create). data/dem-50-fluid-fields.h5.xz is the "dem" scene's step-50 checkpoint on 2 ranks
+    written by the binary of 6b1478e, which registered them in every scene (saved all zero here)."""
+    tmp = tempfile.mkdtemp(prefix="vofdem-ckpt-")
+    a, b, c = (os.path.join(tmp, x) for x in "abc")
+    run(exe, 2, "dem", ["-max_steps", "100", "-checkpoint_dir", a, "-output_dir", a + "-out"])
+    fluid = lambda f: sorted(k for k in datasets(f) if "swarm_fluid" in k)
+    got = fluid(ckpt(a, 100))
+    check(got == [], "a DEM-only checkpoint holds no fluid_* particle data (found %s)" % got)
+    os.makedirs(b)
+    old = os.path.join(b, "checkpoint_00000050.h5")
+    with open(old, "wb") as f:
+        subprocess.run(["xz", "-dc", os.path.join(ROOT, "test", "checkpoint", "data", "dem-50-fluid-fields.h5.xz")], stdout=f, check=True)
+    check(len(fluid(old)) == 11, "the old file holds the 11 fluid_* fields (found %d)" % len(fluid(old)))
+    p = run(exe, 2, "dem", ["-max_steps", "100", "-checkpoint_dir", b, "-restart", "latest", "-output_dir", b + "-out"])
+    check("at step 50," in p.stdout, "today's binary restarts the old DEM-only checkpoint")
+    d = bitwise_diff(ckpt(a, 100), ckpt(b, 100))
+    check(not d, "the old checkpoint's continuation to step 100 is bitwise the uninterrupted run's (differing: %s)" % d)
+    run(exe, 1, "coupled", ["-max_steps", "2", "-checkpoint_dir", c, "-output_dir", c + "-out", "-checkpoint_final", "1"])
+    got = fluid(ckpt(c, 2))
+    check(len(got) == 11, "a coupled checkpoint holds the 11 fluid_* fields (found %d)" % len(got))
+    shutil.rmtree(tmp)
+
+
 def main():
     exe, case, args = os.path.abspath(sys.argv[1]), sys.argv[2], sys.argv[3:]
     work = tempfile.mkdtemp(prefix="vofdem-ckpt-")
@@ -412,6 +440,8 @@ def main():
         case_badinput(exe)
     elif case == "final":
         case_final(exe, int(args[0]))
+    elif case == "fluidfields":
+        case_fluidfields(exe)
     else:
         raise SystemExit("unknown case " + case)
     if failures:

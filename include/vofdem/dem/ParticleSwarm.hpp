@@ -23,7 +23,8 @@ inline constexpr const char *torque   = "torque";              // N m, total tor
 inline constexpr const char *type     = "type";                // particle type (index into -dem_types), PetscInt
 inline constexpr const char *clump    = "clump";               // id of the rigid clump the sphere belongs to, -1: none (P10), PetscInt64
 inline constexpr const char *rigid    = "rigid";               // a clump member's body state (Clumps.hpp), kRigidWidth reals
-// Set by the fluid coupling (Coupling.hpp) once per fluid step, read by every DEM sub-step; zero without it.
+// Set by the fluid coupling (Coupling.hpp) once per fluid step, read by every DEM sub-step. Registered only in a
+// coupled scene (ParticleSwarm::SetFluidFields before Create): a DEM-only swarm neither holds, migrates nor saves them.
 inline constexpr const char *fluidDrag     = "fluid_drag";      // kg/s, drag coefficient K: drag = K (u - v), applied implicitly
 inline constexpr const char *fluidVelocity = "fluid_velocity";  // m/s, the fluid velocity u the drag relaxes to
 inline constexpr const char *fluidForce    = "fluid_force";     // N, the other fluid forces (pressure gradient), explicit
@@ -77,7 +78,10 @@ public:
   // sorting). Between GetArrays and RestoreArrays the swarm must not be resized (as DMSwarm's own access
   // rule); FieldsMoved() checks it.
   PetscErrorCode GetArrays(ParticleArrays *a) const;  // the fluid_* arrays are null unless SetFluidFields(true)
+  // A coupled scene: before Create, so that the fluid_* fields are registered (26 reals per particle that a
+  // DEM-only scene does without); after Create only to switch them off or on again.
   void           SetFluidFields(bool on) { fluidFields_ = on; }
+  bool           HasFluidFields() const { return fluidRegistered_; }  // the fluid_* fields exist in the swarm
   PetscErrorCode RestoreArrays(ParticleArrays *a) const;
   PetscErrorCode FieldsMoved() const;  // after any DMSwarm call that may reallocate (resize) the fields
 
@@ -96,7 +100,8 @@ public:
 private:
   PetscErrorCode RefreshCache() const;
 
-  bool fluidFields_ = false;  // GetArrays takes the fluid_* fields too (a coupled scene)
+  bool fluidFields_ = false;      // GetArrays takes the fluid_* fields too (a coupled scene)
+  bool fluidRegistered_ = false;  // Create registered them (fluidFields_ was set before it)
   mutable ParticleArrays cache_;         // every field's address (fluid ones included) for cacheN_ local particles
   mutable bool           cacheValid_ = false;
   mutable PetscInt       cacheN_     = -1;
