@@ -31,13 +31,17 @@ constexpr const char *const kSwarmFields[] = {field::position, field::velocity, 
                                     field::fluidRotationalDrag, field::fluidRotation, field::fluidViscosity,
                                     DMSwarmField_pid, DMSwarmField_rank, DMSwarmPICField_cellid};
 constexpr int kNumSwarmFields = sizeof(kSwarmFields) / sizeof(kSwarmFields[0]);
-// The fluid_* fields (kSwarmFields[kFirstFluid ...]) exist only in a coupled scene (ParticleSwarm::SetFluidFields); a
-// DEM-only run saves them empty, keeping the archive's order, and their block sizes are needed to read an older file
-// that holds them.
-constexpr int      kFirstFluid = 12, kNumFluid = 11;
-constexpr PetscInt kFluidBs[kNumFluid] = {1, 3, 3, 3, 1, 3, 3, 4, 1, 3, 1};
-static_assert(kSwarmFields[kFirstFluid] == field::fluidDrag && kSwarmFields[kFirstFluid + kNumFluid - 1] == field::fluidViscosity, "the fluid_* fields' place");
-bool IsFluidField(int f) { return f >= kFirstFluid && f < kFirstFluid + kNumFluid; }
+// The fluid_* fields (kSwarmFields[kFirstFluid ...], as ParticleSwarm.hpp's kFluidFields) exist only in a coupled scene;
+// a DEM-only run saves them empty, keeping the archive's order, and reads an older file's (which holds them) with
+// their widths from kFluidFields.
+constexpr int kFirstFluid = 12;
+constexpr bool FluidFieldsInPlace() {
+  for (int k = 0; k < kNumFluidFields; ++k)
+    if (kSwarmFields[kFirstFluid + k] != kFluidFields[k].name) return false;
+  return true;
+}
+static_assert(FluidFieldsInPlace(), "kSwarmFields holds ParticleSwarm.hpp's kFluidFields in their order from kFirstFluid");
+bool IsFluidField(int f) { return f >= kFirstFluid && f < kFirstFluid + kNumFluidFields; }
 constexpr int kStatsWidth     = 4 + 18;  // pair and wall contacts, max overlap, elastic energy, wall forces
 
 // Copies swarm field `name` of local particles into `out` (toSwarm false) or back (true), as doubles.
@@ -154,7 +158,7 @@ PetscErrorCode Dem::Save(PetscViewer viewer) {
   st.fields.resize(kNumSwarmFields);
   st.fieldBs.resize(kNumSwarmFields);
   for (int f = 0; f < kNumSwarmFields; ++f) {
-    if (IsFluidField(f) && !swarm_.HasFluidFields()) st.fieldBs[f] = kFluidBs[f - kFirstFluid];  // saved empty
+    if (IsFluidField(f) && !swarm_.HasFluidFields()) st.fieldBs[f] = kFluidFields[f - kFirstFluid].width;  // saved empty
     else PetscCall(CopyField(swarm_.Dm(), kSwarmFields[f], &st.fields[f], &st.fieldBs[f], false));
   }
   {  // ids of the pairs (lower first) and of the wall candidates: the keys of a rank-count change
@@ -251,7 +255,7 @@ PetscErrorCode Dem::Load(PetscViewer viewer) {
     PetscDataType type;
     void         *data;
     if (IsFluidField(f) && !swarm_.HasFluidFields()) {
-      st.fieldBs[f] = kFluidBs[f - kFirstFluid];
+      st.fieldBs[f] = kFluidFields[f - kFirstFluid].width;
       continue;
     }
     PetscCall(DMSwarmGetField(dm, kSwarmFields[f], &st.fieldBs[f], &type, &data));

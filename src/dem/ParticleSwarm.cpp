@@ -27,19 +27,8 @@ PetscErrorCode ParticleSwarm::Create(const Grid &grid) {
   PetscCall(DMSwarmRegisterPetscDatatypeField(swarm_, field::rigid, kRigidWidth, PETSC_REAL));
   // The fluid's fields only in a coupled scene (nothing of the coupling is allocated without it).
   fluidRegistered_ = fluidFields_;
-  if (fluidRegistered_) {
-    PetscCall(DMSwarmRegisterPetscDatatypeField(swarm_, field::fluidDrag, 1, PETSC_REAL));
-    PetscCall(DMSwarmRegisterPetscDatatypeField(swarm_, field::fluidVelocity, 3, PETSC_REAL));
-    PetscCall(DMSwarmRegisterPetscDatatypeField(swarm_, field::fluidForce, 3, PETSC_REAL));
-    PetscCall(DMSwarmRegisterPetscDatatypeField(swarm_, field::fluidImpulse, 3, PETSC_REAL));
-    PetscCall(DMSwarmRegisterPetscDatatypeField(swarm_, field::fluidAddedMass, 1, PETSC_REAL));
-    PetscCall(DMSwarmRegisterPetscDatatypeField(swarm_, field::fluidExplicitImpulse, 3, PETSC_REAL));
-    PetscCall(DMSwarmRegisterPetscDatatypeField(swarm_, field::fluidCapillaryImpulse, 3, PETSC_REAL));
-    PetscCall(DMSwarmRegisterPetscDatatypeField(swarm_, field::fluidSurfacePlane, 4, PETSC_REAL));
-    PetscCall(DMSwarmRegisterPetscDatatypeField(swarm_, field::fluidRotationalDrag, 1, PETSC_REAL));
-    PetscCall(DMSwarmRegisterPetscDatatypeField(swarm_, field::fluidRotation, 3, PETSC_REAL));
-    PetscCall(DMSwarmRegisterPetscDatatypeField(swarm_, field::fluidViscosity, 1, PETSC_REAL));
-  }
+  if (fluidRegistered_)
+    for (const SwarmFieldWidth &f : kFluidFields) PetscCall(DMSwarmRegisterPetscDatatypeField(swarm_, f.name, f.width, PETSC_REAL));
   PetscCall(DMSwarmFinalizeFieldRegister(swarm_));
   PetscCall(DMSwarmSetLocalSizes(swarm_, 0, 64));
   PetscCall(FieldsMoved());
@@ -154,13 +143,11 @@ PetscErrorCode ParticleSwarm::AddLocal(PetscInt n, PetscInt *first) {
   PetscCall(DMSwarmRestoreField(swarm_, field::rigid, nullptr, nullptr, (void **)&rigid));
   // New particles feel no fluid until the coupling's next update (and every byte is defined for checkpoints).
   if (fluidRegistered_)
-    for (const char *name : {field::fluidDrag, field::fluidVelocity, field::fluidForce, field::fluidImpulse, field::fluidAddedMass, field::fluidExplicitImpulse, field::fluidCapillaryImpulse, field::fluidSurfacePlane,
-                             field::fluidRotationalDrag, field::fluidRotation, field::fluidViscosity}) {
+    for (const SwarmFieldWidth &f : kFluidFields) {
       PetscReal *v;
-      PetscInt   bs;
-      PetscCall(DMSwarmGetField(swarm_, name, &bs, nullptr, (void **)&v));
-      for (PetscInt k = *first * bs; k < (*first + n) * bs; ++k) v[k] = 0;
-      PetscCall(DMSwarmRestoreField(swarm_, name, &bs, nullptr, (void **)&v));
+      PetscCall(DMSwarmGetField(swarm_, f.name, nullptr, nullptr, (void **)&v));
+      for (PetscInt k = *first * f.width; k < (*first + n) * f.width; ++k) v[k] = 0;
+      PetscCall(DMSwarmRestoreField(swarm_, f.name, nullptr, nullptr, (void **)&v));
     }
   PetscFunctionReturn(0);
 }

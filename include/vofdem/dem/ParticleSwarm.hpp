@@ -48,6 +48,17 @@ inline constexpr const char *fluidViscosity = "fluid_viscosity";
 }  // namespace field
 // q (4), centre in the body frame (3), clump mass, principal moments (3): see Clumps.hpp.
 inline constexpr int kRigidWidth = 11;
+// The fluid coupling's fields with their reals per particle: registered together (a coupled scene only), zeroed
+// together for new particles, and saved in this order (DemSaveLoad.cpp).
+struct SwarmFieldWidth {
+  const char *name;
+  PetscInt    width;
+};
+inline constexpr SwarmFieldWidth kFluidFields[] = {{field::fluidDrag, 1},         {field::fluidVelocity, 3},         {field::fluidForce, 3},
+                                                   {field::fluidImpulse, 3},      {field::fluidAddedMass, 1},        {field::fluidExplicitImpulse, 3},
+                                                   {field::fluidCapillaryImpulse, 3}, {field::fluidSurfacePlane, 4}, {field::fluidRotationalDrag, 1},
+                                                   {field::fluidRotation, 3},     {field::fluidViscosity, 1}};
+inline constexpr int kNumFluidFields = sizeof(kFluidFields) / sizeof(kFluidFields[0]);
 
 // Every field of the local particles at once, for loops over particles (structure of arrays;
 // vectors hold x,y,z per particle). Valid between GetArrays and RestoreArrays.
