@@ -161,6 +161,7 @@ def main():
     ap.add_argument("--mix", action="store_true", help="a 2:1 size mix (d = 100 and 50 um, equal mass fractions)")
     ap.add_argument("--ratio", type=float, default=0, help="an R:1 size mix (d = 100 and 100/R um, equal mass fractions)")
     ap.add_argument("--no-memory", action="store_true", help="skip the memory measurement")
+    ap.add_argument("--memory-only", action="store_true", help="only the memory measurement (no timed runs)")
     a = ap.parse_args()
     global DT
     if a.mix:
@@ -182,6 +183,11 @@ def main():
     print("bed: %d spheres, %s, settled height %.3f mm in a %g x %g x %.2f mm box; dt %g s; %d timed steps after %d" %
           (n, "d = 100 um" if not a.ratio else "%g:1 mix, %d of d = %g um and %d of d = 100 um" % (a.ratio, small, 100 / a.ratio, n - small), 1e3 * (top + D / 2), 1e3 * L, 1e3 * L,
            1e3 * h, DT, a.steps, a.warmup), flush=True)
+    if a.memory_only:
+        mem = memory(csv, h, n, top)
+        print("memory per particle (resident-size slope, %d -> %d spheres, 1 rank): vofdem %.0f B, LIGGGHTS %.0f B" % (n, 2 * n, mem["vofdem"], mem["liggghts"]))
+        print("target: memory < 1 KB per particle: %s" % ("met" if mem["vofdem"] < 1024 else "NOT met"))
+        return
     ns = {("liggghts", 1): [], ("liggghts", 2): [], ("vofdem", 1): [], ("vofdem", 2): []}
     whitelisted = True
     for rep in range(a.repeats):

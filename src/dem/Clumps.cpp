@@ -123,6 +123,7 @@ PetscErrorCode Clumps::SetUp(const ParticleArrays &a, const std::vector<PetscRea
   stale_ = true;
   Group(a);
   *count = (PetscInt)members_.size();
+  PetscCheck(!*count || a.rigid, PETSC_COMM_SELF, PETSC_ERR_ORDER, "clumps in a particle swarm created without their rigid state (ParticleSwarm::SetRigidFields before Create)");
   for (auto &kv : members_) {
     std::vector<PetscInt> &m = kv.second;
     std::sort(m.begin(), m.end(), [&](PetscInt i, PetscInt j) { return a.id[i] < a.id[j]; });

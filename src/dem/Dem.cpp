@@ -177,6 +177,8 @@ PetscErrorCode Dem::SetUp(Grid &grid, const PetscReal gravity[3], std::uint64_t 
   PetscCall(PetscLogEventRegister("DEMForces", classId, &evForces_));
   PetscCall(PetscLogEventRegister("DEMIntegrate", classId, &evIntegrate_));
   if (!savePath_.empty()) PetscCall(CheckWritable(comm_, savePath_, "option -dem_save_particles"));
+  // The clumps' rigid state (11 reals per particle) only where clumps can come: inserted, or from the file.
+  swarm_.SetRigidFields(sources_.InsertsClumps() || ParticlesFileNamesClumps());
   PetscCall(swarm_.Create(grid));
   PetscCall(halo_.SetUp(grid));
   PetscCall(halo_.Images().CheckRanks(grid));

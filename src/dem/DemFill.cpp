@@ -157,6 +157,23 @@ PetscErrorCode Dem::FillRandom(std::uint64_t seed) {
 // -dem_radius) are optional, in any order. Every rank reads the file and keeps the particles it
 // owns, so the result does not depend on the rank count. A bad file is an input error naming file
 // and line; so is a particle outside the box or cut deeply by a face.
+// Whether the particles file's header names a clump column: then the swarm holds the clumps' rigid state
+// (ParticleSwarm::SetRigidFields, before the swarm exists). A file that cannot be read says no here;
+// ReadParticles reports it.
+bool Dem::ParticlesFileNamesClumps() const {
+  if (particlesFile_.empty()) return false;
+  std::ifstream in(particlesFile_);
+  std::string   header, c;
+  if (!in || !std::getline(in, header)) return false;
+  std::stringstream ss(header);
+  while (std::getline(ss, c, ',')) {
+    c.erase(0, c.find_first_not_of(" \t\r"));
+    c.erase(c.find_last_not_of(" \t\r") + 1);
+    if (c == "clump") return true;
+  }
+  return false;
+}
+
 PetscErrorCode Dem::ReadParticles() {
   static const char *const names[] = {"x", "y", "z", "vx", "vy", "vz", "wx", "wy", "wz", "radius", "type", "clump"};
   constexpr int            kCols   = 12;

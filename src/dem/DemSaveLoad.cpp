@@ -42,7 +42,14 @@ constexpr bool FluidFieldsInPlace() {
 }
 static_assert(FluidFieldsInPlace(), "kSwarmFields holds ParticleSwarm.hpp's kFluidFields in their order from kFirstFluid");
 bool IsFluidField(int f) { return f >= kFirstFluid && f < kFirstFluid + kNumFluidFields; }
+constexpr int kClumpField = 10, kRigidField = 11;  // the clump id, then the clumps' rigid state (clump scenes only)
+static_assert(kSwarmFields[kClumpField] == field::clump && kSwarmFields[kRigidField] == field::rigid, "kSwarmFields: clump, rigid");
 constexpr int kStatsWidth     = 4 + 18;  // pair and wall contacts, max overlap, elastic energy, wall forces
+
+// A field this scene's swarm does not hold (ParticleSwarm: the fluid_* ones without a coupling, `rigid` without
+// clumps) is saved empty with its width, keeping the archive's layout, and an older file's values are dropped on load.
+bool Absent(const ParticleSwarm &swarm, int f) { return (IsFluidField(f) && !swarm.HasFluidFields()) || (f == kRigidField && !swarm.HasRigidFields()); }
+PetscInt AbsentWidth(int f) { return f == kRigidField ? kRigidWidth : kFluidFields[f - kFirstFluid].width; }
 
 // Copies swarm field `name` of local particles into `out` (toSwarm false) or back (true), as doubles.
 PetscErrorCode CopyField(DM swarm, const char *name, std::vector<PetscReal> *out, PetscInt *bs, bool toSwarm) {
@@ -132,7 +139,7 @@ PetscErrorCode Dem::SavedBytes(PetscInt64 *bytes) const {
 
   PetscFunctionBeginUser;
   for (int f = 0; f < kNumSwarmFields; ++f) {
-    if (IsFluidField(f) && !swarm_.HasFluidFields()) continue;
+    if (Absent(swarm_, f)) continue;
     PetscCall(DMSwarmGetField(swarm_.Dm(), kSwarmFields[f], &bs, &type, &data));
     PetscCall(DMSwarmRestoreField(swarm_.Dm(), kSwarmFields[f], &bs, &type, &data));
     perParticle += bs;
@@ -158,7 +165,7 @@ PetscErrorCode Dem::Save(PetscViewer viewer) {
   st.fields.resize(kNumSwarmFields);
   st.fieldBs.resize(kNumSwarmFields);
   for (int f = 0; f < kNumSwarmFields; ++f) {
-    if (IsFluidField(f) && !swarm_.HasFluidFields()) st.fieldBs[f] = kFluidFields[f - kFirstFluid].width;  // saved empty
+    if (Absent(swarm_, f)) st.fieldBs[f] = AbsentWidth(f);  // saved empty
     else PetscCall(CopyField(swarm_.Dm(), kSwarmFields[f], &st.fields[f], &st.fieldBs[f], false));
   }
   {  // ids of the pairs (lower first) and of the wall candidates: the keys of a rank-count change
@@ -254,8 +261,8 @@ PetscErrorCode Dem::Load(PetscViewer viewer) {
   for (int f = 0; f < kNumSwarmFields; ++f) {  // block sizes from the swarm itself
     PetscDataType type;
     void         *data;
-    if (IsFluidField(f) && !swarm_.HasFluidFields()) {
-      st.fieldBs[f] = kFluidFields[f - kFirstFluid].width;
+    if (Absent(swarm_, f)) {
+      st.fieldBs[f] = AbsentWidth(f);
       continue;
     }
     PetscCall(DMSwarmGetField(dm, kSwarmFields[f], &st.fieldBs[f], &type, &data));
@@ -312,6 +319,13 @@ PetscErrorCode Dem::Load(PetscViewer viewer) {
       // run's would not restart as DEM-only (Checkpoint.cpp compares the physics), so a value here is corruption.
       PetscCheck(std::all_of(st.fields[f].begin(), st.fields[f].end(), [](PetscReal v) { return v == 0; }), PETSC_COMM_SELF, PETSC_ERR_FILE_UNEXPECTED,
                  "checkpoint: the particles' field %s holds fluid coupling state, but this run has no coupling", kSwarmFields[f]);
+      continue;
+    }
+    if (f == kRigidField && !swarm_.HasRigidFields()) {
+      // A file written before `rigid` became optional holds it for every particle; only clump members use it, and
+      // a scene without clumps cannot take a file with some (the clump ids were compacted to this rank's above).
+      PetscCheck(std::all_of(st.fields[kClumpField].begin(), st.fields[kClumpField].begin() + keep.size(), [](PetscReal c) { return c < 0; }), PETSC_COMM_SELF,
+                 PETSC_ERR_FILE_UNEXPECTED, "checkpoint: its particles include rigid clumps (P10), but this run's scene has none (no clump insertion, no clump column in -dem_particles_file)");
       continue;
     }
     const PetscInt bs = st.fieldBs[f];

@@ -24,7 +24,9 @@ PetscErrorCode ParticleSwarm::Create(const Grid &grid) {
   PetscCall(DMSwarmRegisterPetscDatatypeField(swarm_, field::torque, 3, PETSC_REAL));
   PetscCall(DMSwarmRegisterPetscDatatypeField(swarm_, field::type, 1, PETSC_INT));
   PetscCall(DMSwarmRegisterPetscDatatypeField(swarm_, field::clump, 1, PETSC_INT64));
-  PetscCall(DMSwarmRegisterPetscDatatypeField(swarm_, field::rigid, kRigidWidth, PETSC_REAL));
+  // A clump member's rigid-body state only where clumps can exist (11 reals per particle otherwise unused).
+  rigidRegistered_ = rigidFields_;
+  if (rigidRegistered_) PetscCall(DMSwarmRegisterPetscDatatypeField(swarm_, field::rigid, kRigidWidth, PETSC_REAL));
   // The fluid's fields only in a coupled scene (nothing of the coupling is allocated without it).
   fluidRegistered_ = fluidFields_;
   if (fluidRegistered_)
@@ -71,7 +73,8 @@ PetscErrorCode ParticleSwarm::RefreshCache() const {
   PetscCall(FieldAddress(swarm_, field::torque, &c.torque));
   PetscCall(FieldAddress(swarm_, field::type, &c.type));
   PetscCall(FieldAddress(swarm_, field::clump, &c.clump));
-  PetscCall(FieldAddress(swarm_, field::rigid, &c.rigid));
+  c.rigid = nullptr;
+  if (rigidRegistered_) PetscCall(FieldAddress(swarm_, field::rigid, &c.rigid));
   if (fluidRegistered_) {
     PetscCall(FieldAddress(swarm_, field::fluidDrag, &c.fluidDrag));
     PetscCall(FieldAddress(swarm_, field::fluidVelocity, &c.fluidVelocity));
@@ -131,16 +134,18 @@ PetscErrorCode ParticleSwarm::GlobalCount(PetscInt *n) const {
 
 PetscErrorCode ParticleSwarm::AddLocal(PetscInt n, PetscInt *first) {
   PetscFunctionBeginUser;
-  PetscReal *rigid;
   PetscCall(DMSwarmGetLocalSize(swarm_, first));
   PetscCall(FieldsMoved());  // no arrays in use while the swarm grows
   PetscCall(DMSwarmAddNPoints(swarm_, n));
   PetscCall(FieldsMoved());
   // Not in a clump: identity orientation, zeros (defined bytes for checkpoints).
-  PetscCall(DMSwarmGetField(swarm_, field::rigid, nullptr, nullptr, (void **)&rigid));
-  for (PetscInt p = *first; p < *first + n; ++p)
-    for (int k = 0; k < kRigidWidth; ++k) rigid[kRigidWidth * p + k] = k == 0 ? 1 : 0;
-  PetscCall(DMSwarmRestoreField(swarm_, field::rigid, nullptr, nullptr, (void **)&rigid));
+  if (rigidRegistered_) {
+    PetscReal *rigid;
+    PetscCall(DMSwarmGetField(swarm_, field::rigid, nullptr, nullptr, (void **)&rigid));
+    for (PetscInt p = *first; p < *first + n; ++p)
+      for (int k = 0; k < kRigidWidth; ++k) rigid[kRigidWidth * p + k] = k == 0 ? 1 : 0;
+    PetscCall(DMSwarmRestoreField(swarm_, field::rigid, nullptr, nullptr, (void **)&rigid));
+  }
   // New particles feel no fluid until the coupling's next update (and every byte is defined for checkpoints).
   if (fluidRegistered_)
     for (const SwarmFieldWidth &f : kFluidFields) {

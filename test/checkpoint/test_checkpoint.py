@@ -421,6 +421,14 @@ def case_fluidfields(exe):
     run(exe, 1, "coupled", ["-max_steps", "2", "-checkpoint_dir", c, "-output_dir", c + "-out", "-checkpoint_final", "1"])
     got = fluid(ckpt(c, 2))
     check(len(got) == 11, "a coupled checkpoint holds the 11 fluid_* fields (found %d)" % len(got))
+    # The clumps' rigid state (11 reals per particle) likewise exists only where clumps can come (ParticleSwarm::
+    # SetRigidFields): the old file holds it for every particle, today's DEM-only one not, a clump scene's does.
+    rigid = lambda f: sorted(k for k in datasets(f) if "swarm_rigid" in k)
+    check(len(rigid(old)) == 1 and rigid(ckpt(a, 100)) == [], "the old file holds swarm_rigid, a DEM-only checkpoint without clumps not (%s, %s)"
+          % (rigid(old), rigid(ckpt(a, 100))))
+    e = os.path.join(tmp, "e")
+    run(exe, 1, "demclumps", ["-max_steps", "2", "-checkpoint_dir", e, "-output_dir", e + "-out", "-checkpoint_final", "1"])
+    check(len(rigid(ckpt(e, 2))) == 1, "a checkpoint of a scene inserting clumps holds swarm_rigid (found %s)" % rigid(ckpt(e, 2)))
     shutil.rmtree(tmp)
 
 

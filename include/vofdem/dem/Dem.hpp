@@ -121,6 +121,7 @@ private:
   PetscErrorCode Fill(std::uint64_t seed);              // DemFill.cpp
   PetscErrorCode FillRandom(std::uint64_t seed);        // DemFill.cpp: -dem_fill_mode random
   PetscErrorCode ReadParticles();                       // DemFill.cpp: -dem_particles_file
+  bool           ParticlesFileNamesClumps() const;      // DemFill.cpp: its header has a clump column
   void           StoreFilled(const ParticleArrays &a, PetscInt p, PetscInt64 id, const PetscReal x[3], PetscReal r, std::uint64_t seed) const;
   PetscErrorCode Rebuild();                             // DemContacts.cpp: migrate, halo, list, springs
   void           JkrPairConstants();                    // DemContacts.cpp: jkrPairs_ for the list as it is

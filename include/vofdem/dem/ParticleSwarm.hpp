@@ -22,7 +22,7 @@ inline constexpr const char *omega    = "omega";               // rad/s, angular
 inline constexpr const char *torque   = "torque";              // N m, total torque of the last evaluation
 inline constexpr const char *type     = "type";                // particle type (index into -dem_types), PetscInt
 inline constexpr const char *clump    = "clump";               // id of the rigid clump the sphere belongs to, -1: none (P10), PetscInt64
-inline constexpr const char *rigid    = "rigid";               // a clump member's body state (Clumps.hpp), kRigidWidth reals
+inline constexpr const char *rigid    = "rigid";               // a clump member's body state (Clumps.hpp), kRigidWidth reals; clump scenes only
 // Set by the fluid coupling (Coupling.hpp) once per fluid step, read by every DEM sub-step. Registered only in a
 // coupled scene (ParticleSwarm::SetFluidFields before Create): a DEM-only swarm neither holds, migrates nor saves them.
 inline constexpr const char *fluidDrag     = "fluid_drag";      // kg/s, drag coefficient K: drag = K (u - v), applied implicitly
@@ -93,6 +93,11 @@ public:
   // DEM-only scene does without); after Create only to switch them off or on again.
   void           SetFluidFields(bool on) { fluidFields_ = on; }
   bool           HasFluidFields() const { return fluidRegistered_; }  // the fluid_* fields exist in the swarm
+  // A scene that can hold clumps (P10: a particles file with a clump column, clump insertion): before Create, so
+  // that the `rigid` field is registered (11 reals per particle a scene of single spheres does without; a.rigid
+  // is null otherwise).
+  void           SetRigidFields(bool on) { rigidFields_ = on; }
+  bool           HasRigidFields() const { return rigidRegistered_; }
   PetscErrorCode RestoreArrays(ParticleArrays *a) const;
   PetscErrorCode FieldsMoved() const;  // after any DMSwarm call that may reallocate (resize) the fields
 
@@ -113,6 +118,7 @@ private:
 
   bool fluidFields_ = false;      // GetArrays takes the fluid_* fields too (a coupled scene)
   bool fluidRegistered_ = false;  // Create registered them (fluidFields_ was set before it)
+  bool rigidFields_ = false, rigidRegistered_ = false;  // the same for the clumps' `rigid` field
   mutable ParticleArrays cache_;         // every field's address (fluid ones included) for cacheN_ local particles
   mutable bool           cacheValid_ = false;
   mutable PetscInt       cacheN_     = -1;
