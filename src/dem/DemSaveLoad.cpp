@@ -295,17 +295,16 @@ PetscErrorCode Dem::Load(PetscViewer viewer) {
     for (size_t k = 0; k < saved; ++k) keep.push_back(k);
   } else {
     // A clump's members stay together (P10): all go to the owner of its lowest-id member.
-    const int                                iClump = 10;
     std::unordered_map<PetscInt64, size_t>   lead;
     for (size_t k = 0; k < saved; ++k) {
-      const PetscInt64 c = (PetscInt64)st.fields[iClump][k];
+      const PetscInt64 c = (PetscInt64)st.fields[kClumpField][k];
       if (c < 0) continue;
       auto it = lead.find(c);
       if (it == lead.end()) lead.emplace(c, k);
       else if (st.fields[iId][k] < st.fields[iId][it->second]) it->second = k;
     }
     for (size_t k = 0; k < saved; ++k) {
-      const PetscInt64 c = (PetscInt64)st.fields[iClump][k];
+      const PetscInt64 c = (PetscInt64)st.fields[kClumpField][k];
       // OwnsParticle: a centre past a periodic face since the last rebuild belongs to the face's other side
       // (OwnsPoint would give it to no rank: the D7 run restarted with 3 of 32,000 spheres missing).
       if (grid_->OwnsParticle(&st.fields[iPos][3 * (c < 0 ? k : lead[c])])) keep.push_back(k);
