@@ -1,8 +1,10 @@
 static const char help[] = "Insertion streams and a deletion box. Source a feeds 20000 particles/s for 5 ms (by number), source b\n"
                            "1e-3 kg/s from 2 to 6 ms (by mass, uniform radii) through a slot that straddles the rank boundary; the\n"
                            "particles fall into a deletion box at the bottom. Checks: a's count is floor(rate x time) exactly at\n"
-                           "every check, b's mass is within one particle mass below mass_rate x time, new ids continue after the\n"
-                           "fill's, and the books balance: initial + inserted - deleted = present, in number and in mass.\n\n";
+                           "every check, b's mass is within one particle mass below mass_rate x time, source c (a region too small\n"
+                           "for its rate) stops at its end time short of rate x time and inserts nothing owed after it, new ids\n"
+                           "continue after the fill's, and the books balance: initial + inserted - deleted = present, in number\n"
+                           "and in mass.\n\n";
 
 #include "vofdem/core/Runtime.hpp"
 #include "vofdem/core/Simulation.hpp"
@@ -21,7 +23,6 @@ static PetscErrorCode Run() {
                            {"-dem_fill_count", "20"},  // a few particles present from the start: ids 0..19
                            {"-dem_fill_lower", "0,0,0.008"},
                            {"-dem_fill_upper", "0.01,0.01,0.012"},
-                           {"-dem_inserts", "a,b"},
                            {"-dem_insert_a_lower", "0.002,0.002,0.017"},
                            {"-dem_insert_a_upper", "0.008,0.008,0.018"},
                            {"-dem_insert_a_rate", "20000"},
@@ -37,6 +38,12 @@ static PetscErrorCode Run() {
                            {"-dem_insert_b_size_distribution", "uniform"},
                            {"-dem_insert_b_radius_min", "2e-4"},
                            {"-dem_insert_b_radius_max", "3e-4"},
+                           {"-dem_inserts", "a,b,c"},
+                           {"-dem_insert_c_lower", "0.0045,0.0045,0.014"},  // room for about one sphere at a time
+                           {"-dem_insert_c_upper", "0.0051,0.0051,0.0146"},
+                           {"-dem_insert_c_rate", "20000"},
+                           {"-dem_insert_c_end", "0.0035"},
+                           {"-dem_insert_c_velocity", "0,0,-0.5"},
                            {"-dem_delete_boxes", "0,0,0,0.01,0.01,0.003"}};
   for (auto &o : opts) PetscCall(PetscOptionsSetValue(nullptr, o[0], o[1]));
   PetscCall(sim.Create(PETSC_COMM_WORLD));
@@ -48,6 +55,7 @@ static PetscErrorCode Run() {
   const PetscReal rho = dem->Material().density, mass = 4.0 / 3.0 * PETSC_PI * rho;  // times r^3
   const PetscReal mMaxB = mass * 2.7e-11;                                              // heaviest of source b
   PetscReal       next  = 0.001;
+  PetscInt64      heldC = -1;  // c's count at the first check after its end
   while (sim.Time() < 0.03) {
     PetscCall(sim.Step());
     if (sim.Time() < next && sim.Time() < 0.03) continue;
@@ -59,13 +67,16 @@ static PetscErrorCode Run() {
     const PetscInt64 wantA = (PetscInt64)std::floor(20000 * (std::min(t, 0.005)));
     const PetscReal  owedB = 1e-3 * std::max(0.0, std::min(t, 0.006) - 0.002);
     const bool okA = src[0].count == wantA, okB = src[1].mass <= owedB && owedB - src[1].mass < mMaxB;
+    if (t > 0.0035 && heldC < 0) heldC = src[2].count;
+    const PetscInt64 dueC = (PetscInt64)std::floor(20000 * std::min(t, 0.0035));
+    const bool       okC  = src[2].count > 0 && src[2].count < dueC && (heldC < 0 || src[2].count == heldC);
     const bool books = s0.particles + s.inserted - s.deleted == s.particles &&
                        std::fabs(s0.mass + s.massInserted - s.massDeleted - s.mass) <= 1e-12 * (s0.mass + s.massInserted);
-    PetscCall(PetscPrintf(PETSC_COMM_WORLD, "t %.4f s: a %d (floor(rate t) = %d) %s; b %d particles, %.6e kg (owed %.6e kg, short by less than %.3e kg) %s; present %d = %d + %d - %d, mass %.6e kg %s\n",
+    PetscCall(PetscPrintf(PETSC_COMM_WORLD, "t %.4f s: a %d (floor(rate t) = %d) %s; b %d particles, %.6e kg (owed %.6e kg, short by less than %.3e kg) %s; c %d of %d %s; present %d = %d + %d - %d, mass %.6e kg %s\n",
                           (double)t, (int)src[0].count, (int)wantA, okA ? "ok" : "FAIL", (int)src[1].count, (double)src[1].mass, (double)owedB,
-                          (double)mMaxB, okB ? "ok" : "FAIL", (int)s.particles, (int)s0.particles, (int)s.inserted, (int)s.deleted, (double)s.mass,
+                          (double)mMaxB, okB ? "ok" : "FAIL", (int)src[2].count, (int)dueC, okC ? "ok" : "FAIL", (int)s.particles, (int)s0.particles, (int)s.inserted, (int)s.deleted, (double)s.mass,
                           books ? "ok" : "FAIL"));
-    failures += !okA + !okB + !books;
+    failures += !okA + !okB + !okC + !books;
   }
   // Ids: the fill's 0..19, then one new id per insertion, none twice.
   vofdem::DemSummary s;

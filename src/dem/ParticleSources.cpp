@@ -120,7 +120,7 @@ void ParticleSources::RadiusRange(PetscReal *rmin, PetscReal *rmax) const {
 
 // Particle `count` of a source is due once the clock has passed its turn: by number, when
 // floor(rate (t - start)) exceeds the count; by mass, when the mass inserted with it would not
-// exceed mass_rate (t - start). Insertion stops at the end time.
+// exceed mass_rate (t - start). Insertion stops at the end time (Apply closes the source).
 bool ParticleSources::Due(const InsertionSource &s, PetscReal t) const {
   if (t < s.start || t < s.retryAt) return false;
   const PetscReal span = std::min(t, s.end) - s.start;
@@ -154,8 +154,21 @@ PetscErrorCode ParticleSources::NeedsChange(PetscReal t, const ParticleSwarm &sw
 PetscErrorCode ParticleSources::Apply(PetscReal t, ParticleSwarm &swarm, ContactHistory *springs, PetscReal rMax) {
   PetscFunctionBeginUser;
   if (!boxes_.empty()) PetscCall(Delete(swarm, springs));
-  for (auto &s : sources_)
+  for (auto &s : sources_) {
     if (Due(s, t)) PetscCall(Insert(t, s, swarm, rMax));
+    // The first rebuild after the end time inserts what was due by then and closes the source
+    // (retryAt, saved with the counters): what a full region held back is not inserted later,
+    // and the shortfall is said once.
+    if (t > s.end && s.retryAt < PETSC_MAX_REAL) {
+      s.retryAt = PETSC_MAX_REAL;
+      if (s.blocked && s.rate > 0 && (PetscReal)s.count < std::floor(s.rate * (s.end - s.start)))
+        PetscCall(PetscPrintf(comm_, "dem: insertion '%s' ended at t = %g s with %" PetscInt64_FMT " of %.0f particles: its region was full %" PetscInt64_FMT " times (a larger region or a lower rate)\n",
+                              s.name.c_str(), (double)s.end, s.count, (double)std::floor(s.rate * (s.end - s.start)), s.blocked));
+      if (s.blocked && s.rate == 0 && s.mass < s.massRate * (s.end - s.start) - MassOf(s, s.sizes.Mean()))
+        PetscCall(PetscPrintf(comm_, "dem: insertion '%s' ended at t = %g s with %g of %g kg: its region was full %" PetscInt64_FMT " times (a larger region or a lower rate)\n", s.name.c_str(),
+                              (double)s.end, (double)s.mass, (double)(s.massRate * (s.end - s.start)), s.blocked));
+    }
+  }
   PetscFunctionReturn(0);
 }
 
