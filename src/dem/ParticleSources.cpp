@@ -43,7 +43,7 @@ PetscErrorCode ParticleSources::SetFromOptions(OptionReader &opt, MPI_Comm comm,
     PetscCall(opt.Real(o("velocity_spread").c_str(), "Random part of the initial velocity: each component uniform in [-spread, spread]", "m/s", &s.spread,
                        RealRange::NonNegative()));
     PetscCall(opt.Real(o("start").c_str(), "Time insertion starts", "s", &s.start, RealRange::NonNegative()));
-    PetscCall(opt.Real(o("end").c_str(), "Time insertion ends (default: never)", "s", &s.end, RealRange::NonNegative()));
+    PetscCall(opt.Real(o("end").c_str(), "Time insertion ends; what a full region held back by then is not inserted later (default: never)", "s", &s.end, RealRange::NonNegative()));
     if (!(s.end > s.start)) VofdemInputError(comm, "option -dem_insert_%s_end: %g s is not after the start %g s", n.c_str(), (double)s.end, (double)s.start);
     PetscCall(opt.Int(o("attempts").c_str(), "Candidate centres per particle before a round gives up (the slot is full; retried one particle period later)",
                       &s.attempts, 1));
