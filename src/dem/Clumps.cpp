@@ -92,9 +92,26 @@ void QuatStep(const PetscReal q[4], const PetscReal theta[3], PetscReal out[4]) 
   for (int k = 0; k < 4; ++k) out[k] = r[k] / n;
 }
 
-// Body-frame angular velocity I^-1 R(q)^T L.
-void BodyOmega(const PetscReal q[4], const PetscReal I[3], const PetscReal L[3], PetscReal wb[3]) {
-  rigid::QuatRotateInverse(q, L, wb);
+// R(q) of a unit quaternion, row-major: a clump's members are turned by one matrix instead of a
+// quaternion product each (the kick is most of a clump step).
+void RotationMatrix(const PetscReal q[4], PetscReal R[9]) {
+  const PetscReal w = q[0], x = q[1], y = q[2], z = q[3];
+  R[0] = 1 - 2 * (y * y + z * z), R[1] = 2 * (x * y - w * z), R[2] = 2 * (x * z + w * y);
+  R[3] = 2 * (x * y + w * z), R[4] = 1 - 2 * (x * x + z * z), R[5] = 2 * (y * z - w * x);
+  R[6] = 2 * (x * z - w * y), R[7] = 2 * (y * z + w * x), R[8] = 1 - 2 * (x * x + y * y);
+}
+
+void Apply(const PetscReal R[9], const PetscReal v[3], PetscReal out[3]) {
+  for (int i = 0; i < 3; ++i) out[i] = R[3 * i] * v[0] + R[3 * i + 1] * v[1] + R[3 * i + 2] * v[2];
+}
+
+void ApplyTranspose(const PetscReal R[9], const PetscReal v[3], PetscReal out[3]) {
+  for (int i = 0; i < 3; ++i) out[i] = R[i] * v[0] + R[3 + i] * v[1] + R[6 + i] * v[2];
+}
+
+// Body-frame angular velocity I^-1 R^T L.
+void BodyOmega(const PetscReal R[9], const PetscReal I[3], const PetscReal L[3], PetscReal wb[3]) {
+  ApplyTranspose(R, L, wb);
   for (int d = 0; d < 3; ++d) wb[d] /= I[d];
 }
 
@@ -107,6 +124,18 @@ void Clumps::Group(const ParticleArrays &a) const {
   for (PetscInt p = 0; p < a.n; ++p)
     if (a.clump[p] >= 0) members_[a.clump[p]].push_back(p);
   for (auto it = members_.begin(); it != members_.end();) it = it->second.empty() ? members_.erase(it) : std::next(it);
+  Flatten();
+}
+
+void Clumps::Flatten() const {
+  order_.clear(), start_.assign(1, 0);
+  size_t widest = 0;
+  for (const auto &kv : members_) {
+    order_.insert(order_.end(), kv.second.begin(), kv.second.end());
+    start_.push_back((PetscInt)order_.size());
+    widest = std::max(widest, kv.second.size());
+  }
+  if (scratch_.size() < 3 * widest) scratch_.resize(3 * widest);
 }
 
 PetscErrorCode Clumps::SetUp(const ParticleArrays &a, const std::vector<PetscReal> &typeDensity, const PetscReal gravity[3], PetscInt *count) {
@@ -188,6 +217,7 @@ PetscErrorCode Clumps::SetUp(const ParticleArrays &a, const std::vector<PetscRea
       for (int d = 0; d < 3; ++d) a.v[3 * p + d] = V[d] + wxr[d], a.omega[3 * p + d] = w[d];
     }
   }
+  Flatten();  // the members sorted by id above
   any_ = *count > 0;
   PetscFunctionReturn(0);
 }
@@ -195,50 +225,57 @@ PetscErrorCode Clumps::SetUp(const ParticleArrays &a, const std::vector<PetscRea
 void Clumps::Kick(const ParticleArrays &a, PetscReal dt, bool drift) const {
   if (!any_) return;
   Group(a);
-  for (const auto &kv : members_) {
-    const std::vector<PetscInt> &m = kv.second;
-    const PetscInt               p0 = m[0];
-    const PetscReal             *g = &a.rigid[kRigidWidth * p0], *q = g + rigid::kQ, *I = g + rigid::kInertia, M = g[rigid::kMass];
-    PetscReal                    F[3] = {0, 0, 0}, T[3] = {0, 0, 0}, rb[3], c[3], V[3], L[3], wb[3], Lb[3];
-    for (PetscInt p : m) {
+  PetscReal *rb = scratch_.data();  // R b_k of each member of the clump at hand
+  for (size_t cl = 0; cl + 1 < start_.size(); ++cl) {
+    const PetscInt  *m = &order_[start_[cl]], n = start_[cl + 1] - start_[cl], p0 = m[0];
+    const PetscReal *g = &a.rigid[kRigidWidth * p0], *I = g + rigid::kInertia, M = g[rigid::kMass];
+    const PetscReal  q[4] = {g[rigid::kQ], g[rigid::kQ + 1], g[rigid::kQ + 2], g[rigid::kQ + 3]};
+    PetscReal        R[9], F[3] = {0, 0, 0}, T[3] = {0, 0, 0}, c[3], V[3], L[3], wb[3], Lb[3];
+    RotationMatrix(q, R);
+    for (PetscInt k = 0; k < n; ++k) {
+      const PetscInt p = m[k];
       // The member's weight m_k g is its share of M g, which acts at the centroid: no torque.
       const PetscReal fc[3] = {a.f[3 * p] - a.mass[p] * gravity_[0], a.f[3 * p + 1] - a.mass[p] * gravity_[1], a.f[3 * p + 2] - a.mass[p] * gravity_[2]};
-      rigid::QuatRotate(q, &a.rigid[kRigidWidth * p + rigid::kBody], rb);
-      Cross(rb, fc, c);
+      Apply(R, &a.rigid[kRigidWidth * p + rigid::kBody], &rb[3 * k]);
+      Cross(&rb[3 * k], fc, c);
       for (int d = 0; d < 3; ++d) F[d] += a.f[3 * p + d], T[d] += a.torque[3 * p + d] + c[d];
     }
     // The body's velocity and angular momentum, from its first member.
-    rigid::QuatRotate(q, &a.rigid[kRigidWidth * p0 + rigid::kBody], rb);
     Cross(&a.omega[3 * p0], rb, c);
     for (int d = 0; d < 3; ++d) V[d] = a.v[3 * p0 + d] - c[d] + 0.5 * dt * F[d] / M;
-    rigid::QuatRotateInverse(q, &a.omega[3 * p0], wb);
+    ApplyTranspose(R, &a.omega[3 * p0], wb);
     for (int d = 0; d < 3; ++d) Lb[d] = I[d] * wb[d];
-    rigid::QuatRotate(q, Lb, L);
+    Apply(R, Lb, L);
     for (int d = 0; d < 3; ++d) L[d] += 0.5 * dt * T[d];
-    PetscReal qn[4] = {q[0], q[1], q[2], q[3]};
+    PetscReal qn[4] = {q[0], q[1], q[2], q[3]}, Rn[9];
     if (drift) {
-      PetscReal th[3], qm[4];
-      BodyOmega(q, I, L, wb);
+      PetscReal th[3], qm[4], Rm[9];
+      BodyOmega(R, I, L, wb);
       for (int d = 0; d < 3; ++d) th[d] = 0.5 * dt * wb[d];
       QuatStep(q, th, qm);
-      BodyOmega(qm, I, L, wb);
+      RotationMatrix(qm, Rm);
+      BodyOmega(Rm, I, L, wb);
       for (int d = 0; d < 3; ++d) th[d] = dt * wb[d];
       QuatStep(q, th, qn);
+      RotationMatrix(qn, Rn);
+    } else {
+      for (int k = 0; k < 9; ++k) Rn[k] = R[k];
     }
     PetscReal w[3];
-    BodyOmega(qn, I, L, wb);
-    rigid::QuatRotate(qn, wb, w);
-    PetscReal qo[4] = {q[0], q[1], q[2], q[3]};  // q points into member p0's entry, rewritten below
-    for (PetscInt p : m) {
-      PetscReal *gp = &a.rigid[kRigidWidth * p], ro[3], rn[3];
-      rigid::QuatRotate(qo, gp + rigid::kBody, ro);
-      rigid::QuatRotate(qn, gp + rigid::kBody, rn);
+    BodyOmega(Rn, I, L, wb);
+    Apply(Rn, wb, w);
+    for (PetscInt k = 0; k < n; ++k) {
+      const PetscInt p  = m[k];
+      PetscReal     *gp = &a.rigid[kRigidWidth * p], rn[3];
+      if (drift) Apply(Rn, gp + rigid::kBody, rn);
+      else
+        for (int d = 0; d < 3; ++d) rn[d] = rb[3 * k + d];
       Cross(w, rn, c);
       for (int d = 0; d < 3; ++d) {
-        if (drift) a.x[3 * p + d] += dt * V[d] + rn[d] - ro[d];
+        if (drift) a.x[3 * p + d] += dt * V[d] + rn[d] - rb[3 * k + d];
         a.v[3 * p + d] = V[d] + c[d], a.omega[3 * p + d] = w[d];
       }
-      for (int k = 0; k < 4; ++k) gp[rigid::kQ + k] = qn[k];
+      for (int k4 = 0; k4 < 4; ++k4) gp[rigid::kQ + k4] = qn[k4];
     }
   }
 }
@@ -247,8 +284,8 @@ void Clumps::Energy(const ParticleArrays &a, PetscReal *translational, PetscReal
   *translational = *rotational = 0;
   if (!any_) return;
   Group(a);
-  for (const auto &kv : members_) {
-    const PetscInt   p0 = kv.second[0];
+  for (size_t cl = 0; cl + 1 < start_.size(); ++cl) {
+    const PetscInt   p0 = order_[start_[cl]];
     const PetscReal *g = &a.rigid[kRigidWidth * p0], *q = g + rigid::kQ, *I = g + rigid::kInertia;
     PetscReal        rb[3], c[3], wb[3], V2 = 0;
     rigid::QuatRotate(q, g + rigid::kBody, rb);

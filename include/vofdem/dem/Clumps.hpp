@@ -61,11 +61,16 @@ public:
   void Energy(const ParticleArrays &a, PetscReal *translational, PetscReal *rotational) const;
 
 private:
-  void Group(const ParticleArrays &a) const;  // members_ of each local clump (a cache, hence mutable)
+  void Group(const ParticleArrays &a) const;    // members_ of each local clump (a cache, hence mutable)
+  void Flatten() const;                         // order_ and start_ from members_, in its iteration order
   bool     any_    = false;
   PetscInt shapes_ = 0;
   PetscReal gravity_[3] = {0, 0, 0};
   mutable std::unordered_map<PetscInt64, std::vector<PetscInt>> members_;
+  // The same grouping flat, for the kicks: clump c's members are order_[start_[c] .. start_[c + 1]), its
+  // first member (whose entry the kick reads the body's state from) first; scratch_ holds R b_k per member.
+  mutable std::vector<PetscInt>  order_, start_;
+  mutable std::vector<PetscReal> scratch_;
   mutable bool     stale_    = true;
   mutable PetscInt groupedN_ = -1;  // a.n when grouped: a changed count regroups even without Invalidate()
 };
