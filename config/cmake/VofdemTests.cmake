@@ -15,6 +15,9 @@ set_tests_properties(unit/outputcompare PROPERTIES LABELS "quick;unit")
 # -stop_kinetic_energy: a DEM run ends once its particles are at rest; a signal-stopped run is not analysed.
 add_test(NAME dem/stop_at_rest COMMAND ${VOFDEM_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/test/dem/test_stop_at_rest.py $<TARGET_FILE:vofdem_app>)
 set_tests_properties(dem/stop_at_rest PROPERTIES LABELS "quick;dem" PROCESSORS 2 TIMEOUT 300)
+# -dem_insert_<name>_every: insertion in batches, fewer rebuilds, nothing lost.
+add_test(NAME dem/insert_batches COMMAND ${VOFDEM_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/test/dem/test_insert_batches.py $<TARGET_FILE:vofdem_app>)
+set_tests_properties(dem/insert_batches PROPERTIES LABELS "quick;dem" PROCESSORS 2 TIMEOUT 300)
 # A random fill and an insertion region across periodic x and y: centres up to the faces, no overlap through them.
 add_test(NAME dem/periodic_seam COMMAND ${VOFDEM_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/test/dem/test_periodic_seam.py $<TARGET_FILE:vofdem_app>)
 set_tests_properties(dem/periodic_seam PROPERTIES LABELS "quick;dem" PROCESSORS 2 TIMEOUT 300)

@@ -36,6 +36,7 @@ struct InsertionSource {
   PetscReal        regionVelocity[3] = {0, 0, 0};               // m/s: the region moves (a feed slot on a spreader) from `start`
   PetscReal        now[6] = {0, 0, 0, 0, 0, 0};                 // the region at the current insertion (lower, upper)
   PetscReal        start = 0, end = PETSC_MAX_REAL;             // s
+  PetscReal        every = 0;                                   // s: batches (NeedsChange); 0: each particle when due
   PetscInt         attempts = 100;                              // candidate centres per particle and round
   PetscInt         type = 0;                                    // particle type (index into -dem_types)
   PetscReal        density = 0;                                 // kg/m^3, the type's
