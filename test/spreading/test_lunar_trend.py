@@ -7,8 +7,8 @@ whole; the packing falls in seed 002's order, by the cutting rings (the seed's m
 the roughness rises in seed 002's order, as the arithmetic mean deviation of the surface over the window's
 ray grid (Sa by mean |h - mean h|: Ra's areal form, 19,200 rays). Ra on the centre line alone (500 rays)
 is printed, not checked: on the reduced bed (2-4 grains across a ring) it held the order in 3 of 4 seeds
-(results/lunar-speed.md). Coordination rises with van der Waals here (a softened spring keeps bonded
-grains pressed), against the seed's: printed, not checked.
+(results/lunar-speed.md). Coordination rises with van der Waals here (the thin layer: without adhesion its
+grains rest side by side on the substrate), against the seed's: printed, not checked.
 Usage: test_lunar_trend.py VOFDEM [--check-all] (--check-all checks every ordering of seed 002)"""
 import csv
 import os
