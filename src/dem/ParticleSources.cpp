@@ -14,13 +14,20 @@ namespace vofdem {
 PetscErrorCode ParticleSources::SetFromOptions(OptionReader &opt, MPI_Comm comm, PetscReal radius, const std::vector<std::string> &types,
                                                const std::vector<PetscReal> &densities) {
   std::string names;
+  PetscBool   help = PETSC_FALSE;
 
   PetscFunctionBeginUser;
+  PetscCall(PetscOptionsHasHelp(nullptr, &help));
   comm_    = comm;
   PetscCall(opt.String("-inserts", "Names of insertion sources, comma-separated; each is set by -dem_insert_<name>_* options", &names));
   sources_.clear();
   PetscCall(library_.SetFromOptions(opt, comm));  // before the sources that name its templates
-  for (const auto &n : SplitList(names)) {
+  std::vector<std::string> list = SplitList(names);
+  // -help lists every source's options: for the sources named, without the checks that would stop the listing, or
+  // once for a source called NAME.
+  const bool dummy = help && list.empty();
+  if (dummy) list = {"NAME"};
+  for (const auto &n : list) {
     if (n.empty() || !std::all_of(n.begin(), n.end(), [](char c) { return std::isalnum((unsigned char)c); }))
       VofdemInputError(comm, "option -dem_inserts: '%s' is not a name (letters and digits only)", n.c_str());
     for (const auto &s : sources_)
@@ -32,10 +39,10 @@ PetscErrorCode ParticleSources::SetFromOptions(OptionReader &opt, MPI_Comm comm,
     PetscBool         lowerSet = PETSC_FALSE, upperSet = PETSC_FALSE;
     PetscCall(opt.RealVector(o("lower").c_str(), "Lower corner of the region the new centres are drawn in (a slot may be flat)", "m", s.lower, 3, RealRange::Any(), &lowerSet));
     PetscCall(opt.RealVector(o("upper").c_str(), "Upper corner of the region the new centres are drawn in", "m", s.upper, 3, RealRange::Any(), &upperSet));
-    if (!lowerSet || !upperSet) VofdemInputError(comm, "options -dem_insert_%s_lower and -dem_insert_%s_upper: both are needed", n.c_str(), n.c_str());
+    if (!help && (!lowerSet || !upperSet)) VofdemInputError(comm, "options -dem_insert_%s_lower and -dem_insert_%s_upper: both are needed", n.c_str(), n.c_str());
     PetscCall(opt.Real(o("rate").c_str(), "Insertion rate by number", "particles/s", &s.rate, RealRange::NonNegative()));
     PetscCall(opt.Real(o("mass_rate").c_str(), "Insertion rate by mass (instead of -dem_insert_<name>_rate)", "kg/s", &s.massRate, RealRange::NonNegative()));
-    if ((s.rate > 0) == (s.massRate > 0))
+    if (!help && (s.rate > 0) == (s.massRate > 0))
       VofdemInputError(comm, "options -dem_insert_%s_rate and -dem_insert_%s_mass_rate: give exactly one positive rate", n.c_str(), n.c_str());
     PetscCall(opt.RealVector(o("velocity").c_str(), "Initial velocity of the inserted particles", "m/s", s.velocity, 3));
     PetscCall(opt.RealVector(o("region_velocity").c_str(), "Velocity of the region from the start time on (a feed slot moving with a spreader); insertion ends before the region leaves the box",
@@ -46,7 +53,7 @@ PetscErrorCode ParticleSources::SetFromOptions(OptionReader &opt, MPI_Comm comm,
     PetscCall(opt.Real(o("end").c_str(), "Time insertion ends; what a full region held back by then is not inserted later (default: never)", "s", &s.end, RealRange::NonNegative()));
     PetscCall(opt.Real(o("every").c_str(), "Insert in batches: the source asks for a neighbour-list rebuild at most once per this interval, and what "
                        "falls due in between goes in at the next rebuild (0: each particle as soon as it is due, one rebuild each)", "s", &s.every, RealRange::NonNegative()));
-    if (!(s.end > s.start)) VofdemInputError(comm, "option -dem_insert_%s_end: %g s is not after the start %g s", n.c_str(), (double)s.end, (double)s.start);
+    if (!help && !(s.end > s.start)) VofdemInputError(comm, "option -dem_insert_%s_end: %g s is not after the start %g s", n.c_str(), (double)s.end, (double)s.start);
     PetscCall(opt.Int(o("attempts").c_str(), "Candidate centres per particle before a round gives up (the slot is full; retried one particle period later)",
                       &s.attempts, 1));
     PetscCall(s.sizes.SetFromOptions(opt, comm, "insert_" + n + "_", radius));
@@ -57,7 +64,7 @@ PetscErrorCode ParticleSources::SetFromOptions(OptionReader &opt, MPI_Comm comm,
     if (it == types.end()) VofdemInputError(comm, "option -dem_insert_%s_type: no type '%s' in -dem_types", n.c_str(), type.c_str());
     s.type    = (PetscInt)(it - types.begin());
     s.density = densities[s.type];
-    sources_.push_back(s);
+    if (!dummy) sources_.push_back(s);
   }
   PetscBool boxesSet = PETSC_FALSE;
   boxes_.clear();

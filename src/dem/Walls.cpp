@@ -112,7 +112,7 @@ PetscErrorCode WallSet::SetFromOptions(MPI_Comm comm) {
       for (const Wall &w : walls_)
         if (w.name == n) VofdemInputError(comm, "option -dem_walls: the name '%s' is given twice", n.c_str());
       walls_.emplace_back();
-      PetscCall(ReadWall(comm, PetscOptionsObject, n, false, &walls_.back()));
+      PetscCall(ReadWall(comm, PetscOptionsObject, n, help, &walls_.back()));
     }
     // -help lists the per-wall options once, for a wall called NAME.
     if (help && list.empty()) {
