@@ -28,3 +28,6 @@ vofdem_analyze_bad_input(analyze_not_hdf5 "option -analysis_input: '.*typo\\.yam
 add_test(NAME analysis/clumps_run_and_tool COMMAND ${VOFDEM_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/test/analysis/test_clump_analysis.py
          $<TARGET_FILE:vofdem_app> $<TARGET_FILE:vofdem_analyze>)
 set_tests_properties(analysis/clumps_run_and_tool PROPERTIES LABELS "quick;analysis;clumps" PROCESSORS 2 TIMEOUT 300)
+# scripts/calibrate-powder's crossing of the angle and density target curves, on tables of known fields (no run).
+add_test(NAME analysis/calibrate_powder COMMAND ${VOFDEM_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/test/analysis/test_calibrate_powder.py)
+set_tests_properties(analysis/calibrate_powder PROPERTIES LABELS "quick;analysis")
