@@ -98,6 +98,7 @@ with tempfile.TemporaryDirectory() as tmp:
     png = os.path.join(tmp, "c.png")
     rc, pairs, out = calibrate(t, "--angle", "45", "--density", "0.575", "--plot", png)
     check(rc == 2 and not pairs and "angle" in out and "below the target 45" in out, "an unbracketed target exits 2 and says the angle stays below 45: rc %d" % rc, out)
+    check("at mu_r 0.063 the angle target is reached at gamma none" in out, "the unbracketed report says, per mu_r, where each target is reached", out)
     check(os.path.getsize(png) > 10000 if os.path.exists(png) else False, "the plot is written: %s" % png)
 
     # Bad table: one line naming the file and the columns.
