@@ -29,12 +29,14 @@ def check(ok, what, detail=""):
         print(detail)
 
 
-def table(path, mus, gammas, angle, density):
+def table(path, mus, gammas, angle, density, holes=()):
     with open(path, "w", newline="") as f:
         w = csv.writer(f)
         w.writerow(["mu_r", "gamma", "angle_height", "angle_flank", "density"])
         for m in mus:
             for g in gammas:
+                if (m, g) in holes:
+                    continue
                 w.writerow(["%.17g" % m, "%.17g" % g, "%.17g" % angle(m, g), "%.17g" % (angle(m, g) - 5), "%.17g" % density(m, g)])
 
 
@@ -100,6 +102,17 @@ with tempfile.TemporaryDirectory() as tmp:
     check(rc == 2 and not pairs and "angle" in out and "below the target 45" in out, "an unbracketed target exits 2 and says the angle stays below 45: rc %d" % rc, out)
     check("at mu_r 0.063 the angle target is reached at gamma none" in out, "the unbracketed report says, per mu_r, where each target is reached", out)
     check(os.path.getsize(png) > 10000 if os.path.exists(png) else False, "the plot is written: %s" % png)
+
+    # A grid with a hole (one point not finished): the cells around it are skipped, the others still give the crossing,
+    # and the row with the hole is reported from its finished points.
+    grid_mu, grid_g = [0.0315, 0.063, 0.126], [1e-4, 1.5e-4, 3e-4, 6e-4]
+    table(t, grid_mu, grid_g, ang, den, holes=[(0.0315, 1.5e-4)])
+    rc, pairs, out = calibrate(t, "--angle", "%.17g" % ang(0.09, 5e-4), "--density", "%.17g" % den(0.09, 5e-4), "--plot", png)
+    ok = rc == 0 and len(pairs) == 1 and abs(pairs[0][0] / 0.09 - 1) < 1e-4 and abs(pairs[0][1] / 5e-4 - 1) < 1e-4
+    check(ok, "a grid with a hole still finds the crossing in its complete cells: %s" % pairs, out if not ok else "")
+    rc, pairs, out = calibrate(t, "--angle", "45", "--density", "0.575", "--plot", png)
+    check(rc == 2 and "at mu_r 0.0315 the angle target is reached at gamma none" in out,
+          "the row with the hole is reported from its three finished points: rc %d" % rc, out)
 
     # Bad table: one line naming the file and the columns.
     with open(t, "w") as f:
