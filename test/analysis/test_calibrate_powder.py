@@ -114,6 +114,11 @@ with tempfile.TemporaryDirectory() as tmp:
     check(rc == 2 and "at mu_r 0.0315 the angle target is reached at gamma none" in out,
           "the row with the hole is reported from its three finished points: rc %d" % rc, out)
 
+    # A flat density field (every point the same) is plotted too, not a traceback.
+    table(t, [0.0315, 0.063], [1.5e-4, 3e-4], ang, lambda m, g: 0.57)
+    rc, pairs, out = calibrate(t, "--angle", "32", "--density", "0.572", "--plot", png)
+    check(rc == 2 and "Traceback" not in out and "density target at none" in out, "a flat density field exits 2 with its report: rc %d" % rc, out)
+
     # Bad table: one line naming the file and the columns.
     with open(t, "w") as f:
         f.write("mu_r,gamma,density\n0.03,1e-4,0.6\n")
