@@ -3,8 +3,9 @@ static const char help[] = "Insertion streams and a deletion box. Source a feeds
                            "particles fall into a deletion box at the bottom. Checks: a's count is floor(rate x time) exactly at\n"
                            "every check, b's mass is within one particle mass below mass_rate x time, source c (a region too small\n"
                            "for its rate) stops at its end time short of rate x time and inserts nothing owed after it, new ids\n"
-                           "continue after the fill's, and the books balance: initial + inserted - deleted = present, in number\n"
-                           "and in mass.\n\n";
+                           "continue after the fill's, the books balance: initial + inserted - deleted = present, in number\n"
+                           "and in mass, and after every step no centre is inside the deletion box (a particle goes the step it\n"
+                           "enters, not at the next neighbour-list rebuild).\n\n";
 
 #include "vofdem/core/Runtime.hpp"
 #include "vofdem/core/Simulation.hpp"
@@ -56,8 +57,18 @@ static PetscErrorCode Run() {
   const PetscReal mMaxB = mass * 2.7e-11;                                              // heaviest of source b
   PetscReal       next  = 0.001;
   PetscInt64      heldC = -1;  // c's count at the first check after its end
+  PetscInt        lingered = 0, stepsInBox = 0;  // centres inside the deletion box after a step, summed; steps with any
   while (sim.Time() < 0.03) {
     PetscCall(sim.Step());
+    {
+      vofdem::ParticleArrays a;
+      PetscInt               in = 0, all;
+      PetscCall(dem->Particles().GetArrays(&a));
+      for (PetscInt p = 0; p < a.n; ++p) in += a.x[3 * p + 2] <= 0.003;  // the box spans the whole x and y
+      PetscCall(dem->Particles().RestoreArrays(&a));
+      PetscCallMPI(MPI_Allreduce(&in, &all, 1, MPIU_INT, MPI_SUM, PETSC_COMM_WORLD));
+      lingered += all, stepsInBox += all > 0;
+    }
     if (sim.Time() < next && sim.Time() < 0.03) continue;
     next += 0.003;
     vofdem::DemSummary s;
@@ -90,6 +101,8 @@ static PetscErrorCode Run() {
                         gone ? "yes" : "no", (double)s.massInserted, (int)(s0.particles + s.inserted - 1), foundLast ? "present" : "deleted",
                         (int)(s0.particles + s.inserted), foundNext ? "FAIL" : "ok"));
   failures += !gone + (foundNext == PETSC_TRUE);
+  PetscCall(PetscPrintf(PETSC_COMM_WORLD, "centres left inside the deletion box after a step: %d (in %d steps) %s\n", (int)lingered, (int)stepsInBox, lingered ? "FAIL" : "ok"));
+  failures += lingered > 0;
   PetscCall(sim.Destroy());
   if (failures) PetscCall(PetscPrintf(PETSC_COMM_WORLD, "FAILED: %d checks\n", (int)failures));
   PetscFunctionReturn(failures ? PETSC_ERR_NOT_CONVERGED : 0);

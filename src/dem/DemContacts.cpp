@@ -110,6 +110,7 @@ PetscErrorCode Dem::Rebuild() {
       }
     }
   wallSet_.BuildCandidates(a, skin_ + adhesionRange_, springs_);  // -dem_walls, same reach
+  PetscCall(sources_.FindDeletionCandidates(a, 0.5 * skin_));     // Step(): no particle moves farther before a rebuild
   PetscCall(swarm_.RestoreArrays(&a));
   springs_.clear();
   ++rebuilds_;

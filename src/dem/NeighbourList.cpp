@@ -32,15 +32,28 @@ PetscErrorCode NeighbourList::Build(PetscInt nLocal, const PetscReal *xLocal, co
   auto cellOf = [&](const PetscReal *x, PetscInt c[3]) {
     for (int d = 0; d < 3; ++d) c[d] = std::min(nc[d] - 1, std::max<PetscInt>(0, (PetscInt)((x[d] - origin[d]) * inv[d])));
   };
+  // Only the block of that lattice that holds particles is stored: a dilute scene (a pour, a stream
+  // into a box) would otherwise clear and sum some 300,000 empty cells at every rebuild. The cells are
+  // the same, so the lists are too, pair for pair and in the same order.
+  PetscInt cmin[3] = {0, 0, 0}, cmax[3] = {0, 0, 0}, ns[3];
+  for (PetscInt p = 0; p < n; ++p) {
+    PetscInt c[3];
+    cellOf(pos(p), c);
+    for (int d = 0; d < 3; ++d) {
+      cmin[d] = p ? std::min(cmin[d], c[d]) : c[d];
+      cmax[d] = p ? std::max(cmax[d], c[d]) : c[d];
+    }
+  }
+  for (int d = 0; d < 3; ++d) ns[d] = cmax[d] - cmin[d] + 1;
   // Counting sort of particles by cell (CSR: cellStart_, order_).
-  const PetscInt ncell = nc[0] * nc[1] * nc[2];
+  const PetscInt ncell = ns[0] * ns[1] * ns[2];
   cellStart_.assign(ncell + 1, 0);
   cellOf_.resize(n);
   order_.resize(n);
   for (PetscInt p = 0; p < n; ++p) {
     PetscInt c[3];
     cellOf(pos(p), c);
-    cellOf_[p] = c[0] + nc[0] * (c[1] + nc[1] * c[2]);
+    cellOf_[p] = (c[0] - cmin[0]) + ns[0] * ((c[1] - cmin[1]) + ns[1] * (c[2] - cmin[2]));
     ++cellStart_[cellOf_[p] + 1];
   }
   for (PetscInt c = 0; c < ncell; ++c) cellStart_[c + 1] += cellStart_[c];
@@ -69,12 +82,12 @@ PetscErrorCode NeighbourList::Build(PetscInt nLocal, const PetscReal *xLocal, co
     for (int d = 0; d < 3; ++d) span[d] = std::max<PetscInt>(1, (PetscInt)std::ceil((ri + rMax) * inv[d]));
     // The cells of a row along x are consecutive, and so are their particles in order_: one range per
     // row (the per-cell loop over mostly empty small cells was most of Build's time).
-    const PetscInt x0 = std::max<PetscInt>(0, c[0] - span[0]), x1 = std::min(nc[0] - 1, c[0] + span[0]);
+    const PetscInt x0 = std::max(cmin[0], c[0] - span[0]) - cmin[0], x1 = std::min(cmax[0], c[0] + span[0]) - cmin[0];
     for (PetscInt dz = -span[2]; dz <= span[2]; ++dz)
       for (PetscInt dy = -span[1]; dy <= span[1]; ++dy) {
         const PetscInt cy = c[1] + dy, cz = c[2] + dz;
-        if (cy < 0 || cz < 0 || cy >= nc[1] || cz >= nc[2]) continue;
-        const PetscInt row = nc[0] * (cy + nc[1] * cz);
+        if (cy < cmin[1] || cz < cmin[2] || cy > cmax[1] || cz > cmax[2]) continue;
+        const PetscInt row = ns[0] * ((cy - cmin[1]) + ns[1] * (cz - cmin[2]));
         for (PetscInt k = cellStart_[row + x0], end = cellStart_[row + x1 + 1]; k < end; ++k) {
           const PetscInt j = order_[k];
           if (j < nLocal && j <= i) continue;  // each local pair once; ghost pairs from the local side

@@ -154,13 +154,42 @@ PetscErrorCode ParticleSources::NeedsChange(PetscReal t, const ParticleSwarm &sw
     if (Due(s, tb)) *change = PETSC_TRUE;  // the same on every rank: no communication
   }
   if (*change || boxes_.empty()) PetscFunctionReturn(0);
+  if (candidatesKnown_ && !candidatesAnywhere_) PetscFunctionReturn(0);  // no rank has a particle that can reach a box
   ParticleArrays a;
   int            local = 0, any;
   PetscCall(swarm.GetArrays(&a));
-  for (PetscInt p = 0; p < a.n && !local; ++p) local = InDeletionBox(&a.x[3 * p]);
+  if (candidatesKnown_)
+    for (size_t k = 0; k < deletionCandidates_.size() && !local; ++k) local = InDeletionBox(&a.x[3 * deletionCandidates_[k]]);
+  else
+    for (PetscInt p = 0; p < a.n && !local; ++p) local = InDeletionBox(&a.x[3 * p]);
   PetscCall(swarm.RestoreArrays(&a));
   PetscCallMPI(MPI_Allreduce(&local, &any, 1, MPI_INT, MPI_LOR, comm_));
   *change = (PetscBool)any;
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode ParticleSources::FindDeletionCandidates(const ParticleArrays &a, PetscReal reach) {
+  int local, any;
+
+  PetscFunctionBeginUser;
+  deletionCandidates_.clear();
+  candidatesKnown_ = false;
+  if (boxes_.empty()) PetscFunctionReturn(0);
+  // Each box grown by the reach along every axis holds the reach's ball around it (a margin for round-off).
+  const PetscReal m = reach * (1 + 1e-9) + 1e-15;
+  for (PetscInt p = 0; p < a.n; ++p) {
+    const PetscReal *x = &a.x[3 * p];
+    for (size_t b = 0; b < boxes_.size(); b += 6)
+      if (x[0] >= boxes_[b] - m && x[0] <= boxes_[b + 3] + m && x[1] >= boxes_[b + 1] - m && x[1] <= boxes_[b + 4] + m && x[2] >= boxes_[b + 2] - m &&
+          x[2] <= boxes_[b + 5] + m) {
+        deletionCandidates_.push_back(p);
+        break;
+      }
+  }
+  local = !deletionCandidates_.empty();
+  PetscCallMPI(MPI_Allreduce(&local, &any, 1, MPI_INT, MPI_LOR, comm_));
+  candidatesAnywhere_ = any;
+  candidatesKnown_    = true;
   PetscFunctionReturn(0);
 }
 

@@ -72,6 +72,11 @@ public:
   void RadiusRange(PetscReal *rmin, PetscReal *rmax) const;
   // Collective: whether Apply() at time t would insert or delete a particle.
   PetscErrorCode NeedsChange(PetscReal t, const ParticleSwarm &swarm, PetscBool *change) const;
+  // Collective, at the end of each rebuild (local indices final): the local particles that can reach a
+  // deletion box before the next rebuild, when none moves farther than `reach` from where it is now (the
+  // half skin of the rebuild rule). NeedsChange then looks at those only, and skips its reduction when no
+  // rank has any: the same steps delete the same particles as a scan of all.
+  PetscErrorCode FindDeletionCandidates(const ParticleArrays &a, PetscReal reach);
   // Collective: deletes the particles in deletion boxes (and their springs), then inserts what the
   // sources owe at time t. rMax bounds the radius of every particle present.
   PetscErrorCode Apply(PetscReal t, ParticleSwarm &swarm, ContactHistory *springs, PetscReal rMax);
@@ -123,6 +128,9 @@ private:
   const Grid                  *grid_ = nullptr;
   std::vector<InsertionSource> sources_;
   std::vector<PetscReal>       boxes_;  // deletion boxes: xlo,ylo,zlo,xhi,yhi,zhi each
+  std::vector<PetscInt>        deletionCandidates_;           // local indices (FindDeletionCandidates)
+  bool                         candidatesKnown_    = false;   // else NeedsChange scans every particle
+  bool                         candidatesAnywhere_ = true;    // some rank has candidates
   PetscInt64                   nextId_ = 0, inserted_ = 0, deleted_ = 0;
   PetscReal                    massInserted_ = 0, massDeleted_ = 0;
   std::vector<PetscReal>       near_, newParticles_;  // work arrays, reused
