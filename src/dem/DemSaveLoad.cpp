@@ -344,6 +344,7 @@ PetscErrorCode Dem::Load(PetscViewer viewer) {
     PetscCall(halo_.Restore(a, a.omega, ranks, images, send));
     PeriodicImages::PairImages(list_, a.n, halo_.image.data(), &pairImage_);  // the seam shifts of the pairs
     JkrPairConstants();
+    PetscCall(sources_.FindDeletionCandidates(a, 0.5 * skin_));  // from the saved reference positions, as Rebuild() would
     PetscCall(swarm_.RestoreArrays(&a));
   } else {
     // Springs of touching contacts by id pair, for the contacts of particles this rank now holds;

@@ -176,9 +176,11 @@ PetscErrorCode ParticleSources::FindDeletionCandidates(const ParticleArrays &a, 
   candidatesKnown_ = false;
   if (boxes_.empty()) PetscFunctionReturn(0);
   // Each box grown by the reach along every axis holds the reach's ball around it (a margin for round-off).
+  // Around the reference positions, from which the rebuild rule measures the motion (after a rebuild they
+  // are the positions; a checkpoint loaded on the same ranks restores them from between two rebuilds).
   const PetscReal m = reach * (1 + 1e-9) + 1e-15;
   for (PetscInt p = 0; p < a.n; ++p) {
-    const PetscReal *x = &a.x[3 * p];
+    const PetscReal *x = &a.reference[3 * p];
     for (size_t b = 0; b < boxes_.size(); b += 6)
       if (x[0] >= boxes_[b] - m && x[0] <= boxes_[b + 3] + m && x[1] >= boxes_[b + 1] - m && x[1] <= boxes_[b + 4] + m && x[2] >= boxes_[b + 2] - m &&
           x[2] <= boxes_[b + 5] + m) {

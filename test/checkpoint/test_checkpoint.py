@@ -23,7 +23,7 @@
                         zero exit on every rank (test/badinput/expect-error); -restart latest skips a
                         corrupted newest file and says so; a write that fails mid-run is one error line
                         and leaves the previous checkpoint valid.
-SCENE is dem, demclumps, demperiodic, dembalance, demfunnel, flow, vof, vofimplicit, vofopen, coupled, coupledvof or coupledwet (the coupled ones: bitwise only). Usage: test_checkpoint.py VOFDEM CASE ARGS..."""
+SCENE is dem, demclumps, demperiodic, dembalance, demfunnel, demdelete, flow, vof, vofimplicit, vofopen, coupled, coupledvof or coupledwet (the coupled ones: bitwise only). Usage: test_checkpoint.py VOFDEM CASE ARGS..."""
 import glob
 import os
 import re
@@ -75,6 +75,13 @@ SCENES = {
                   "-dem_wall_funnel_type stl -dem_restitution 0.1 -dem_friction 0.5 -seed 7".split() +
                   ["-dem_wall_funnel_file", os.path.join(ROOT, "config", "scenes", "geometry", "funnel-1to20-outlet400um.stl")],
                   500, (500, 100)),
+    # 60 spheres thrown down into a deletion box: from step ~70 on one goes every few steps. Each must go the
+    # step its centre enters the box, also right after a restart, where the particles that can reach the box
+    # before the next rebuild (ParticleSources::FindDeletionCandidates) come from the loaded state, not from the
+    # fill the set-up made before loading it: its monitor, every step, must match the uninterrupted run's.
+    "demdelete": ("-physics dem -grid_cells 4,4,4 -grid_upper 0.01,0.01,0.01 -dem_radius 5e-4 -dem_fill_count 60 -dem_fill_mode random "
+                  "-dem_fill_lower 0,0,0.0025 -dem_fill_upper 0.01,0.01,0.007 -dem_fill_velocity 0,0,-2 -dem_fill_velocity_spread 0.3 -dem_skin 1e-3 "
+                  "-dem_delete_boxes 0,0,0,0.01,0.01,0.0015 -gravity 0,0,-9.81 -seed 7".split(), 170, (170, 50)),
     # F2 at 32 x 32 x 4: the adaptive time step, AB2 history and preconditioner reuse all matter.
     "flow": (["-options_file_yaml", os.path.join(ROOT, "config", "scenes", "cavity-re100.yaml")] +
              "-grid_cells 32,32,4 -grid_upper 1,1,0.125".split(), 20, (20, 20)),
@@ -121,7 +128,7 @@ def scene_args(scene, ranks):
     # On 2 ranks the DEM box is split across x, so that both ranks own particles (split along the
     # height, one rank would hold them all); -grid_ranks may differ between a run and its restart.
     extra = ["-grid_ranks", "2,1,1"] if scene == "dem" and ranks == 2 else ["-grid_ranks", "1,1,2"] if scene == "dembalance" and ranks == 2 else []
-    return SCENES[scene][0] + extra + QUIET
+    return SCENES[scene][0] + extra + QUIET + (["-monitor_every", "1"] if scene == "demdelete" else [])
 
 
 def run(exe, ranks, scene, args, expect_ok=True):
@@ -137,7 +144,7 @@ def case_bitwise(exe, scene, ranks):
     n = SCENES[scene][1]
     tmp = tempfile.mkdtemp(prefix="vofdem-ckpt-")
     a, b, c = (os.path.join(tmp, x) for x in "abc")
-    index, every = {"dem": ("particles.xmf", "-dem_output_every"), "demclumps": ("particles.xmf", "-dem_output_every"), "dembalance": ("particles.xmf", "-dem_output_every"), "demfunnel": ("particles.xmf", "-dem_output_every"), "flow": ("flow.xmf", "-flow_output_every"), "vof": ("flow.xmf", "-flow_output_every"), "vofimplicit": ("flow.xmf", "-flow_output_every"),
+    index, every = {"dem": ("particles.xmf", "-dem_output_every"), "demclumps": ("particles.xmf", "-dem_output_every"), "dembalance": ("particles.xmf", "-dem_output_every"), "demfunnel": ("particles.xmf", "-dem_output_every"), "demdelete": ("particles.xmf", "-dem_output_every"), "flow": ("flow.xmf", "-flow_output_every"), "vof": ("flow.xmf", "-flow_output_every"), "vofimplicit": ("flow.xmf", "-flow_output_every"),
                     "vofopen": ("flow.xmf", "-flow_output_every"),
                     "coupled": ("particles.xmf", "-dem_output_every"), "coupledvof": ("particles.xmf", "-dem_output_every"),
                     "coupledwet": ("particles.xmf", "-dem_output_every")}[scene]

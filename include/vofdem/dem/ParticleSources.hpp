@@ -72,10 +72,10 @@ public:
   void RadiusRange(PetscReal *rmin, PetscReal *rmax) const;
   // Collective: whether Apply() at time t would insert or delete a particle.
   PetscErrorCode NeedsChange(PetscReal t, const ParticleSwarm &swarm, PetscBool *change) const;
-  // Collective, at the end of each rebuild (local indices final): the local particles that can reach a
-  // deletion box before the next rebuild, when none moves farther than `reach` from where it is now (the
-  // half skin of the rebuild rule). NeedsChange then looks at those only, and skips its reduction when no
-  // rank has any: the same steps delete the same particles as a scan of all.
+  // Collective, at the end of each rebuild (local indices final) and after a same-ranks Load: the local
+  // particles that can reach a deletion box before the next rebuild, when none moves farther than `reach`
+  // from its reference position (the half skin of the rebuild rule). NeedsChange then looks at those only,
+  // and skips its reduction when no rank has any: the same steps delete the same particles as a scan of all.
   PetscErrorCode FindDeletionCandidates(const ParticleArrays &a, PetscReal reach);
   // Collective: deletes the particles in deletion boxes (and their springs), then inserts what the
   // sources owe at time t. rMax bounds the radius of every particle present.
