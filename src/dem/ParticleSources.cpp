@@ -138,9 +138,11 @@ bool ParticleSources::Due(const InsertionSource &s, PetscReal t) const {
   return s.mass + MassOf(s, r) <= s.massRate * span;
 }
 
-bool ParticleSources::InDeletionBox(const PetscReal x[3]) const {
+bool ParticleSources::InDeletionBox(const PetscReal x[3], PetscReal margin) const {
   for (size_t b = 0; b < boxes_.size(); b += 6)
-    if (x[0] >= boxes_[b] && x[0] <= boxes_[b + 3] && x[1] >= boxes_[b + 1] && x[1] <= boxes_[b + 4] && x[2] >= boxes_[b + 2] && x[2] <= boxes_[b + 5]) return true;
+    if (x[0] >= boxes_[b] - margin && x[0] <= boxes_[b + 3] + margin && x[1] >= boxes_[b + 1] - margin && x[1] <= boxes_[b + 4] + margin &&
+        x[2] >= boxes_[b + 2] - margin && x[2] <= boxes_[b + 5] + margin)
+      return true;
   return false;
 }
 
@@ -179,15 +181,8 @@ PetscErrorCode ParticleSources::FindDeletionCandidates(const ParticleArrays &a, 
   // Around the reference positions, from which the rebuild rule measures the motion (after a rebuild they
   // are the positions; a checkpoint loaded on the same ranks restores them from between two rebuilds).
   const PetscReal m = reach * (1 + 1e-9) + 1e-15;
-  for (PetscInt p = 0; p < a.n; ++p) {
-    const PetscReal *x = &a.reference[3 * p];
-    for (size_t b = 0; b < boxes_.size(); b += 6)
-      if (x[0] >= boxes_[b] - m && x[0] <= boxes_[b + 3] + m && x[1] >= boxes_[b + 1] - m && x[1] <= boxes_[b + 4] + m && x[2] >= boxes_[b + 2] - m &&
-          x[2] <= boxes_[b + 5] + m) {
-        deletionCandidates_.push_back(p);
-        break;
-      }
-  }
+  for (PetscInt p = 0; p < a.n; ++p)
+    if (InDeletionBox(&a.reference[3 * p], m)) deletionCandidates_.push_back(p);
   local = !deletionCandidates_.empty();
   PetscCallMPI(MPI_Allreduce(&local, &any, 1, MPI_INT, MPI_LOR, comm_));
   candidatesAnywhere_ = any;

@@ -109,7 +109,7 @@ public:
 private:
   bool           Due(const InsertionSource &s, PetscReal t) const;
   static PetscReal MassOf(const InsertionSource &s, PetscReal r) { return s.density * 4.0 / 3.0 * PETSC_PI * r * r * r; }
-  bool           InDeletionBox(const PetscReal x[3]) const;
+  bool           InDeletionBox(const PetscReal x[3], PetscReal margin = 0) const;  // margin: each box grown by it
   // ClumpInsertion.cpp: the clump options of a source; the largest distance of a member's surface
   // from the inserted centre (the bounding radius), and the members' radius range.
   PetscErrorCode ClumpsFromOptions(OptionReader &opt, InsertionSource &s);
