@@ -196,4 +196,12 @@ int main(int argc, char **argv) {
     suffix: youngs
     nsize: 2
     args: -vof_normals youngs -cells_list 32
+  test:
+    suffix: elvira
+    nsize: 2
+    args: -vof_normals elvira -cells_list 32,64
+  test:
+    suffix: height_youngs
+    nsize: 1
+    args: -vof_height_fallback youngs -cells_list 32,64
 TEST*/

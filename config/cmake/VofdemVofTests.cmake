@@ -15,7 +15,7 @@ endforeach()
 
 set(_vof -physics flow,vof -grid_cells 8,8,8 -max_steps 1)
 vofdem_bad_input(vof_boxes_count   "option -vof_boxes: give 6 numbers per box" ${_vof} -vof_boxes 0,0,0,1,1)
-vofdem_bad_input(vof_normals       "option -vof_normals: unknown name 'elvira'" ${_vof} -vof_normals elvira)
+vofdem_bad_input(vof_normals       "option -vof_normals: unknown name 'lvira'" ${_vof} -vof_normals lvira)
 vofdem_bad_input(vof_cfl           "option -vof_cfl: 0.6 is out of range" ${_vof} -vof_cfl 0.6)
 
 # Bad input of the V4 and rising-bubble examples' own options: one line, every rank non-zero.

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace vofdem {
 namespace plic {
@@ -84,24 +85,30 @@ double HalfAlpha(const double m[3], double v) {
 
 }  // namespace
 
-double Volume(const double n[3], double alpha) {
-  double m[3], shift;
-  const double s = Normalise(n, m, &shift);
-  if (!(s > 0)) return alpha >= 0 ? 1 : 0;
-  return UnitVolume(m, (alpha - shift) / s);
+ReducedNormal Reduce(const double n[3]) {
+  ReducedNormal r;
+  r.sum = Normalise(n, r.m, &r.shift);
+  return r;
 }
 
-double Alpha(const double n[3], double v) {
-  double m[3], shift;
-  const double s = Normalise(n, m, &shift);
-  if (!(s > 0)) return 0;
+double Volume(const ReducedNormal &r, double alpha) {
+  if (!(r.sum > 0)) return alpha >= 0 ? 1 : 0;
+  return UnitVolume(r.m, (alpha - r.shift) / r.sum);
+}
+
+double Alpha(const ReducedNormal &r, double v) {
+  if (!(r.sum > 0)) return 0;
   double a;
   if (v <= 0) a = 0;
   else if (v >= 1) a = 1;
-  else if (v <= 0.5) a = HalfAlpha(m, v);
-  else a = 1 - HalfAlpha(m, 1 - v);
-  return a * s + shift;
+  else if (v <= 0.5) a = HalfAlpha(r.m, v);
+  else a = 1 - HalfAlpha(r.m, 1 - v);
+  return a * r.sum + r.shift;
 }
+
+double Volume(const double n[3], double alpha) { return Volume(Reduce(n), alpha); }
+
+double Alpha(const double n[3], double v) { return Alpha(Reduce(n), v); }
 
 double BoxFraction(const double n[3], double alpha, const double lo[3], const double hi[3]) {
   double nb[3], a = alpha;
@@ -110,6 +117,61 @@ double BoxFraction(const double n[3], double alpha, const double lo[3], const do
     a -= n[i] * lo[i];
   }
   return Volume(nb, a);
+}
+
+// For each direction d the interface faces (Youngs' component at least half the largest: columns
+// within slope 2 of the normal; columns more nearly along the interface do not hold its transition),
+// the 3-cell column sums along d over the 3 x 3 transverse block give backward, central and forward
+// slopes in each transverse direction: 9 planes per direction, and Youngs' plane besides. Each plane,
+// put through the centre cell at its fraction, is extended over the block (the neighbour at offset o is
+// the unit cube shifted by o: the plane's constant moves by m.o); the least-squares misfit picks one.
+// Unlike Youngs, it takes the one-sided slope at the tip of a filament, where a centred difference
+// reaches across to the other side.
+void Elvira(const double block[27], const double young[3], double n[3]) {
+  const double v = block[13];
+  auto         at = [&](const int o[3]) { return block[9 * (o[2] + 1) + 3 * (o[1] + 1) + (o[0] + 1)]; };
+  auto         misfit = [&](const double m[3], double limit) {
+    const ReducedNormal r = Reduce(m);
+    const double        c = Alpha(r, v);
+    double              err = 0;
+    int                 o[3];
+    for (o[2] = -1; o[2] <= 1 && err < limit; ++o[2])
+      for (o[1] = -1; o[1] <= 1; ++o[1])
+        for (o[0] = -1; o[0] <= 1; ++o[0]) {
+          const double e = Volume(r, c - (m[0] * o[0] + m[1] * o[1] + m[2] * o[2])) - at(o);
+          err += e * e;
+        }
+    return err;
+  };
+  double bestErr = misfit(young, std::numeric_limits<double>::infinity());
+  for (int e = 0; e < 3; ++e) n[e] = young[e];
+  const double ymax = std::max({std::fabs(young[0]), std::fabs(young[1]), std::fabs(young[2])});
+  for (int d = 0; d < 3; ++d) {
+    if (young[d] == 0 || std::fabs(young[d]) < 0.5 * ymax) continue;
+    const int sign = young[d] > 0 ? 1 : -1, t1 = (d + 1) % 3, t2 = (d + 2) % 3;
+    double    H[3][3];  // column sums along d at transverse offsets (t1, t2)
+    for (int b = -1; b <= 1; ++b)
+      for (int c = -1; c <= 1; ++c) {
+        int o[3];
+        o[t1] = b, o[t2] = c, H[b + 1][c + 1] = 0;
+        for (o[d] = -1; o[d] <= 1; ++o[d]) H[b + 1][c + 1] += at(o);
+      }
+    const double s1[3] = {H[1][1] - H[0][1], 0.5 * (H[2][1] - H[0][1]), H[2][1] - H[1][1]};
+    const double s2[3] = {H[1][1] - H[1][0], 0.5 * (H[1][2] - H[1][0]), H[1][2] - H[1][1]};
+    for (int i1 = 0; i1 < 3; ++i1)
+      for (int i2 = 0; i2 < 3; ++i2) {
+        if ((i1 != 1 && s1[i1] == s1[1]) || (i2 != 1 && s2[i2] == s2[1])) continue;  // the same plane as a central one
+        // the surface x_d = H(x_t): the normal (-dH/dt, 1) times the fluid's side, the transverse part
+        // the same for either side (H counts fluid from that side's end)
+        double m[3];
+        m[d] = sign, m[t1] = -s1[i1], m[t2] = -s2[i2];
+        const double err = misfit(m, bestErr);
+        if (err < bestErr) {
+          bestErr = err;
+          for (int e = 0; e < 3; ++e) n[e] = m[e];
+        }
+      }
+  }
 }
 
 }  // namespace plic

@@ -18,11 +18,18 @@ PetscErrorCode Vof::SetFromOptions(const Grid &grid) {
   PetscOptionsBegin(grid.Comm(), "vof_", "VOF: volume fraction alpha of the heavy phase, PLIC, split geometric advection (PHYSICS.md F1b, F4)", "Vof");
   {
     OptionReader             opt(PetscOptionsObject);
-    std::vector<std::string> nm = {normals_ == VofNormals::Height ? "height" : "youngs"};
-    PetscCall(opt.NameList("-normals", "Interface normals: height (height functions, second order where a 7-cell column is a clean transition, else Youngs) or youngs (gradient of alpha)",
-                           {"height", "youngs"}, &nm));
-    if (nm.size() != 1) VofdemInputError(grid.Comm(), "option -vof_normals: give one method (height or youngs)");
-    normals_ = nm[0] == "height" ? VofNormals::Height : VofNormals::Youngs;
+    auto name = [](VofNormals v) { return std::string(v == VofNormals::Height ? "height" : v == VofNormals::Elvira ? "elvira" : "youngs"); };
+    auto kind = [](const std::string &v) { return v == "height" ? VofNormals::Height : v == "elvira" ? VofNormals::Elvira : VofNormals::Youngs; };
+    std::vector<std::string> nm = {name(normals_)}, fb = {name(fallback_)};
+    PetscCall(opt.NameList("-normals",
+                           "Interface normals: height (height functions, second order where a 7-cell column is a clean transition, else -vof_height_fallback), elvira (ELVIRA: the best of 27 "
+                           "column-difference planes over the 3x3x3 block) or youngs (gradient of alpha)",
+                           {"height", "elvira", "youngs"}, &nm));
+    if (nm.size() != 1) VofdemInputError(grid.Comm(), "option -vof_normals: give one method (height, elvira or youngs)");
+    normals_ = kind(nm[0]);
+    PetscCall(opt.NameList("-height_fallback", "With -vof_normals height: the normals where no 7-cell column is a clean transition (thin filaments, corners)", {"elvira", "youngs"}, &fb));
+    if (fb.size() != 1) VofdemInputError(grid.Comm(), "option -vof_height_fallback: give one method (elvira or youngs)");
+    fallback_ = kind(fb[0]);
     PetscCall(opt.Real("-density", "Density of phase 1 (alpha = 1, the heavy phase); phase 0 has -flow_density", "kg/m^3", &density_, RealRange::Positive()));
     PetscCall(opt.Real("-viscosity", "Dynamic viscosity of phase 1; phase 0 has -flow_viscosity", "Pa s", &viscosity_, RealRange::Positive()));
     PetscCall(opt.Real("-surface_tension", "Surface tension coefficient sigma (0: none); height-function curvature, balanced-force face force", "N/m", &sigma_, RealRange::NonNegative()));
@@ -40,9 +47,6 @@ PetscErrorCode Vof::SetFromOptions(const Grid &grid) {
     PetscCall(opt.Int("-init_samples", "Sample points per cell and direction for the initial fraction of -vof_boxes/-vof_spheres", &samples_, 1, 64));
     if (boxes_.size() % 6) VofdemInputError(grid.Comm(), "option -vof_boxes: give 6 numbers per box (x0,y0,z0,x1,y1,z1), got %d", (int)boxes_.size());
     if (spheres_.size() % 4) VofdemInputError(grid.Comm(), "option -vof_spheres: give 4 numbers per sphere (cx,cy,cz,r), got %d", (int)spheres_.size());
-    PetscBool cc = passes_ > 1 ? PETSC_TRUE : PETSC_FALSE;
-    PetscCall(opt.Bool("-centred_columns", "With -vof_normals height: where no 7-cell column is a clean transition, try centred 3-cell columns before Youngs", &cc));
-    passes_ = cc ? 2 : 1;
     PetscCall(opt.Bool("-redistribute", "With particles (eps < 1): hand a cell's alpha above 1 or below 0 after the sweeps to its 26 neighbours in proportion to their room (their liquid), conserving eps alpha V (0: leave it)", &redistribute_));
     PetscCall(opt.Real("-cfl", "Courant number of each split sweep, max |u_d| dt / h_d; at most 1/2 keeps alpha in [0, 1] (Weymouth & Yue 2010)", "-", &cfl_,
                        RealRange::LeftOpen(0, 0.5)));
@@ -299,7 +303,7 @@ PetscErrorCode Vof::Load(PetscViewer viewer) {
 PetscErrorCode Vof::View(PetscViewer viewer) const {
   PetscFunctionBeginUser;
   PetscCall(PetscViewerASCIIPrintf(viewer, "vof: PLIC with %s normals, split geometric advection (Weymouth & Yue), sweep Courant number <= %g; phase 1 density %g kg/m^3, viscosity %g Pa s; surface tension %g N/m; %s momentum transport; %d box(es), %d sphere(s) of phase 1 at the start\n",
-                                   normals_ == VofNormals::Height ? "height-function" : "Youngs", (double)cfl_, (double)density_, (double)viscosity_, (double)sigma_,
+                                   normals_ == VofNormals::Youngs ? "Youngs" : normals_ == VofNormals::Elvira ? "ELVIRA" : fallback_ == VofNormals::Elvira ? "height-function (ELVIRA fallback)" : "height-function (Youngs fallback)", (double)cfl_, (double)density_, (double)viscosity_, (double)sigma_,
                                    momentum_ == VofMomentum::Consistent ? "mass-consistent" : "advective (non-conservative)", (int)(boxes_.size() / 6), (int)(spheres_.size() / 4)));
   for (int f = 0; f < 6; ++f)
     if (contactAngle_[f] != 90) PetscCall(PetscViewerASCIIPrintf(viewer, "vof: contact angle %g degrees (through phase 1) on face %s\n", (double)contactAngle_[f], FlowBoundary::FaceName(f)));

@@ -87,29 +87,34 @@ bool Vof::Reconstruct(const LocalField &f, const PetscInt q[3], double n[3], dou
   if (normals_ == VofNormals::Height) {
     // Heights along each direction the interface faces (Youngs' component not 0; the side of the
     // fluid from Youngs): of the directions whose 7-cell columns are all clean transitions, the one
-    // with the smallest slopes (columns most nearly across the interface). Where none is (thin
-    // filaments, high curvature), centred 3-cell columns (Aulisa et al. 2007) the same way.
-    for (int pass = 0; pass < passes_ && !*fromHeights; ++pass) {
-      double best[3] = {0, 0, 0}, bestSlope = PETSC_MAX_REAL;
-      for (int d = 0; d < 3; ++d) {
-        double m[3], slope;
-        if (n[d] != 0 && ColumnNormal(a, q, d, n[d] > 0 ? 1 : -1, pass == 0 ? 3 : 1, pass == 0, m, &slope) && slope < bestSlope) {
-          bestSlope = slope;
-          for (int e = 0; e < 3; ++e) best[e] = m[e];
-        }
-      }
-      if (bestSlope < PETSC_MAX_REAL) {
-        for (int e = 0; e < 3; ++e) n[e] = best[e];
-        *fromHeights = pass == 0;
-        if (pass == 1) break;
+    // with the smallest slopes (columns most nearly across the interface).
+    double best[3] = {0, 0, 0}, bestSlope = PETSC_MAX_REAL;
+    for (int d = 0; d < 3; ++d) {
+      double m[3], slope;
+      if (n[d] != 0 && ColumnNormal(a, q, d, n[d] > 0 ? 1 : -1, 3, true, m, &slope) && slope < bestSlope) {
+        bestSlope = slope;
+        for (int e = 0; e < 3; ++e) best[e] = m[e];
       }
     }
+    if (bestSlope < PETSC_MAX_REAL) {
+      for (int e = 0; e < 3; ++e) n[e] = best[e];
+      *fromHeights = true;
+    }
+  }
+  // Where heights are not available (thin filaments, corners, high curvature): ELVIRA unless Youngs is asked.
+  if (!*fromHeights && (normals_ == VofNormals::Elvira || (normals_ == VofNormals::Height && fallback_ == VofNormals::Elvira))) {
+    double block[27];
+    for (int z = -1, i = 0; z <= 1; ++z)
+      for (int y = -1; y <= 1; ++y)
+        for (int x = -1; x <= 1; ++x, ++i) block[i] = a.at(q[0] + x, q[1] + y, q[2] + z);
+    const double young[3] = {n[0], n[1], n[2]};
+    plic::Elvira(block, young, n);
   }
   *c = plic::Alpha(n, v);
   return true;
 }
 
-PetscErrorCode Vof::Sweep(int d, int stage, Vec const uLocal[3], PetscReal dt, PetscReal *heightCells, PetscReal *interfaceCells) {
+PetscErrorCode Vof::Sweep(int d, int stage, Vec const uLocal[3], PetscReal dt, PetscReal *fromHeights, PetscReal *reconstructions) {
   LocalField a, u, g, E, D;
   PetscInt   s[3], n[3], gs[3], gm[3];
 
@@ -159,6 +164,10 @@ PetscErrorCode Vof::Sweep(int d, int stage, Vec const uLocal[3], PetscReal dt, P
         } else if (!Reconstruct(a, donor, nrm, &c, &heights)) {
           flux_[idx] = cour * v;  // full, empty or without a gradient: uniform
         } else {
+          if (donor[d] >= s[d] && donor[d] < s[d] + n[d]) {  // the summary's share, each (donor, face) once over the ranks
+            *reconstructions += 1;
+            *fromHeights += heights;
+          }
           double lo[3] = {0, 0, 0}, hi[3] = {1, 1, 1};
           if (vel > 0) lo[d] = 1 - cour;
           else hi[d] = -cour;
@@ -182,18 +191,6 @@ PetscErrorCode Vof::Sweep(int d, int stage, Vec const uLocal[3], PetscReal dt, P
           pf.at(i, j, k) = flux_[(size_t)((i - s[0]) + nf[0] * ((j - s[1]) + nf[1] * (k - s[2])))] / r;
     PetscCall(sg_->RestoreGlobal(d, phaseFlux_[d], &pf));
   }
-  // Counts for the summary: the owned interface cells and how many got height-function normals.
-  for (PetscInt k = s[2]; k < s[2] + n[2]; ++k)
-    for (PetscInt j = s[1]; j < s[1] + n[1]; ++j)
-      for (PetscInt i = s[0]; i < s[0] + n[0]; ++i) {
-        const PetscInt q[3] = {i, j, k};
-        double         nrm[3], c;
-        bool           heights;
-        if (d == 0 && Reconstruct(a, q, nrm, &c, &heights)) {
-          *interfaceCells += 1;
-          *heightCells += heights;
-        }
-      }
   PetscCall(sg_->GetGlobal(3, alpha_, &g));
   PetscInt   sf[3] = {1, nf[0], nf[0] * nf[1]};
   PetscReal  worst = boundViolation_;
@@ -255,8 +252,8 @@ PetscErrorCode Vof::Advect(Vec const u[3], PetscReal dt) {
     if (!eps_ && d != 0) {
       // No velocity along d anywhere (the span of a quasi-2-D case): the sweep would give every cell
       // back its alpha and every face its velocity exactly (zero fluxes, zero dilatation). Not with
-      // particles: each sweep also takes a third of eps's change. The x-sweep always runs (it counts
-      // the interface cells).
+      // particles: each sweep also takes a third of eps's change. The x-sweep always runs (a step
+      // makes at least one sweep).
       PetscReal umax;
       PetscCall(VecNorm(u[d], NORM_INFINITY, &umax));
       if (umax == 0) continue;

@@ -17,5 +17,22 @@ double Alpha(const double n[3], double v);
 // the box's own volume.
 double BoxFraction(const double n[3], double alpha, const double lo[3], const double hi[3]);
 
+// A normal reduced once (components' absolute values over their sum, sorted) for many queries with
+// it, e.g. the same plane cut against a block of cells (ELVIRA): the same numbers as the functions above.
+struct ReducedNormal {
+  double m[3], sum, shift;
+};
+ReducedNormal Reduce(const double n[3]);
+double        Volume(const ReducedNormal &r, double alpha);
+double        Alpha(const ReducedNormal &r, double v);
+
+// ELVIRA normal (Pilliod & Puckett 2004, in three dimensions) of the centre cell of a 3 x 3 x 3 block of
+// fractions, block[9 (z+1) + 3 (y+1) + (x+1)] for offsets x, y, z in {-1, 0, 1}. young: Youngs' normal
+// of the block (pointing out of the fluid), which gives the fluid's side and is a candidate itself.
+// Writes the candidate whose plane through the centre cell best reproduces the 27 fractions (least
+// squares) to n; exact for a plane whose 3-cell columns along its steepest direction each hold the whole
+// transition.
+void Elvira(const double block[27], const double young[3], double n[3]);
+
 }  // namespace plic
 }  // namespace vofdem

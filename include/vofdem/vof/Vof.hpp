@@ -26,7 +26,10 @@ namespace vofdem {
 class Flow;
 class OptionReader;
 
-enum class VofNormals { Youngs, Height };
+// Interface normals of the PLIC reconstruction (PHYSICS.md F4; VofAdvect.cpp): Height from height
+// functions where a 7-cell column is a clean transition, with a fallback elsewhere (-vof_height_fallback:
+// Elvira or Youngs); Elvira everywhere; Youngs (gradient of alpha) everywhere.
+enum class VofNormals { Youngs, Height, Elvira };
 // How momentum moves with the interface (PHYSICS.md F2; VofMomentum.cpp): Consistent transports
 // rho u on the faces with the mass fluxes of the geometric VOF sweeps; Advective leaves the flow's
 // non-conservative -(U.grad)U (kept to show what consistency buys, ex36).
@@ -38,7 +41,7 @@ struct VofSummary {
   PetscReal minAlpha = 0, maxAlpha = 0;  // now
   PetscReal boundViolation = 0;  // max(-alpha, alpha - 1, 0) seen after any sweep since SetUp (no clipping is done)
   PetscReal interfaceCells = 0;  // cells with 1e-12 < alpha < 1 - 1e-12 (as a real: a sum over ranks)
-  PetscReal heightNormals = 0;   // fraction of interface cells of the last step whose normal came from heights
+  PetscReal heightNormals = 0;   // fraction of the last step's PLIC reconstructions (one per donor cell and face) whose normal came from heights
   PetscReal missingCurvature = 0;  // interface cells that got no curvature in the last SurfaceTension
   // Open faces (inflow, outflow; VofOpenFaces.cpp): phase-1 volume (sum eps alpha dV units) that entered and
   // left through them since the start, from the sweeps' geometric face fluxes; the same on every rank.
@@ -146,7 +149,7 @@ private:
   PetscErrorCode LoadOpenFaces(PetscViewer viewer);
   PetscErrorCode FluidFractionGhosts();  // eps_, epsChange_ -> epsLocal_, changeLocal_ (VofFluidFraction.cpp)
   // Sweep `stage` (1-3) of a step along d.
-  PetscErrorCode Sweep(int d, int stage, Vec const uLocal[3], PetscReal dt, PetscReal *heightCells, PetscReal *interfaceCells);
+  PetscErrorCode Sweep(int d, int stage, Vec const uLocal[3], PetscReal dt, PetscReal *fromHeights, PetscReal *reconstructions);
   // The PLIC plane of the cell at q in cell units (n, c); false for a full, empty or flat-field cell.
   PetscErrorCode MomentumSweep(int d, PetscReal dt);  // VofMomentum.cpp
   PetscErrorCode MomentumSweepStart(bool later);       // VofMomentum.cpp: the densities of the sweep's start (later: not the step's first sweep)
@@ -176,7 +179,7 @@ private:
   // options
   VofNormals  normals_ = VofNormals::Height;
   PetscReal   cfl_     = 0.5;
-  PetscInt    passes_  = 1;      // -vof_centred_columns: 2 adds 3-cell centred columns before Youngs (experimental)
+  VofNormals  fallback_ = VofNormals::Elvira;  // -vof_height_fallback: where heights are not available
   PetscReal   tiny_    = 1e-12;  // alpha below tiny (above 1 - tiny) is fluxed as uniform: no plane is fitted to round-off
   PetscReal   density_ = 1000, viscosity_ = 1e-3;  // phase 1 (alpha = 1)
   PetscReal   sigma_ = 0;                         // surface tension coefficient at T0, N/m
