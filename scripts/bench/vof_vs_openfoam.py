@@ -23,6 +23,7 @@ import time
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import foam_cavity as fc  # noqa: E402  (run())
 import foam_dambreak as fd  # noqa: E402
+import record  # noqa: E402
 
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 BUILD = os.environ.get("VOFDEM_BUILD", os.path.join(ROOT, "build"))
@@ -155,11 +156,7 @@ def main():
     say("")
     say("largest front error: " + ", ".join("%s %s" % (code, "%.1f %%" % worst[code] if code in worst else "n/a (did not run)") for code in ("vofdem", "OpenFOAM")))
     if not a.no_record:
-        old = open(RESULTS).read() if os.path.exists(RESULTS) else "# vof-vs-openfoam (scripts/bench/vof-vs-openfoam), newest first\n\n"
-        head, _, rest = old.partition("\n\n")
-        with open(RESULTS, "w") as f:
-            f.write(head + "\n\n" + "\n".join(OUT) + "\n\n" + rest)
-        print("recorded in %s" % os.path.relpath(RESULTS, ROOT))
+        record.prepend_block(RESULTS, "# vof-vs-openfoam (scripts/bench/vof-vs-openfoam), newest first", OUT, ROOT)
 
 
 if __name__ == "__main__":
