@@ -36,29 +36,30 @@ void Youngs(const CellArray &a, const PetscInt q[3], double n[3]) {
 
 const double kFull = 1 - 1e-8;
 
-// Sum of alpha over the column of 2 half + 1 cells along d through q + o (o a transverse offset).
-// With `strict`, false unless the column is a clean transition: its fluid end (side -sign) full and
-// its other end empty (PHYSICS.md F4: heights only where the interface is resolved).
-bool ColumnSum(const CellArray &a, const PetscInt q[3], int d, int sign, const PetscInt o[3], int half, bool strict, double *H) {
+const int kHalf = 3;  // height-function columns of 2 kHalf + 1 = 7 cells
+
+// Sum of alpha over the 7-cell column along d through q + o (o a transverse offset); false unless the
+// column is a clean transition: its fluid end (side -sign) full and its other end empty (PHYSICS.md F4:
+// heights only where the interface is resolved).
+bool ColumnSum(const CellArray &a, const PetscInt q[3], int d, int sign, const PetscInt o[3], double *H) {
   PetscInt p[3] = {q[0] + o[0], q[1] + o[1], q[2] + o[2]};
   double   sum  = 0;
-  for (int s = -half; s <= half; ++s) {
+  for (int s = -kHalf; s <= kHalf; ++s) {
     PetscInt r[3] = {p[0], p[1], p[2]};
     r[d] += s;
     sum += a.at(r);
   }
   *H = sum;
-  if (!strict) return true;
   PetscInt lo[3] = {p[0], p[1], p[2]}, hi[3] = {p[0], p[1], p[2]};
-  lo[d] -= half * sign;  // fluid end
-  hi[d] += half * sign;
+  lo[d] -= kHalf * sign;  // fluid end
+  hi[d] += kHalf * sign;
   return a.at(lo) >= kFull && a.at(hi) <= 1 - kFull;
 }
 
 // The normal from column sums along d (heights in cells): the surface x_d = H(x_t) has the normal
 // (-dH/dt, 1) times the side of the fluid, the transverse part the same for either side. Returns
-// false when a strict column is not a clean transition; *slope = sum |dH/dt|.
-bool ColumnNormal(const CellArray &a, const PetscInt q[3], int d, int sign, int half, bool strict, double m[3], double *slope) {
+// false when a column is not a clean transition; *slope = sum |dH/dt|.
+bool ColumnNormal(const CellArray &a, const PetscInt q[3], int d, int sign, double m[3], double *slope) {
   m[d]   = sign;
   *slope = 0;
   for (int t = 0; t < 3; ++t) {
@@ -67,8 +68,7 @@ bool ColumnNormal(const CellArray &a, const PetscInt q[3], int d, int sign, int 
     PetscInt om[3] = {0, 0, 0}, op[3] = {0, 0, 0}, oz[3] = {0, 0, 0};
     om[t] = -1;
     op[t] = 1;
-    if (!(ColumnSum(a, q, d, sign, om, half, strict, &Hm) && ColumnSum(a, q, d, sign, op, half, strict, &Hp) && ColumnSum(a, q, d, sign, oz, half, strict, &H0)))
-      return false;
+    if (!(ColumnSum(a, q, d, sign, om, &Hm) && ColumnSum(a, q, d, sign, op, &Hp) && ColumnSum(a, q, d, sign, oz, &H0))) return false;
     m[t] = -0.5 * (Hp - Hm);
     *slope += std::fabs(m[t]);
   }
@@ -91,7 +91,7 @@ bool Vof::Reconstruct(const LocalField &f, const PetscInt q[3], double n[3], dou
     double best[3] = {0, 0, 0}, bestSlope = PETSC_MAX_REAL;
     for (int d = 0; d < 3; ++d) {
       double m[3], slope;
-      if (n[d] != 0 && ColumnNormal(a, q, d, n[d] > 0 ? 1 : -1, 3, true, m, &slope) && slope < bestSlope) {
+      if (n[d] != 0 && ColumnNormal(a, q, d, n[d] > 0 ? 1 : -1, m, &slope) && slope < bestSlope) {
         bestSlope = slope;
         for (int e = 0; e < 3; ++e) best[e] = m[e];
       }
