@@ -18,6 +18,9 @@ set_tests_properties(dem/stop_at_rest PROPERTIES LABELS "quick;dem" PROCESSORS 2
 # -dem_insert_<name>_every: insertion in batches, fewer rebuilds, nothing lost.
 add_test(NAME dem/insert_batches COMMAND ${VOFDEM_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/test/dem/test_insert_batches.py $<TARGET_FILE:vofdem_app>)
 set_tests_properties(dem/insert_batches PROPERTIES LABELS "quick;dem" PROCESSORS 2 TIMEOUT 300)
+# -dem_save_contact_history / -dem_contact_history_file: a cohesive pile handed on through particle files stays at rest.
+add_test(NAME dem/contact_history_file COMMAND ${VOFDEM_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/test/dem/test_contact_history_file.py $<TARGET_FILE:vofdem_app>)
+set_tests_properties(dem/contact_history_file PROPERTIES LABELS "quick;dem" PROCESSORS 2 TIMEOUT 300)
 # A random fill and an insertion region across periodic x and y: centres up to the faces, no overlap through them.
 add_test(NAME dem/periodic_seam COMMAND ${VOFDEM_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/test/dem/test_periodic_seam.py $<TARGET_FILE:vofdem_app>)
 set_tests_properties(dem/periodic_seam PROPERTIES LABELS "quick;dem" PROCESSORS 2 TIMEOUT 300)
@@ -81,6 +84,10 @@ vofdem_bad_input(particles_missing  "option -dem_particles_file: cannot open"   
 vofdem_bad_input(particles_malformed "particles-malformed\\.csv:3: expected 6 comma-separated numbers, as the header names" ${_dem} -dem_radius 1e-3 -dem_particles_file ${_bad}/particles-malformed.csv)
 vofdem_bad_input(particle_outside   "particles-outside\\.csv:2: the particle at .* is not inside the box" ${_dem} -dem_radius 1e-3 -dem_particles_file ${_bad}/particles-outside.csv)
 vofdem_bad_input(particle_far_periodic "particles-periodic-far\\.csv:2: the particle at .* lies more than its radius outside the periodic box along x" ${_dem} -grid_periodic x -dem_radius 1e-3 -dem_particles_file ${_bad}/particles-periodic-far.csv)
+vofdem_bad_input(history_no_particles "option -dem_contact_history_file: give -dem_particles_file too" ${_dem} -dem_contact_history_file ${_bad}/history-row.csv)
+vofdem_bad_input(save_history_alone "option -dem_save_contact_history: give -dem_save_particles too" ${_dem} -dem_save_contact_history contacts.csv)
+vofdem_bad_input(history_header    "history-header\\.csv:1: the header must be 'i,j,tx,ty,tz,rx,ry,rz,jkr_radius,jkr_bonded'" ${_dem} -dem_radius 1e-3 -dem_particles_file ${_bad}/history-particles.csv -dem_contact_history_file ${_bad}/history-header.csv)
+vofdem_bad_input(history_row       "history-row\\.csv:3: give two rows i < j of the particles file \\(0 to 1\\)" ${_dem} -dem_radius 1e-3 -dem_particles_file ${_bad}/history-particles.csv -dem_contact_history_file ${_bad}/history-row.csv)
 vofdem_bad_input(particles_column   "particles-unknown-column\\.csv:1: unknown column .colour." ${_dem} -dem_radius 1e-3 -dem_particles_file ${_bad}/particles-unknown-column.csv)
 vofdem_bad_input(fill_fractions     "option -dem_fill_mass_fractions: 1 fractions for 2 radii" ${_dem} -dem_fill_radii 1e-3,5e-4 -dem_fill_mass_fractions 1)
 vofdem_bad_input(jkr_without_energy "option -dem_cohesion jkr needs a surface energy > 0 for every type \\(-dem_surface_energy" ${_dem} -dem_cohesion jkr)

@@ -17,7 +17,7 @@ namespace {
 
 // Options that may differ between a run and its restart without changing what is computed.
 const char *const kFreeExact[] = {"-restart", "-max_steps", "-final_time", "-output_dir", "-help", "-allow_unused_options", "-grid_ranks",
-                                  "-dem_save_particles", "-flow_profile_output", "-no_signal_handler", "-on_error_abort", "-info",
+                                  "-dem_save_particles", "-dem_save_contact_history", "-flow_profile_output", "-no_signal_handler", "-on_error_abort", "-info",
                                   "-stop_kinetic_energy", "-stop_kinetic_energy_after", "-dem_output_every", "-dem_contacts_every",
                                   "-flow_output_every"};
 // -analysis_*: the powder-bed analysis reads the particles at the end and changes nothing in the run.

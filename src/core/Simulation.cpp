@@ -370,6 +370,7 @@ PetscErrorCode Simulation::Run() {
     }
   }
   if (physics_.dem && !dem_->SaveParticlesPath().empty()) PetscCall(dem_->SaveParticles(dem_->SaveParticlesPath()));
+  if (physics_.dem && !dem_->SaveContactHistoryPath().empty()) PetscCall(dem_->SaveContactHistory(dem_->SaveContactHistoryPath()));
   if (physics_.flow && !flow_->ProfilePath().empty()) PetscCall(flow_->WriteProfile(flow_->ProfilePath()));
   PetscCall(PetscPrintf(comm_, "vofdem: finished after %" PetscInt_FMT " steps at t = %g s%s%s\n", step_, (double)time_,
                         csv_ ? "; monitor table in " : "", csv_ ? (outputDir_ + "/monitor.csv").c_str() : ""));

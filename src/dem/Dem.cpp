@@ -120,6 +120,14 @@ PetscErrorCode Dem::SetFromOptions(MPI_Comm comm) {
     }
     PetscCall(opt.Real("-fill_velocity_spread", "Random part of the initial velocity: each component uniform in [-spread, spread]", "m/s", &fillSpread_, RealRange::NonNegative()));
     PetscCall(opt.String("-save_particles", "Write all particles at the end of the run to this CSV (the format -dem_particles_file reads, with radius)", &savePath_));
+    PetscCall(opt.String("-save_contact_history",
+                         "Write the contact history at the end of the run to this CSV: the springs (tangential, rolling, JKR contact radius and bond) of the touching "
+                         "particle pairs and box-face contacts, the particles by their rows in the -dem_save_particles file; read by -dem_contact_history_file",
+                         &saveHistoryPath_));
+    PetscCall(opt.String("-contact_history_file",
+                         "CSV of the contact history of the particles of -dem_particles_file (as -dem_save_contact_history writes it): the run keeps their friction, "
+                         "rolling and JKR bonds instead of starting every contact afresh",
+                         &historyFile_));
     PetscCall(opt.String("-particles_file", "CSV of particles to insert after the fill; the header names the columns: x,y,z required, vx,vy,vz,wx,wy,wz,radius,type,clump optional (m, m/s, rad/s, index into -dem_types, clump id or -1)", &particlesFile_));
     PetscCall(TypesFromOptions(PetscOptionsObject));
     PetscCall(SetBalanceFromOptions(PetscOptionsObject));
@@ -149,6 +157,10 @@ PetscErrorCode Dem::SetFromOptions(MPI_Comm comm) {
         VofdemInputError(comm, "option -dem_cohesion jkr needs a surface energy > 0 for every type: type %s has none (-dem_type_%s_surface_energy; a material file's value is not overridden by -dem_surface_energy)",
                          typeNames_[t].c_str(), typeNames_[t].c_str());
       }
+  if (!saveHistoryPath_.empty() && savePath_.empty())
+    VofdemInputError(comm, "option -dem_save_contact_history: give -dem_save_particles too (the contacts name the particles by their rows in that file)");
+  if (!historyFile_.empty() && particlesFile_.empty())
+    VofdemInputError(comm, "option -dem_contact_history_file: give -dem_particles_file too (the contacts name the particles by their rows in that file)");
   const PetscReal rFillMax = fillSizes_.MaxRadius();
   PetscCall(wallSet_.SetFromOptions(comm));
   PetscCall(out_.SetFromOptions(comm));
@@ -177,6 +189,7 @@ PetscErrorCode Dem::SetUp(Grid &grid, const PetscReal gravity[3], std::uint64_t 
   PetscCall(PetscLogEventRegister("DEMForces", classId, &evForces_));
   PetscCall(PetscLogEventRegister("DEMIntegrate", classId, &evIntegrate_));
   if (!savePath_.empty()) PetscCall(CheckWritable(comm_, savePath_, "option -dem_save_particles"));
+  if (!saveHistoryPath_.empty()) PetscCall(CheckWritable(comm_, saveHistoryPath_, "option -dem_save_contact_history"));
   // The clumps' rigid state (11 reals per particle) only where clumps can come: inserted, or from the file.
   swarm_.SetRigidFields(sources_.InsertsClumps() || ParticlesFileNamesClumps());
   PetscCall(swarm_.Create(grid));

@@ -287,6 +287,11 @@ PetscErrorCode Dem::ReadParticles() {
     ++p;
   }
   PetscCall(swarm_.RestoreArrays(&a));
+  if (!historyFile_.empty()) {
+    std::vector<char> ownedRow(rows.size());
+    for (size_t k = 0; k < rows.size(); ++k) ownedRow[k] = owned(rows[k]);
+    PetscCall(ReadContactHistory(rows.size(), start, ownedRow));
+  }
   PetscCall(swarm_.Migrate());
   PetscFunctionReturn(0);
 }

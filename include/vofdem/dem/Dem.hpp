@@ -64,6 +64,11 @@ public:
   // (x,y,z,vx,vy,vz,wx,wy,wz), through rank 0; the file is written to a temporary name and renamed.
   PetscErrorCode SaveParticles(const std::string &path) const;
   const std::string &SaveParticlesPath() const { return savePath_; }
+  // Collective (ContactHistoryFile.cpp): the springs of the touching particle pairs and box-face contacts
+  // (tangential, rolling, JKR radius and bond) as the CSV -dem_contact_history_file reads, the particles by
+  // their rows in SaveParticles' file.
+  PetscErrorCode SaveContactHistory(const std::string &path) const;
+  const std::string &SaveContactHistoryPath() const { return saveHistoryPath_; }
   PetscErrorCode View(PetscViewer viewer) const;
   PetscErrorCode Destroy();
   // Collective, HDF5 viewer (DemSaveLoad.cpp): all DEM state, under the group "dem". Load after
@@ -121,6 +126,9 @@ private:
   PetscErrorCode Fill(std::uint64_t seed);              // DemFill.cpp
   PetscErrorCode FillRandom(std::uint64_t seed);        // DemFill.cpp: -dem_fill_mode random
   PetscErrorCode ReadParticles();                       // DemFill.cpp: -dem_particles_file
+  // ContactHistoryFile.cpp: -dem_contact_history_file, for the particles ReadParticles just made (ids start + row);
+  // the springs of pairs with a particle on this rank go into springs_ for the first Rebuild().
+  PetscErrorCode ReadContactHistory(size_t rows, PetscInt64 start, const std::vector<char> &ownedRow);
   bool           ParticlesFileNamesClumps() const;      // DemFill.cpp: its header has a clump column
   void           StoreFilled(const ParticleArrays &a, PetscInt p, PetscInt64 id, const PetscReal x[3], PetscReal r, std::uint64_t seed) const;
   PetscErrorCode Rebuild();                             // DemContacts.cpp: migrate, halo, list, springs
@@ -236,6 +244,8 @@ private:
   PetscReal time_ = 0;       // s, sum of the steps taken (insertion schedules)
   std::string particlesFile_;  // CSV: x,y,z,vx,vy,vz[,wx,wy,wz] per line, one header line
   std::string savePath_;       // -dem_save_particles: the same CSV at the end of the run
+  std::string historyFile_;      // -dem_contact_history_file: the pairs' springs of the particles file
+  std::string saveHistoryPath_;  // -dem_save_contact_history: the same at the end of the run
   PetscInt  inserted_     = 0;
   bool      fluidCoupled_ = false;
   PetscReal capSigma_ = 0, capTheta_ = 0;  // SetCapillary; sigma 0: no capillary force
