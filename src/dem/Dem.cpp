@@ -234,6 +234,24 @@ PetscErrorCode Dem::SetUp(Grid &grid, const PetscReal gravity[3], std::uint64_t 
                                  : hertz::RayleighTime(rMin_, m.density, m.youngs, m.poisson);
     rayleighTime_ = std::min(rayleighTime_, tr);
   }
+  // JKR bonds at rest may be stiffer than the Rayleigh time allows for (HertzMindlin.hpp JkrSpinStep): the
+  // smallest, lightest sphere held by 12 bonds of the stiffest pair material, or by 11 and a wall.
+  jkrStepLimit_ = PETSC_MAX_REAL;
+  if (jkr_) {
+    PetscReal rhoMin = PETSC_MAX_REAL;
+    for (const DemMaterial &m : types_) rhoMin = std::min(rhoMin, m.density);
+    const PetscReal m = rhoMin * 4.0 / 3.0 * PETSC_PI * rMin_ * rMin_ * rMin_;
+    for (const auto &c : table_.Pairs()) {
+      PetscReal w2 = 0, rate = 0;
+      hertz::JkrSpinBond(c, rMin_ / 2, m / 2, m, false, &w2, &rate);
+      jkrStepLimit_ = std::min(jkrStepLimit_, kJkrStepSafety * hertz::JkrSpinStep(12 * w2, 12 * rate));
+      for (PetscInt t = 0; t < table_.Count(); ++t) {
+        PetscReal ww2 = 11 * w2, wrate = 11 * rate;
+        hertz::JkrSpinBond(table_.Wall(t), rMin_, m, m, true, &ww2, &wrate);
+        jkrStepLimit_ = std::min(jkrStepLimit_, kJkrStepSafety * hertz::JkrSpinStep(ww2, wrate));
+      }
+    }
+  }
   // A JKR bond holds until the overlap falls to its break value, largest for the largest R* (a wall).
   if (jkr_) {
     for (const auto &c : table_.Pairs()) adhesionRange_ = std::max(adhesionRange_, -hertz::JkrBreakOverlap(c, rMax_ / 2));
@@ -474,11 +492,11 @@ PetscErrorCode Dem::View(PetscViewer viewer) const {
                                    law, limitForce_ ? ", normal force clipped at zero" : "", rolling[(int)rolling_], muR,
                                    rolling_ == hertz::Rolling::None ? "" : loads[(int)rollingParams_.load]));
   if (jkr_ && oneType)
-    PetscCall(PetscViewerASCIIPrintf(viewer, "dem: adhesion: JKR (P6), surface energy %g J/m^2 (work of adhesion %g J/m^2), walls %g J/m^2; bonds break up to %g m apart\n",
-                                     (double)shown.surfaceEnergy, (double)pair_.w, (double)wall_.w, (double)adhesionRange_));
+    PetscCall(PetscViewerASCIIPrintf(viewer, "dem: adhesion: JKR (P6), surface energy %g J/m^2 (work of adhesion %g J/m^2), walls %g J/m^2; bonds break up to %g m apart; bonds at rest allow steps up to %g s (HertzMindlin.hpp JkrSpinStep)\n",
+                                     (double)shown.surfaceEnergy, (double)pair_.w, (double)wall_.w, (double)adhesionRange_, (double)jkrStepLimit_));
   else if (jkr_)
-    PetscCall(PetscViewerASCIIPrintf(viewer, "dem: adhesion: JKR (P6), surface energies per type (work of adhesion %g J/m^2 between type 0's spheres), walls %g J/m^2; bonds break up to %g m apart\n",
-                                     (double)pair_.w, (double)wall_.w, (double)adhesionRange_));
+    PetscCall(PetscViewerASCIIPrintf(viewer, "dem: adhesion: JKR (P6), surface energies per type (work of adhesion %g J/m^2 between type 0's spheres), walls %g J/m^2; bonds break up to %g m apart; bonds at rest allow steps up to %g s (HertzMindlin.hpp JkrSpinStep)\n",
+                                     (double)pair_.w, (double)wall_.w, (double)adhesionRange_, (double)jkrStepLimit_));
   if (sjkr_) PetscCall(PetscViewerASCIIPrintf(viewer, "dem: adhesion: SJKR (LIGGGHTS' cohesion sjkr, P6), cohesion energy density %g J/m^3\n", (double)sjkrDensity_));
   if (surfaceEnergyModulus_ > 0)
     for (size_t t = 0; t < types_.size(); ++t)

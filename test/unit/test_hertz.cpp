@@ -129,3 +129,33 @@ TEST(Rolling, CapLoadOfABondedContact) {
   // Without adhesion (offset 0) adhesion and compression agree.
   EXPECT_EQ(h::RollingNormalLoad(h::RollingLoad::Adhesion, -1.0, 0.0), h::RollingNormalLoad(h::RollingLoad::Compression, -1.0, 0.0));
 }
+
+// JkrSpinStep is the stability bound of the leapfrog recurrence of a damped oscillator with the damping
+// at the half-step velocity, x_{n+1} - x_n = (1 - c dt)(x_n - x_{n-1}) - w^2 dt^2 x_n: bounded just below
+// it, growing just above, for weak and strong damping. And a zero-load JKR contact is a0 wide: the
+// contact radius JkrNormal finds at zero overlap force.
+TEST(Jkr, SpinStepIsTheLeapfrogStabilityBound) {
+  auto grows = [](double w2, double c, double dt) {
+    double xm = 1, x = 1 + 1e-3;
+    for (int n = 0; n < 20000; ++n) {
+      const double next = x + (1 - c * dt) * (x - xm) - w2 * dt * dt * x;
+      xm = x, x = next;
+      if (std::abs(x) > 1e6) return true;
+    }
+    return false;
+  };
+  for (double c : {0.0, 1e2, 1e4, 1e5}) {
+    const double w2 = 1e8, dt = h::JkrSpinStep(w2, c);
+    EXPECT_NEAR(w2 * dt * dt + 2 * c * dt, 4.0, 1e-12);
+    EXPECT_FALSE(grows(w2, c, 0.99 * dt)) << "c " << c;
+    EXPECT_TRUE(grows(w2, c, 1.01 * dt)) << "c " << c;
+  }
+  const auto   c = h::MakePairMaterial(1e7, 0.28, 1e7, 0.28, 0.3, 0.5, false, 0.1);
+  const double R = 5e-5;
+  double       a = 0;
+  const double a0 = h::JkrZeroLoadRadius(c, R);
+  // Zero net force at the overlap of a0: delta = a0^2/R - sqrt(2 pi w a0/E*).
+  const double d0 = a0 * a0 / R - std::sqrt(2 * M_PI * c.w * a0 / c.Estar);
+  EXPECT_NEAR(h::JkrNormal(c, d0, R, &a).Fel, 0.0, 1e-9 * M_PI * c.w * R);
+  EXPECT_NEAR(a, a0, 1e-10 * a0);
+}

@@ -21,6 +21,7 @@
 #include "vofdem/dem/Walls.hpp"
 #include "vofdem/grid/Grid.hpp"
 
+#include <algorithm>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -53,11 +54,15 @@ public:
   // Creates the swarm on the grid's vertex DMDA, fills the insertion region, evaluates forces.
   // The grid is not const: -dem_balance may repartition it (DemBalance.cpp).
   PetscErrorCode SetUp(Grid &grid, const PetscReal gravity[3], std::uint64_t seed);
-  // Largest stable step: -dem_dt_factor times the Rayleigh time (P9).
-  PetscReal StableTimeStep() const { return dtFactor_ * rayleighTime_; }
+  // Largest stable step: -dem_dt_factor times the Rayleigh time (P9), or less where JKR bonds at rest are
+  // stiffer than that covers (HertzMindlin.hpp JkrSpinStep).
+  PetscReal StableTimeStep() const { return std::min(dtFactor_ * rayleighTime_, jkrStepLimit_); }
   PetscReal RayleighTime() const { return rayleighTime_; }
   // What StableTimeStep() is a fraction of, for the banner.
-  const char *TimeStepBasis() const { return linear_ ? "dem (-dem_dt_factor x contact time/10 of the linear spring, P4)" : "dem (-dem_dt_factor x Rayleigh time, P9)"; }
+  const char *TimeStepBasis() const {
+    if (jkrStepLimit_ < dtFactor_ * rayleighTime_) return "dem JKR bonds at rest (0.8 x the stable step of a sphere spinning in 12 bonds, HertzMindlin.hpp JkrSpinStep)";
+    return linear_ ? "dem (-dem_dt_factor x contact time/10 of the linear spring, P4)" : "dem (-dem_dt_factor x Rayleigh time, P9)";
+  }
   PetscErrorCode Step(PetscReal dt);  // one velocity-Verlet step
   PetscErrorCode Summarize(DemSummary *s) const;
   // Collective: writes every particle, in id order, as the CSV that -dem_particles_file reads
@@ -220,6 +225,8 @@ private:
   PetscReal     skin_       = 0;     // m, Verlet skin
   PetscReal     gravity_[3] = {0, 0, 0};
   PetscReal     rayleighTime_ = 0;
+  PetscReal     jkrStepLimit_ = PETSC_MAX_REAL;   // s, JKR bonds at rest (SetUp)
+  static constexpr PetscReal kJkrStepSafety = 0.8;  // of JkrSpinStep's stability bound
   PetscInt      rebuilds_   = 0;
   PetscInt      steps_      = 0;  // steps begun since SetUp (output schedule)
   DemOutputSettings out_;

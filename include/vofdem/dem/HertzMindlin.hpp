@@ -93,6 +93,27 @@ inline PetscReal JkrBreakOverlap(const PairMaterial &c, PetscReal Rstar) {
   return -0.75 * std::cbrt(PETSC_PI * PETSC_PI * c.w * c.w * Rstar / (c.Estar * c.Estar));
 }
 
+// The JKR contact radius at zero load, a0 = (9 pi w R*^2 / (2 E*))^(1/3) (P6): a resting bond is this wide
+// whatever gravity does, so its stiffness S_n = 2 E* a0 does not vanish as a Hertz contact's does.
+inline PetscReal JkrZeroLoadRadius(const PairMaterial &c, PetscReal Rstar) { return std::cbrt(9 * PETSC_PI * c.w * Rstar * Rstar / (2 * c.Estar)); }
+
+// The stability of velocity Verlet for spheres held by JKR bonds at zero load. The stiffest mode is a
+// cluster spinning one way: each bond's tangential spring k_t = S_t and dashpot gamma_t (P3) resist the
+// slip of both surfaces, 2 R w per bond (R w against a wall), averaged over the bond directions (2/3),
+// against I = 0.4 m R^2: w^2 = sum f k_t / m and a damping rate c = sum f gamma_t / m over the bonds, f =
+// 10/3 (5/3 at a wall). JkrSpinBond adds one bond of R*, m* to a sphere of mass m; JkrSpinStep is the
+// largest dt for which the leapfrog recurrence of that damped oscillator (damping at the half-step
+// velocity, as the contact loop has it) is stable: w^2 dt^2 + 2 c dt < 4. A Hertz contact's stiffness grows
+// only with its load, which the Rayleigh time (P9) covers; a JKR bond of a soft, strongly adhesive powder
+// with low restitution is stiffer at rest than that, and at the Rayleigh step its piles never come to rest
+// (E 1e7 Pa, w 0.1 J/m^2, e 0.3, R 0.1 mm at 0.3 T_R: kinetic energy ~1e-10 J in a 100-sphere pile for ever).
+inline void JkrSpinBond(const PairMaterial &c, PetscReal Rstar, PetscReal mstar, PetscReal m, bool wall, PetscReal *w2, PetscReal *rate) {
+  const PetscReal kt = c.tStiff * 2 * c.Estar * JkrZeroLoadRadius(c, Rstar), f = wall ? 5.0 / 3.0 : 10.0 / 3.0;
+  *w2 += f * kt / m;
+  *rate += f * std::abs(c.k5) * std::sqrt(mstar * kt) / m;
+}
+inline PetscReal JkrSpinStep(PetscReal w2, PetscReal rate) { return w2 > 0 ? (std::sqrt(rate * rate + 4 * w2) - rate) / w2 : PETSC_MAX_REAL; }
+
 // What JKR needs of a pair besides its overlap, fixed by the material and R*: sqrt(a_c), k = sqrt(2 pi
 // w/E*), 1/R*, sqrt(8 pi w E*) and the break overlap. The neighbour list's pairs keep them
 // (Dem::jkrPairs_): two cube roots per contact and step were 9 % of a settling tungsten powder's run.
