@@ -24,6 +24,9 @@ set_tests_properties(dem/contact_history_file PROPERTIES LABELS "quick;dem" PROC
 # JKR bonds at rest set the DEM step where they are stiffer than the Rayleigh time covers; a pile then comes to rest.
 add_test(NAME dem/jkr_step COMMAND ${VOFDEM_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/test/dem/test_jkr_step.py $<TARGET_FILE:vofdem_app>)
 set_tests_properties(dem/jkr_step PROPERTIES LABELS "quick;dem" PROCESSORS 2 TIMEOUT 300)
+# Loaded, damped contacts set the DEM step where they are stiffer than the Rayleigh time covers; a deep soft bed then comes to rest.
+add_test(NAME dem/contact_step COMMAND ${VOFDEM_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/test/dem/test_contact_step.py $<TARGET_FILE:vofdem_app>)
+set_tests_properties(dem/contact_step PROPERTIES LABELS "quick;dem" PROCESSORS 2 TIMEOUT 300)
 # A random fill and an insertion region across periodic x and y: centres up to the faces, no overlap through them.
 add_test(NAME dem/periodic_seam COMMAND ${VOFDEM_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/test/dem/test_periodic_seam.py $<TARGET_FILE:vofdem_app>)
 set_tests_properties(dem/periodic_seam PROPERTIES LABELS "quick;dem" PROCESSORS 2 TIMEOUT 300)

@@ -264,6 +264,9 @@ PetscErrorCode Simulation::ChooseTimeStep() {
 
 PetscErrorCode Simulation::Step() {
   PetscFunctionBeginUser;
+  // The DEM's limit moves with its contacts (Dem::UpdateContactStepLimit): a DEM-only step follows it here,
+  // so that drivers calling Step() alone (the examples) step stably too; a step the contacts allow is kept.
+  if (physics_.dem && !physics_.flow && dtUser_ == 0 && step_ > 0 && dem_->StableTimeStep() != dt_) PetscCall(ChooseTimeStep());
   const PetscReal dt = finalTime_ < PETSC_MAX_REAL ? std::min(dt_, finalTime_ - time_) : dt_;
   // The coupled step (ARCHITECTURE.md, Coupling.hpp): projection, flow step, averaging, DEM sub-steps.
   // With a free surface the interface's force joins the flow step and the interface moves with the

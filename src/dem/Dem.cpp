@@ -101,6 +101,9 @@ PetscErrorCode Dem::SetFromOptions(MPI_Comm comm) {
     PetscCall(opt.Real("-skin", "Verlet skin: lists are rebuilt and particles migrate once one has moved half of it (default: 0.2 diameters)", "m", &skin_, RealRange::Positive()));
     PetscCall(sort_.SetFromOptions(opt));  // -dem_sort_every (MortonOrder.cpp)
     PetscCall(opt.Real("-dt_factor", "Time step as a fraction of the Rayleigh time (P9)", "-", &dtFactor_, RealRange::LeftOpen(0, 1)));
+    PetscCall(opt.Int("-contact_step_every",
+                      "Every this many steps, bound the step by the contacts as they are: the stable step of the sphere whose loaded, damped contacts spin stiffest (HertzMindlin.hpp SpinStep; deep beds of soft spheres); 0: never",
+                      &contactStepEvery_, 0));
     PetscCall(opt.RealVector("-fill_lower", "Lower corner of the lattice-fill region (default: the box)", "m", fillLower_, 3, RealRange::Any(), &fillLowerSet_));
     PetscCall(opt.RealVector("-fill_upper", "Upper corner of the lattice-fill region (default: the box)", "m", fillUpper_, 3, RealRange::Any(), &fillUpperSet_));
     PetscCall(opt.Real("-fill_spacing", "Lattice spacing of the fill, at least one diameter (0: 2.2 radii)", "m", &fillSpacing_, RealRange::NonNegative()));
@@ -234,7 +237,7 @@ PetscErrorCode Dem::SetUp(Grid &grid, const PetscReal gravity[3], std::uint64_t 
                                  : hertz::RayleighTime(rMin_, m.density, m.youngs, m.poisson);
     rayleighTime_ = std::min(rayleighTime_, tr);
   }
-  // JKR bonds at rest may be stiffer than the Rayleigh time allows for (HertzMindlin.hpp JkrSpinStep): the
+  // JKR bonds at rest may be stiffer than the Rayleigh time allows for (HertzMindlin.hpp SpinStep): the
   // smallest, lightest sphere held by 12 bonds of the stiffest pair material, or by 11 and a wall.
   jkrStepLimit_ = PETSC_MAX_REAL;
   if (jkr_) {
@@ -244,11 +247,11 @@ PetscErrorCode Dem::SetUp(Grid &grid, const PetscReal gravity[3], std::uint64_t 
     for (const auto &c : table_.Pairs()) {
       PetscReal w2 = 0, rate = 0;
       hertz::JkrSpinBond(c, rMin_ / 2, m / 2, m, false, &w2, &rate);
-      jkrStepLimit_ = std::min(jkrStepLimit_, kJkrStepSafety * hertz::JkrSpinStep(12 * w2, 12 * rate));
+      jkrStepLimit_ = std::min(jkrStepLimit_, kJkrStepSafety * hertz::SpinStep(12 * w2, 12 * rate));
       for (PetscInt t = 0; t < table_.Count(); ++t) {
         PetscReal ww2 = 11 * w2, wrate = 11 * rate;
         hertz::JkrSpinBond(table_.Wall(t), rMin_, m, m, true, &ww2, &wrate);
-        jkrStepLimit_ = std::min(jkrStepLimit_, kJkrStepSafety * hertz::JkrSpinStep(ww2, wrate));
+        jkrStepLimit_ = std::min(jkrStepLimit_, kJkrStepSafety * hertz::SpinStep(ww2, wrate));
       }
     }
   }
@@ -262,6 +265,7 @@ PetscErrorCode Dem::SetUp(Grid &grid, const PetscReal gravity[3], std::uint64_t 
   PetscCall(Rebuild());
   record_.on = out_.NeedsContacts(steps_);
   PetscCall(ComputeForces(0));
+  if (contactStepEvery_ > 0) PetscCall(UpdateContactStepLimit());  // a start among loaded contacts (a particle file) steps safely at once
   PetscFunctionReturn(0);
 }
 
@@ -374,6 +378,7 @@ PetscErrorCode Dem::Step(PetscReal dt) {
   }
   PetscCall(PetscLogEventBegin(evForces_, 0, 0, 0, 0));
   PetscCall(ComputeForces(dt));
+  if (contactStepEvery_ > 0 && steps_ % contactStepEvery_ == 0) PetscCall(UpdateContactStepLimit());
   PetscCall(PetscLogEventEnd(evForces_, 0, 0, 0, 0));
   PetscCall(PetscLogEventBegin(evIntegrate_, 0, 0, 0, 0));
   PetscCall(swarm_.GetArrays(&a));
@@ -492,10 +497,10 @@ PetscErrorCode Dem::View(PetscViewer viewer) const {
                                    law, limitForce_ ? ", normal force clipped at zero" : "", rolling[(int)rolling_], muR,
                                    rolling_ == hertz::Rolling::None ? "" : loads[(int)rollingParams_.load]));
   if (jkr_ && oneType)
-    PetscCall(PetscViewerASCIIPrintf(viewer, "dem: adhesion: JKR (P6), surface energy %g J/m^2 (work of adhesion %g J/m^2), walls %g J/m^2; bonds break up to %g m apart; bonds at rest allow steps up to %g s (HertzMindlin.hpp JkrSpinStep)\n",
+    PetscCall(PetscViewerASCIIPrintf(viewer, "dem: adhesion: JKR (P6), surface energy %g J/m^2 (work of adhesion %g J/m^2), walls %g J/m^2; bonds break up to %g m apart; bonds at rest allow steps up to %g s (HertzMindlin.hpp SpinStep)\n",
                                      (double)shown.surfaceEnergy, (double)pair_.w, (double)wall_.w, (double)adhesionRange_, (double)jkrStepLimit_));
   else if (jkr_)
-    PetscCall(PetscViewerASCIIPrintf(viewer, "dem: adhesion: JKR (P6), surface energies per type (work of adhesion %g J/m^2 between type 0's spheres), walls %g J/m^2; bonds break up to %g m apart; bonds at rest allow steps up to %g s (HertzMindlin.hpp JkrSpinStep)\n",
+    PetscCall(PetscViewerASCIIPrintf(viewer, "dem: adhesion: JKR (P6), surface energies per type (work of adhesion %g J/m^2 between type 0's spheres), walls %g J/m^2; bonds break up to %g m apart; bonds at rest allow steps up to %g s (HertzMindlin.hpp SpinStep)\n",
                                      (double)pair_.w, (double)wall_.w, (double)adhesionRange_, (double)jkrStepLimit_));
   if (sjkr_) PetscCall(PetscViewerASCIIPrintf(viewer, "dem: adhesion: SJKR (LIGGGHTS' cohesion sjkr, P6), cohesion energy density %g J/m^3\n", (double)sjkrDensity_));
   if (surfaceEnergyModulus_ > 0)

@@ -371,3 +371,62 @@ PetscErrorCode Dem::ComputeForcesWith(PetscReal dt) {
 }
 
 }  // namespace vofdem
+
+namespace vofdem {
+
+// The step the contacts allow as they are (HertzMindlin.hpp SpinContact, SpinStep): per local sphere the
+// sums of its contacts' spin stiffness and damping, from the particle pairs that touched at the last force
+// evaluation and the box faces (the -dem_walls contacts are left out: at most a few per sphere). Hertz
+// contacts at their overlap now, JKR at their contact radius, linear ones at k_n. Members of clumps move
+// with their clump's inertia and are left out. The smallest step over all ranks, times kContactStepSafety.
+// Called after ComputeForces, whose hot_ holds the positions, radii and masses (ghosts included).
+PetscErrorCode Dem::UpdateContactStepLimit() {
+  ParticleArrays a;
+  PetscReal      local = PETSC_MAX_REAL;
+
+  PetscFunctionBeginUser;
+  PetscCall(swarm_.GetArrays(&a));
+  const PetscInt n = a.n;
+  spinW2_.assign(n, 0), spinRate_.assign(n, 0);
+  const bool       multi = table_.Count() > 1;
+  const PetscReal *lo = grid_->Lower(), *hi = grid_->Upper();
+  auto stiffness = [&](const hertz::PairMaterial &c, PetscReal delta, PetscReal Rstar, const PetscReal *xi) {
+    if (linear_) return linearKn_;
+    if (jkr_) return 2 * c.Estar * xi[kJkrRadius];
+    return 2 * c.Estar * std::sqrt(Rstar * std::max(delta, (PetscReal)0));
+  };
+  for (size_t k = 0; k < walls_.Size(); ++k) {
+    if (!walls_.touching[k]) continue;
+    const PetscInt p = walls_.particle[k];
+    if (a.clump[p] >= 0) continue;
+    const int       face = walls_.wall[k], d = face / 2;
+    const PetscReal r = a.radius[p], delta = r - (face % 2 ? hi[d] - a.x[3 * p + d] : a.x[3 * p + d] - lo[d]);
+    const hertz::PairMaterial &c = multi ? table_.Wall(a.type[p]) : wall_;
+    hertz::SpinContact(c, stiffness(c, delta, r, &walls_.spring[kSpringWidth * k]), a.mass[p], a.mass[p], 0, &spinW2_[p], &spinRate_[p]);
+  }
+  const PeriodicImages &images = halo_.Images();
+  for (size_t k = 0; k < list_.Size(); ++k) {
+    if (!list_.touching[k]) continue;
+    const PetscInt   ia = list_.first[k], ib = list_.second[k];
+    const PetscReal *xa = hot_[ia].x, *xb = hot_[ib].x, *sh = images.Shift(pairImage_[k]);
+    const PetscReal  dx[3] = {(xa[0] - xb[0]) + sh[0], (xa[1] - xb[1]) + sh[1], (xa[2] - xb[2]) + sh[2]};
+    const PetscReal  delta = hot_[ia].r + hot_[ib].r - std::sqrt(dx[0] * dx[0] + dx[1] * dx[1] + dx[2] * dx[2]);
+    const hertz::PairMaterial &c = multi ? table_.Pair(list_.material[k]) : pair_;
+    const PetscReal Sn = stiffness(c, delta, list_.rstar[k], &list_.spring[kSpringWidth * k]), mstar = list_.sqrtMstar[k] * list_.sqrtMstar[k];
+    if (ia < n && a.clump[ia] < 0) hertz::SpinContact(c, Sn, mstar, hot_[ia].m, hot_[ib].r / hot_[ia].r, &spinW2_[ia], &spinRate_[ia]);
+    if (ib < n && a.clump[ib] < 0) hertz::SpinContact(c, Sn, mstar, hot_[ib].m, hot_[ia].r / hot_[ib].r, &spinW2_[ib], &spinRate_[ib]);
+  }
+  for (PetscInt p = 0; p < n; ++p)
+    if (spinW2_[p] > 0) local = std::min(local, hertz::SpinStep(spinW2_[p], spinRate_[p]));
+  PetscCall(swarm_.RestoreArrays(&a));
+  PetscCallMPI(MPI_Allreduce(&local, &contactStepLimit_, 1, MPIU_REAL, MPI_MIN, comm_));
+  if (contactStepLimit_ < PETSC_MAX_REAL) contactStepLimit_ *= kContactStepSafety;
+  if (!contactStepNoted_ && contactStepLimit_ < std::min(dtFactor_ * rayleighTime_, jkrStepLimit_)) {  // once a run: the banner named another basis
+    contactStepNoted_ = true;
+    PetscCall(PetscPrintf(comm_, "vofdem: dem: from t = %g s the contacts as they are allow steps of at most %g s, %.3g of the Rayleigh time, less than -dem_dt_factor gives (loaded, damped contacts; HertzMindlin.hpp SpinStep)\n",
+                          (double)time_, (double)contactStepLimit_, (double)(contactStepLimit_ / rayleighTime_)));
+  }
+  PetscFunctionReturn(0);
+}
+
+}  // namespace vofdem

@@ -126,6 +126,9 @@ PetscErrorCode Dem::ArchiveState(RankArchive &ar, SavedState &st) {
   // Appended 2026-11-27 (files written before it load without it: a restart of theirs on another rank
   // count starts the -dem_walls contacts without their springs).
   if (ar.HasMore()) PetscCall(ar.Array("wallset_ids", &st.wallSetIds));
+  // Appended 2026-11-29: the step the contacts allowed, measured every -dem_contact_step_every steps, so that
+  // a restart steps as the run did (files written before it keep the value SetUp measured from their state).
+  if (ar.HasMore()) PetscCall(ar.Scalar(&contactStepLimit_));
   PetscFunctionReturn(0);
 }
 

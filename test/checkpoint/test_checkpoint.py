@@ -67,14 +67,15 @@ SCENES = {
                    "-dem_friction 0.5 -seed 5 -dem_balance histogram -dem_balance_monitor 0".split(), 600, (600, 300)),
     # 150 spheres thrown down into the tungsten scene's STL funnel (192 triangles narrower than a sphere): from
     # step 100 on they touch it, each on several triangles at once; damped (e 0.1) and rough (mu 0.5), ~35 of
-    # them slide on it by step 500, where the restart evaluates the saved wall candidates and springs
+    # them slide on it by step 500 (by step 600 since the DEM step follows its damped contacts, Dem::UpdateContactStepLimit:
+    # e 0.1 lowers it), where the restart evaluates the saved wall candidates and springs
     # before its first rebuild (or, on another rank count, carries the springs by particle id).
     "demfunnel": ("-physics dem -grid_cells 8,8,8 -grid_lower -1.4e-3,-1.4e-3,2.2e-3 -grid_upper 1.4e-3,1.4e-3,4.7e-3 -gravity 0,0,-9.81 "
                   "-dem_radius 6e-5 -dem_youngs_modulus 1e6 -dem_fill_count 150 -dem_fill_mode random -dem_fill_lower -4.5e-4,-4.5e-4,3.4e-3 "
                   "-dem_fill_upper 4.5e-4,4.5e-4,4.5e-3 -dem_fill_velocity 0,0,-0.3 -dem_fill_velocity_spread 0.6 -dem_walls funnel "
                   "-dem_wall_funnel_type stl -dem_restitution 0.1 -dem_friction 0.5 -seed 7".split() +
                   ["-dem_wall_funnel_file", os.path.join(ROOT, "config", "scenes", "geometry", "funnel-1to20-outlet400um.stl")],
-                  500, (500, 100)),
+                  500, (600, 100)),
     # 60 spheres thrown down into a deletion box: from step ~70 on one goes every few steps. Each must go the
     # step its centre enters the box, also right after a restart, where the particles that can reach the box
     # before the next rebuild (ParticleSources::FindDeletionCandidates) come from the loaded state, not from the

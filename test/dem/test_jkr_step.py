@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""JKR bonds at rest and the DEM time step (HertzMindlin.hpp JkrSpinStep, Dem::SetUp):
+"""JKR bonds at rest and the DEM time step (HertzMindlin.hpp SpinStep, Dem::SetUp):
   - a pile of 100 soft, strongly adhesive spheres with low restitution (E 1e7 Pa, gamma 0.05 J/m^2, e 0.3,
     mu 0.5, R 0.1 mm) takes the step its bonds allow, below 0.3 Rayleigh times, and the banner says so;
   - at that step the pile comes to rest: kinetic energy below 1e-16 J at t = 0.2 s;

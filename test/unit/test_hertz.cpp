@@ -130,7 +130,7 @@ TEST(Rolling, CapLoadOfABondedContact) {
   EXPECT_EQ(h::RollingNormalLoad(h::RollingLoad::Adhesion, -1.0, 0.0), h::RollingNormalLoad(h::RollingLoad::Compression, -1.0, 0.0));
 }
 
-// JkrSpinStep is the stability bound of the leapfrog recurrence of a damped oscillator with the damping
+// SpinStep is the stability bound of the leapfrog recurrence of a damped oscillator with the damping
 // at the half-step velocity, x_{n+1} - x_n = (1 - c dt)(x_n - x_{n-1}) - w^2 dt^2 x_n: bounded just below
 // it, growing just above, for weak and strong damping. And a zero-load JKR contact is a0 wide: the
 // contact radius JkrNormal finds at zero overlap force.
@@ -145,7 +145,7 @@ TEST(Jkr, SpinStepIsTheLeapfrogStabilityBound) {
     return false;
   };
   for (double c : {0.0, 1e2, 1e4, 1e5}) {
-    const double w2 = 1e8, dt = h::JkrSpinStep(w2, c);
+    const double w2 = 1e8, dt = h::SpinStep(w2, c);
     EXPECT_NEAR(w2 * dt * dt + 2 * c * dt, 4.0, 1e-12);
     EXPECT_FALSE(grows(w2, c, 0.99 * dt)) << "c " << c;
     EXPECT_TRUE(grows(w2, c, 1.01 * dt)) << "c " << c;
@@ -158,4 +158,22 @@ TEST(Jkr, SpinStepIsTheLeapfrogStabilityBound) {
   const double d0 = a0 * a0 / R - std::sqrt(2 * M_PI * c.w * a0 / c.Estar);
   EXPECT_NEAR(h::JkrNormal(c, d0, R, &a).Fel, 0.0, 1e-9 * M_PI * c.w * R);
   EXPECT_NEAR(a, a0, 1e-10 * a0);
+}
+
+// SpinContact is the Gershgorin row sum of the spin modes: for a uniform spin w of a sphere and its
+// neighbours, a contact's tangential spring stretches by (R_i + R_j) w, averaged over the contact's
+// directions (2/3), and acts on I = 0.4 m R_i^2 at the lever R_i; at a wall (R_j = 0) half as much.
+TEST(Spin, ContactIsTheUniformSpinRowSum) {
+  const auto   c = h::MakePairMaterial(5e6, 0.28, 5e6, 0.28, 0.3, 0.5);
+  const double Ri = 5e-4, Rj = 1e-3, m = 1e-6, mstar = 0.8e-6, Sn = 200;
+  double       w2 = 0, rate = 0;
+  h::SpinContact(c, Sn, mstar, m, Rj / Ri, &w2, &rate);
+  const double kt = c.tStiff * Sn, gt = std::abs(c.k5) * std::sqrt(mstar * kt), I = 0.4 * m * Ri * Ri;
+  EXPECT_NEAR(w2, 2.0 / 3.0 * kt * Ri * (Ri + Rj) / I, 1e-12 * w2);
+  EXPECT_NEAR(rate, 2.0 / 3.0 * gt * Ri * (Ri + Rj) / I, 1e-12 * rate);
+  double ww2 = 0, wrate = 0, ew2 = 0, erate = 0;
+  h::SpinContact(c, Sn, mstar, m, 0, &ww2, &wrate);
+  h::SpinContact(c, Sn, mstar, m, 1, &ew2, &erate);
+  EXPECT_NEAR(ww2, 0.5 * ew2, 1e-12 * ew2);
+  EXPECT_NEAR(wrate, 0.5 * erate, 1e-12 * erate);
 }

@@ -54,13 +54,15 @@ public:
   // Creates the swarm on the grid's vertex DMDA, fills the insertion region, evaluates forces.
   // The grid is not const: -dem_balance may repartition it (DemBalance.cpp).
   PetscErrorCode SetUp(Grid &grid, const PetscReal gravity[3], std::uint64_t seed);
-  // Largest stable step: -dem_dt_factor times the Rayleigh time (P9), or less where JKR bonds at rest are
-  // stiffer than that covers (HertzMindlin.hpp JkrSpinStep).
-  PetscReal StableTimeStep() const { return std::min(dtFactor_ * rayleighTime_, jkrStepLimit_); }
+  // Largest stable step: -dem_dt_factor times the Rayleigh time (P9), or less where JKR bonds at rest or
+  // the contacts as they are (loaded, damped) are stiffer than that covers (HertzMindlin.hpp SpinStep).
+  PetscReal StableTimeStep() const { return std::min(std::min(dtFactor_ * rayleighTime_, jkrStepLimit_), contactStepLimit_); }
   PetscReal RayleighTime() const { return rayleighTime_; }
   // What StableTimeStep() is a fraction of, for the banner.
   const char *TimeStepBasis() const {
-    if (jkrStepLimit_ < dtFactor_ * rayleighTime_) return "dem JKR bonds at rest (0.8 x the stable step of a sphere spinning in 12 bonds, HertzMindlin.hpp JkrSpinStep)";
+    if (contactStepLimit_ < std::min(dtFactor_ * rayleighTime_, jkrStepLimit_))
+      return "dem contacts as they are (the stable step of the sphere whose contacts spin stiffest, HertzMindlin.hpp SpinStep; -dem_contact_step_every)";
+    if (jkrStepLimit_ < dtFactor_ * rayleighTime_) return "dem JKR bonds at rest (0.8 x the stable step of a sphere spinning in 12 bonds, HertzMindlin.hpp SpinStep)";
     return linear_ ? "dem (-dem_dt_factor x contact time/10 of the linear spring, P4)" : "dem (-dem_dt_factor x Rayleigh time, P9)";
   }
   PetscErrorCode Step(PetscReal dt);  // one velocity-Verlet step
@@ -139,6 +141,7 @@ private:
   PetscErrorCode Rebuild();                             // DemContacts.cpp: migrate, halo, list, springs
   void           JkrPairConstants();                    // DemContacts.cpp: jkrPairs_ for the list as it is
   PetscErrorCode ComputeForces(PetscReal dt);           // DemContacts.cpp
+  PetscErrorCode UpdateContactStepLimit();              // DemContacts.cpp: contactStepLimit_ from the contacts (collective)
   // cohesion: 0 none, 1 JKR, 2 SJKR; near: forces across a gap (van der Waals and/or lubrication)
   template <hertz::Rolling model, int cohesion, bool near, bool linear, bool multi>
   PetscErrorCode ComputeForcesWith(PetscReal dt);
@@ -226,7 +229,13 @@ private:
   PetscReal     gravity_[3] = {0, 0, 0};
   PetscReal     rayleighTime_ = 0;
   PetscReal     jkrStepLimit_ = PETSC_MAX_REAL;   // s, JKR bonds at rest (SetUp)
-  static constexpr PetscReal kJkrStepSafety = 0.8;  // of JkrSpinStep's stability bound
+  static constexpr PetscReal kJkrStepSafety = 0.8;  // of SpinStep's stability bound
+  // The contacts' own bound (UpdateContactStepLimit), measured every -dem_contact_step_every steps (0: never)
+  PetscReal     contactStepLimit_ = PETSC_MAX_REAL;  // s
+  PetscInt      contactStepEvery_ = 10;
+  bool          contactStepNoted_ = false;  // the note that the contacts bind the step is printed once
+  static constexpr PetscReal kContactStepSafety = 1.0;  // the bound of the stiffest sphere is a Gershgorin bound already (conservative)
+  std::vector<PetscReal> spinW2_, spinRate_;  // per local particle, reused
   PetscInt      rebuilds_   = 0;
   PetscInt      steps_      = 0;  // steps begun since SetUp (output schedule)
   DemOutputSettings out_;

@@ -97,22 +97,33 @@ inline PetscReal JkrBreakOverlap(const PairMaterial &c, PetscReal Rstar) {
 // whatever gravity does, so its stiffness S_n = 2 E* a0 does not vanish as a Hertz contact's does.
 inline PetscReal JkrZeroLoadRadius(const PairMaterial &c, PetscReal Rstar) { return std::cbrt(9 * PETSC_PI * c.w * Rstar * Rstar / (2 * c.Estar)); }
 
-// The stability of velocity Verlet for spheres held by JKR bonds at zero load. The stiffest mode is a
-// cluster spinning one way: each bond's tangential spring k_t = S_t and dashpot gamma_t (P3) resist the
-// slip of both surfaces, 2 R w per bond (R w against a wall), averaged over the bond directions (2/3),
-// against I = 0.4 m R^2: w^2 = sum f k_t / m and a damping rate c = sum f gamma_t / m over the bonds, f =
-// 10/3 (5/3 at a wall). JkrSpinBond adds one bond of R*, m* to a sphere of mass m; JkrSpinStep is the
-// largest dt for which the leapfrog recurrence of that damped oscillator (damping at the half-step
-// velocity, as the contact loop has it) is stable: w^2 dt^2 + 2 c dt < 4. A Hertz contact's stiffness grows
-// only with its load, which the Rayleigh time (P9) covers; a JKR bond of a soft, strongly adhesive powder
-// with low restitution is stiffer at rest than that, and at the Rayleigh step its piles never come to rest
-// (E 1e7 Pa, w 0.1 J/m^2, e 0.3, R 0.1 mm at 0.3 T_R: kinetic energy ~1e-10 J in a 100-sphere pile for ever).
-inline void JkrSpinBond(const PairMaterial &c, PetscReal Rstar, PetscReal mstar, PetscReal m, bool wall, PetscReal *w2, PetscReal *rate) {
-  const PetscReal kt = c.tStiff * 2 * c.Estar * JkrZeroLoadRadius(c, Rstar), f = wall ? 5.0 / 3.0 : 10.0 / 3.0;
+// The stability of velocity Verlet for spheres held by contacts. The stiffest mode is a cluster
+// spinning one way: each contact's tangential spring k_t = S_t and dashpot gamma_t = |k5| sqrt(m* S_t)
+// (P3) resist the slip of both surfaces, (R_i + R_j) w per contact (R_i w against a wall), averaged over
+// the contact directions (2/3), against I = 0.4 m R_i^2: w^2 = sum f k_t / m and a damping rate c = sum
+// f gamma_t / m over the contacts, f = (5/3)(1 + R_j/R_i) (10/3 for equal spheres, 5/3 at a wall). For a
+// whole packing these sums are Gershgorin's bound on the largest eigenvalue of its spin modes, so the
+// sphere with the smallest step bounds them all. SpinContact adds one contact of stiffness S_n and m* to
+// a sphere of mass m; SpinStep is the largest dt for which the leapfrog recurrence of that damped
+// oscillator (damping at the half-step velocity, as the contact loop has it) is stable:
+// w^2 dt^2 + 2 c dt < 4.
+//  - Hertz contacts stiffen with their load (S_n = 2 E* sqrt(R* delta)), which the Rayleigh time (P9)
+//    does not see: at the bottom of a 55 d bed of soft spheres (E 5 MPa, e 0.3, overlaps to 2 % of d)
+//    0.3 T_R is beyond this bound, and the lowest spheres kept spinning at 100 rad/s (Dem's contact step
+//    limit measures it from the contacts as they are).
+//  - A JKR bond is stiff at zero load (JkrSpinBond): a soft, strongly adhesive powder with low restitution
+//    at the Rayleigh step never came to rest (E 1e7 Pa, w 0.1 J/m^2, e 0.3, R 0.1 mm at 0.3 T_R: kinetic
+//    energy ~1e-10 J in a 100-sphere pile for ever).
+inline void SpinContact(const PairMaterial &c, PetscReal Sn, PetscReal mstar, PetscReal m, PetscReal radiusRatio, PetscReal *w2, PetscReal *rate) {
+  const PetscReal kt = c.tStiff * Sn, f = 5.0 / 3.0 * (1 + radiusRatio);
   *w2 += f * kt / m;
   *rate += f * std::abs(c.k5) * std::sqrt(mstar * kt) / m;
 }
-inline PetscReal JkrSpinStep(PetscReal w2, PetscReal rate) { return w2 > 0 ? (std::sqrt(rate * rate + 4 * w2) - rate) / w2 : PETSC_MAX_REAL; }
+inline PetscReal SpinStep(PetscReal w2, PetscReal rate) { return w2 > 0 ? (std::sqrt(rate * rate + 4 * w2) - rate) / w2 : PETSC_MAX_REAL; }
+// One JKR bond at zero load (equal spheres, or a sphere and a wall).
+inline void JkrSpinBond(const PairMaterial &c, PetscReal Rstar, PetscReal mstar, PetscReal m, bool wall, PetscReal *w2, PetscReal *rate) {
+  SpinContact(c, 2 * c.Estar * JkrZeroLoadRadius(c, Rstar), mstar, m, wall ? 0 : 1, w2, rate);
+}
 
 // What JKR needs of a pair besides its overlap, fixed by the material and R*: sqrt(a_c), k = sqrt(2 pi
 // w/E*), 1/R*, sqrt(8 pi w E*) and the break overlap. The neighbour list's pairs keep them
