@@ -50,3 +50,13 @@ vofdem_checkpoint_test(ranks_demfunnel_2to1 2 ranks demfunnel 2 1)
 vofdem_checkpoint_test(ranks_demfunnel_1to2 2 ranks demfunnel 1 2)
 # The fluid coupling's swarm fields only in coupled scenes; an older DEM-only checkpoint (with them) still restarts bitwise.
 vofdem_checkpoint_test(fluid_fields_2 2 fluidfields)
+# Restarts while the pressure preconditioner is reused (issue 55): at a step inside the reuse and at the last reused
+# step before a rebuild, BoomerAMG and PFMG, with particles (V6's sphere entry at its own size) and without.
+vofdem_checkpoint_test(reuse_sphereentry_1 1 reuse sphereentry 1 90)
+vofdem_checkpoint_test(reuse_sphereentry_2 2 reuse sphereentry 2 90)
+vofdem_checkpoint_test(reuse_sphereentry_pfmg_1 1 reuse sphereentrypfmg 1 90)
+vofdem_checkpoint_test(reuse_sphereentry_pfmg_2 2 reuse sphereentrypfmg 2 90)
+vofdem_checkpoint_test(reuse_liquidjet_1 1 reuse liquidjet 1 60)
+vofdem_checkpoint_test(reuse_liquidjet_2 2 reuse liquidjet 2 60)
+vofdem_checkpoint_test(reuse_dambreak_pfmg_1 1 reuse dambreak 1 60)
+vofdem_checkpoint_test(reuse_dambreak_pfmg_2 2 reuse dambreak 2 60)

@@ -195,6 +195,7 @@ PetscErrorCode Flow::BoundaryPressure() {
     for (int f = 0; f < 6; ++f)
       if (bc_.Face(f).type == FlowBoundaryType::Outflow) PetscCall(pressure_.SetBoundary(f, PressureBoundary::Dirichlet, faces ? bc_.Face(f).pressure : 0));
     PetscCall(pressure_.SetCoefficient(beta_, "flow: eps/rho"));  // the Dirichlet faces' part of the rhs
+    coefficientPending_ = false;
     PetscFunctionReturn(0);
   };
   PetscCall(values(true));
@@ -264,8 +265,9 @@ PetscErrorCode Flow::UpdatePropertyLocals() {
     PetscCall(DMGlobalToLocal(sg_.Cells(), eps_, INSERT_VALUES, epsLocal_));
     PetscCall(bc_.FillCellGhosts(sg_, epsLocal_));
     if (propertyGhosts_) PetscCall(propertyGhosts_(propertyGhostsCtx_, *this, epsLocal_, emLocal_, betaLocal_));
-    // with a relaxation the projection sets its own coefficient (FlowDragProjection.cpp)
-    if (!relaxRate_[0]) PetscCall(pressure_.SetCoefficient(beta_, "flow: eps/rho"));
+    // The projection sets the pressure coefficient from beta_ before its solve (SetPressureCoefficient);
+    // with a relaxation it forms its own (FlowDragProjection.cpp).
+    coefficientPending_ = true;
     propertiesDirty_ = false;
     viscousStale_ = PETSC_TRUE;  // the viscous matrix must be rebuilt, not only its diagonal
   }
@@ -445,7 +447,7 @@ PetscErrorCode Flow::Save(PetscViewer viewer) const {
   if (hdf5) {  // properties changed since the pressure coefficient was last set (a free surface moved at the end of the step)
     // An HDF5 attribute, so that checkpoints written before it load as they did; a binary viewer
     // (in-memory Save/Load, ex27) has no attributes and keeps the former behaviour (none pending).
-    const PetscInt pending = propertiesDirty_ ? 1 : 0;
+    const PetscInt pending = propertiesDirty_ || coefficientPending_ ? 1 : 0;
     PetscCall(PetscViewerHDF5WriteAttribute(viewer, nullptr, "flow_properties_pending", PETSC_INT, &pending));
   }
   PetscMPIInt rank;
@@ -539,6 +541,7 @@ PetscErrorCode Flow::Load(PetscViewer viewer) {
   PetscCall(pressure_.Load(viewer));
   if (pending) propertiesDirty_ = true;
   else {
+    coefficientPending_ = false;  // the saved run had set this coefficient: its operator, with the restored preconditioner
     PetscCall(pressure_.SetOperatorAfterLoad(beta_, "flow: eps/rho"));
     PetscCall(pressure_.RestoreReuseFlag(s[2] > 0 ? PETSC_TRUE : PETSC_FALSE));
   }

@@ -63,6 +63,10 @@ PetscErrorCode Flow::Project(PetscReal dt, Vec *) {
   epsChangeDt_ = dt;
   PetscCall(Divergence(divRhs_, -1 / dt, &dummy));
   if (relaxRate_[0]) PetscCall(DragProjectionCoefficient(dt));  // the drag acts on the correction too
+  else if (coefficientPending_) {
+    PetscCall(pressure_.SetCoefficient(beta_, "flow: eps/rho"));
+    coefficientPending_ = false;
+  }
   const Vec coefficient = relaxRate_[0] ? dragBetaLocal_ : betaLocal_;
   if (!userPressureAtol_) {
     // The rhs is an imbalance of much larger terms (a still tank: gravity against the pressure), so a

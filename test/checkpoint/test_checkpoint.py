@@ -14,6 +14,8 @@
                         ends bitwise equal to the uninterrupted run.
   diskfull RANKS        a checkpoint that does not fit (file-size limit; a full tmpfs where mounting is
                         allowed): one line, non-zero exit, the previous checkpoint intact.
+  reuse SCENE RANKS M   restarts at a step where the pressure preconditioner is reused and at the last reused step
+                        before a rebuild, against M steps uninterrupted: bitwise, the same reuse decisions.
   final RANKS           -checkpoint_final 1 alone: the last step's checkpoint only, and a run goes on from it.
   fluidfields           a DEM-only run's particles hold no fluid_* swarm fields (its checkpoint none of their data), a
                         coupled run's do; a DEM-only checkpoint written before that (test/checkpoint/data, with the
@@ -117,7 +119,20 @@ SCENES = {
                    "-vof_surface_tension 0.072 -coupling_contact_angle 120 "
                    "-dem_radius 5e-4 -dem_density 2500 -dem_fill_count 20 -dem_fill_lower 0,0,0.0075 -dem_fill_upper 0.008,0.008,0.012 -dem_fill_jitter 0.5 "
                    "-coupling_fluid_drag implicit -dt 1e-3 -dt_force -seed 7".split(), 15, (15, 15)),
-}  # (options, N of the bitwise case, (restart step, steps after it) of the rank-count case)
+    # V6's sphere entering water at its own size (8 x 8 x 67 cells, the seed's fixed step of 1 ms): the pressure
+    # preconditioner is reused while the sphere falls through the air (steps 1-72) and rebuilt as it nears the
+    # surface. The reuse case restarts at a step inside the reuse and at the last reused step before a rebuild.
+    "sphereentry": ["-options_file_yaml", os.path.join(ROOT, "config", "scenes", "sphere-entry.yaml"), "-final_time", "1e30"],
+    "sphereentrypfmg": ["-options_file_yaml", os.path.join(ROOT, "config", "scenes", "sphere-entry.yaml"), "-final_time", "1e30",
+                        "-flow_pressure_pc", "pfmg", "-grid_cells", "8,8,68"],
+    # Without particles: the water jet through open faces (BoomerAMG) and the dam break (PFMG), whose moving interfaces
+    # change the coefficient by more than the reuse threshold every step: the preconditioner kept for 3 solves.
+    "liquidjet": ["-options_file_yaml", os.path.join(ROOT, "config", "scenes", "liquid-jet.yaml"), "-grid_cells", "24,12,2", "-final_time", "1e30",
+                  "-flow_pressure_reuse_steps", "3"],
+    "dambreak": ["-options_file_yaml", os.path.join(ROOT, "config", "scenes", "dam-break.yaml"), "-grid_cells", "40,20,2",
+                 "-grid_upper", "0.28575,0.142875,0.0142875", "-vof_boxes", "0,0,0,0.05715,0.1143,0.0142875", "-final_time", "1e30",
+                 "-flow_pressure_reuse_steps", "3"],
+}  # (options, N of the bitwise case, (restart step, steps after it) of the rank-count case); the reuse case's: options only
 QUIET = "-monitor_every 1000000 -monitor_timing 0".split()
 
 
@@ -175,6 +190,47 @@ def case_bitwise(exe, scene, ranks):
         d = bitwise_diff(ckpt(a, 2 * n), ckpt(w, 2 * n))
         check(len(os.listdir(w)) >= 2 and not d, "-checkpoint_minutes 0.00001: %d checkpoints, final state bitwise unchanged (differing: %s)" % (len(os.listdir(w)), d))
     check(bitwise_diff(ckpt(b, n), ckpt(b, 2 * n)) != [], "control: the comparison sees step %d differ from step %d" % (n, 2 * n))
+    shutil.rmtree(tmp)
+
+
+def case_reuse(exe, scene, ranks, steps):
+    """Restarts where the pressure preconditioner is being reused (issue 55): the uninterrupted run writes a checkpoint
+    every step and its monitor every step; the restart points are a step after which the next solve reuses a
+    preconditioner built earlier (the monitor of both says "pc reused"), and, where the run has one, the last
+    reused step before a rebuild. Each restart must end bitwise on the uninterrupted run's final state, with the
+    same reuse decisions and iteration counts step by step."""
+    tmp = tempfile.mkdtemp(prefix="vofdem-reuse-")
+    a = os.path.join(tmp, "a")
+    base = SCENES[scene] + QUIET + ["-monitor_every", "1", "-max_steps", str(steps)]
+    go = lambda args: subprocess.run(mpi(ranks) + [exe] + base + args, capture_output=True, text=True, timeout=300, env=ENV)
+    p = go(["-checkpoint_dir", a, "-checkpoint_every", "1", "-checkpoint_keep", "100000", "-output_dir", a + "-out"])
+    if p.returncode != 0:
+        print(p.stdout + p.stderr)
+        raise SystemExit("FAIL: the uninterrupted run exited %d" % p.returncode)
+    rows = lambda folder: {int(r[0]): r for r in (l.rstrip("\n").split(",") for l in open(os.path.join(folder, "monitor.csv"))) if r[0] != "step"}
+    head = open(os.path.join(a + "-out", "monitor.csv")).readline().rstrip("\n").split(",")
+    col, its = head.index("pressure_pc_reused"), head.index("pressure_iterations")
+    ref = rows(a + "-out")
+    reused = {s: ref[s][col] == "1" for s in ref}
+    check(sorted(ref) == list(range(steps + 1)), "%s: the uninterrupted run's monitor has every step 0-%d" % (scene, steps))
+    inside = [s for s in range(2, steps - 2) if reused.get(s) and reused.get(s + 1)]
+    edge = [s for s in range(2, steps - 2) if reused.get(s) and reused.get(s + 1) is False]
+    check(inside, "%s: the uninterrupted run reuses the preconditioner on consecutive steps (%d of %d steps reused)" % (scene, sum(reused.values()), steps))
+    points = ([inside[len(inside) // 2]] if inside else []) + ([edge[-1]] if edge else [])
+    for n in points:
+        b = os.path.join(tmp, "b%d" % n)
+        os.makedirs(b)
+        shutil.copy(ckpt(a, n), b)
+        p = go(["-checkpoint_dir", b, "-checkpoint_every", str(steps), "-restart", "latest", "-output_dir", b + "-out"])
+        if p.returncode != 0:
+            print(p.stdout + p.stderr)
+        got = rows(b + "-out") if p.returncode == 0 else {}
+        same = all(s in got and got[s][col] == ref[s][col] and got[s][its] == ref[s][its] for s in range(n + 1, steps + 1))
+        d = bitwise_diff(ckpt(a, steps), ckpt(b, steps)) if p.returncode == 0 else ["(the restart failed)"]
+        what = "pc reused at steps %d and %d" % (n, n + 1) if reused[n + 1] else "pc reused at step %d, rebuilt at %d" % (n, n + 1)
+        check(same, "%s on %d rank(s), restart at step %d (%s): the same reuse decisions and pressure iterations in every later step" % (scene, ranks, n, what))
+        check(not d, "%s on %d rank(s), restart at step %d (%s): step %d bitwise the uninterrupted run's (differing: %d datasets %s)"
+              % (scene, ranks, n, what, steps, len(d), d[:4]))
     shutil.rmtree(tmp)
 
 
@@ -446,6 +502,8 @@ def main():
     os.chdir(work)  # the runs' own outputs (the cavity scene's profile) stay out of the build folder
     if case == "bitwise":
         case_bitwise(exe, args[0], int(args[1]))
+    elif case == "reuse":
+        case_reuse(exe, args[0], int(args[1]), int(args[2]))
     elif case == "ranks":
         case_ranks(exe, args[0], int(args[1]), int(args[2]))
     elif case == "signal":

@@ -211,6 +211,10 @@ private:
   FlowSummary last_;
   PetscBool   viscousStale_ = PETSC_TRUE;  // properties changed since the viscous matrix was assembled
   bool        propertiesDirty_ = true;
+  // beta_ changed since the pressure operator was last set: the projection sets it (and decides on
+  // reusing the preconditioner) right before its solve, never a query such as StableTimeStep, so that a
+  // banner or a time-step choice leaves the solver's state as the step alone would (restarts, issue 55).
+  bool        coefficientPending_ = false;
   bool        viscosityJump_ = false;  // mu not uniform (two phases): the transpose term's limit applies (FlowViscousLimit.cpp)
   PetscLogEvent evExplicit_ = 0, evPredict_ = 0, evProject_ = 0, evGhosts_ = 0, evViscousAssemble_ = 0;
 };
