@@ -76,6 +76,10 @@ vofdem_bad_input(not_an_integer     "option -max_steps: '2.5' is not an integer"
 vofdem_bad_input(out_of_range       "option -dem_restitution: 1.5 is out of range" ${_dem} -dem_restitution 1.5)
 vofdem_bad_input(sort_every_negative "option -dem_sort_every: -1 is out of range" ${_dem} -dem_sort_every -1)
 vofdem_bad_input(vector_length      "option -gravity: needs 3 comma-separated"     ${_dem} -gravity 0,-9.81)
+# Issue 55: requests that cannot fit refused up front (not std::bad_alloc and a core dump).
+vofdem_bad_input(random_fill_too_dense "option -dem_fill_count: 2000000000 particles fill .* of the fill region's volume. a random fill of equal spheres stops at its jamming limit 0.3841" ${_dem} -dem_radius 1e-4 -dem_fill_mode random -dem_fill_count 2000000000)
+vofdem_bad_input(random_fill_memory "option -dem_fill_count: 2000000000 particles of a random fill \\(every rank places all of them\\) need at least .* on each rank, .* are available" -physics dem -grid_upper 10,10,10 -grid_cells 4,4,4 -dem_radius 1e-4 -dem_fill_mode random -dem_fill_count 2000000000)
+vofdem_bad_input(lattice_fill_memory "option -dem_fill_count: 2000000000 particles \\(their swarm fields, shared among the ranks\\) need at least .* on each rank, .* are available" -physics dem -grid_upper 10,10,10 -grid_cells 4,4,4 -dem_radius 1e-4 -dem_fill_count 2000000000)
 vofdem_bad_input(unused_option      "unknown or unused option -dem_radus"          ${_dem} -dem_radus 1e-3)
 vofdem_bad_input(stop_kinetic_no_dem "option -stop_kinetic_energy: it is the particles' energy" -physics flow -grid_upper 0.01,0.01,0.01 -stop_kinetic_energy 1e-9)
 vofdem_bad_input(stop_kinetic_after_alone "option -stop_kinetic_energy_after: no -stop_kinetic_energy" ${_dem} -stop_kinetic_energy_after 0.1)

@@ -1,5 +1,6 @@
 #include "vofdem/dem/Dem.hpp"
 
+#include "vofdem/core/MemoryBudget.hpp"
 #include "vofdem/core/Random.hpp"
 #include "vofdem/core/Runtime.hpp"
 #include "vofdem/dem/RandomFill.hpp"
@@ -72,6 +73,11 @@ PetscErrorCode Dem::Fill(std::uint64_t seed) {
                      fillCount_, total, (double)fillSpacing_);
   const PetscInt64 want = fillCount_ < 0 ? total : fillCount_;
   if (want == 0) VofdemInputError(comm_, "options -dem_fill_*: the fill region is too small for a single particle of radius %g m", (double)rFill);
+  {  // the ranks share the lattice: the busiest holds at least its share
+    PetscMPIInt size;
+    PetscCallMPI(MPI_Comm_size(comm_, &size));
+    PetscCall(CheckMemoryRequest(comm_, "-dem_fill_count", want, swarm_.BytesPerParticle() / size, "particles (their swarm fields, shared among the ranks)"));
+  }
 
   auto centre = [&](PetscInt64 id, PetscReal x[3]) {
     const PetscInt64 idx[3] = {id % n[0], (id / n[0]) % n[1], id / ((PetscInt64)n[0] * n[1])};
@@ -120,6 +126,24 @@ PetscErrorCode Dem::FillRandom(std::uint64_t seed) {
                        (double)req.lower[d], (double)req.upper[d], "xyz"[d], (double)grid_->Lower()[d], (double)grid_->Upper()[d]);
     // Across a whole periodic direction the fill has no faces: no radius-wide gap at the seam.
     req.periodic[d] = grid_->Periodic(d) && req.lower[d] == grid_->Lower()[d] && req.upper[d] == grid_->Upper()[d];
+  }
+  {  // up front: what cannot fit the region or the memory is refused before anything is allocated
+    PetscReal region = 1;
+    for (int d = 0; d < 3; ++d) region *= req.upper[d] - req.lower[d];
+    const PetscReal mean = 4.0 / 3.0 * PETSC_PI * fillSizes_.MeanCube();
+    const double    count = fillCount_ > 0 ? (double)fillCount_ : fillFraction_ * region / mean;
+    // Random sequential addition of equal spheres cannot pass its jamming limit (0.3841); no packing passes 1.
+    const PetscReal limit = fillSizes_.MaxRadius() == fillSizes_.MinRadius() ? 0.3841 : 1.0;
+    if (fillCount_ > 0 && fillCount_ * mean > limit * region)
+      VofdemInputError(comm_, "option -dem_fill_count: %" PetscInt_FMT " particles fill %.3g of the fill region's volume; a random fill %s (-dem_fill_mode lattice packs denser)",
+                       fillCount_, (double)(fillCount_ * mean / region), limit < 1 ? "of equal spheres stops at its jamming limit 0.3841" : "cannot pass 1");
+    if (count > (double)PETSC_MAX_INT)
+      VofdemInputError(comm_, "option -dem_fill_volume_fraction: %.3g of the region is about %.3g particles, more than this build's 32-bit indices allow (%d)", (double)fillFraction_, count, (int)PETSC_MAX_INT);
+    // every rank places all of them (RandomFill.cpp: radii, order, centres and the hash's copy, 84 bytes each), then keeps its own
+    PetscMPIInt size;
+    PetscCallMPI(MPI_Comm_size(comm_, &size));
+    PetscCall(CheckMemoryRequest(comm_, fillCount_ > 0 ? "-dem_fill_count" : "-dem_fill_volume_fraction", (PetscInt64)count, 84.0 + swarm_.BytesPerParticle() / size,
+                                 "particles of a random fill (every rank places all of them)"));
   }
   req.count    = fillCount_;
   req.fraction = fillFraction_;

@@ -80,6 +80,14 @@ public:
 
   DM       Dm() const { return swarm_; }
   PetscErrorCode GlobalCount(PetscInt *n) const;
+  // The bytes one particle's registered fields take (DMSwarm's own coordinates, pid, cell and rank included):
+  // the least a particle costs, for refusing requests that cannot fit (CheckMemoryRequest). Valid after Create.
+  double BytesPerParticle() const {
+    PetscInt reals = 3 * 6 + 2 + (rigidRegistered_ ? kRigidWidth : 0) + 3;  // velocity ... torque, radius, mass; rigid; coordinates
+    if (fluidRegistered_)
+      for (const SwarmFieldWidth &f : kFluidFields) reals += f.width;
+    return 8.0 * reals + 8 + 4 + 8 + 8 + 4 + 4;  // id, type, clump; DMSwarm_pid, _cellid, _rank
+  }
 
   // The arrays come from a cache of the fields' addresses: DMSwarmGetField finds a field by comparing its
   // name with every registered one (twice), and the 23 lookups of one GetArrays took ~10 us, which a DEM
