@@ -6,6 +6,7 @@ static const char help[] = "Spheres dropped into a closed box: lattice fill with
 
 #include "vofdem/core/Runtime.hpp"
 #include "vofdem/core/Simulation.hpp"
+#include "vofdem/examples/Help.hpp"
 
 #include <petscdmswarm.h>
 
@@ -30,6 +31,11 @@ static PetscErrorCode Run() {
   PetscReal          z;
 
   PetscFunctionBeginUser;
+  {
+    PetscBool help;
+    PetscCall(vofdem::example::Help(&help));  // -help lists the options and runs nothing
+    if (help) PetscFunctionReturn(0);
+  }
   PetscCall(PetscOptionsGetInt(nullptr, nullptr, "-short_steps", &shortSteps, nullptr));
   PetscCall(PetscOptionsGetInt(nullptr, nullptr, "-print_every", &printEvery, nullptr));
   PetscCall(PetscOptionsGetInt(nullptr, nullptr, "-settle_steps", &settleSteps, nullptr));

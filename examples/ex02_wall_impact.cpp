@@ -7,6 +7,7 @@ static const char help[] = "Verification D1 (sphere-wall variant): normal impact
 
 #include "vofdem/core/Runtime.hpp"
 #include "vofdem/core/Simulation.hpp"
+#include "vofdem/examples/Help.hpp"
 
 #include <cstdio>
 #include <string>
@@ -71,6 +72,11 @@ static PetscErrorCode Run() {
   PetscInt        stepsPerContact = 200, failures = 0;
 
   PetscFunctionBeginUser;
+  {
+    PetscBool help;
+    PetscCall(vofdem::example::Help(&help));  // -help lists the options and runs nothing
+    if (help) PetscFunctionReturn(0);
+  }
   PetscCall(PetscOptionsGetInt(nullptr, nullptr, "-steps_per_contact", &stepsPerContact, nullptr));
   // One particle a gap of R/100 above the floor of a 10 R box, the same material for the wall.
   PetscCall(SetOption("-physics", "dem"));

@@ -9,6 +9,7 @@ static const char help[] = "Verification D1 (two spheres) and D2 (oblique impact
 #include "vofdem/core/Runtime.hpp"
 #include "vofdem/core/Simulation.hpp"
 #include "vofdem/io/TextFile.hpp"
+#include "vofdem/examples/Help.hpp"
 
 #include <cstdio>
 #include <string>
@@ -120,6 +121,11 @@ static PetscErrorCode Run() {
   const PetscReal v0 = 0.5;
 
   PetscFunctionBeginUser;
+  {
+    PetscBool help;
+    PetscCall(vofdem::example::Help(&help));  // -help lists the options and runs nothing
+    if (help) PetscFunctionReturn(0);
+  }
   PetscCall(PetscOptionsGetInt(nullptr, nullptr, "-steps_per_contact", &stepsPerContact, nullptr));
   // Options a scene file would hold; PetscOptionsSetValue keeps anything given on the command line out.
   PetscCall(PetscOptionsInsertString(nullptr, "-physics dem -grid_cells 2,2,2 -grid_upper 0.01,0.01,0.01 -gravity 0,0,0 "

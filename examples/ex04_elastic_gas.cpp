@@ -11,6 +11,7 @@ static const char help[] = "Verification D4: an elastic gas of spheres in a clos
 
 #include "vofdem/core/Runtime.hpp"
 #include "vofdem/core/Simulation.hpp"
+#include "vofdem/examples/Help.hpp"
 
 #include <cmath>
 #include <cstdio>
@@ -48,6 +49,11 @@ static PetscErrorCode Run() {
   PetscInt  halvings = 1;
 
   PetscFunctionBeginUser;
+  {
+    PetscBool help;
+    PetscCall(vofdem::example::Help(&help));  // -help lists the options and runs nothing
+    if (help) PetscFunctionReturn(0);
+  }
   PetscCall(PetscOptionsGetReal(nullptr, nullptr, "-contacts_time", &contactTimes, nullptr));
   PetscCall(PetscOptionsGetReal(nullptr, nullptr, "-steps_per_contact", &divisor, nullptr));
   PetscCall(PetscOptionsGetInt(nullptr, nullptr, "-halvings", &halvings, nullptr));

@@ -7,6 +7,7 @@ static const char help[] = "Verification D5: rolling resistance (P5) of a sphere
 #include "vofdem/core/Runtime.hpp"
 #include "vofdem/core/Simulation.hpp"
 #include "vofdem/io/TextFile.hpp"
+#include "vofdem/examples/Help.hpp"
 
 #include <cstdio>
 #include <string>
@@ -57,6 +58,11 @@ static PetscErrorCode Run() {
   Rolled          cdt, epsd;
 
   PetscFunctionBeginUser;
+  {
+    PetscBool help;
+    PetscCall(vofdem::example::Help(&help));  // -help lists the options and runs nothing
+    if (help) PetscFunctionReturn(0);
+  }
   PetscCall(PetscOptionsInsertString(nullptr, "-physics dem -grid_cells 2,2,2 -grid_upper 0.01,0.01,0.01 -gravity 0,0,-9.81 -dem_radius 1e-3 "
                                               "-dem_restitution 0.1 -dem_friction 0.5"));
   PetscCall(Roll("cdt", R, v0, muR, 2 * tStop, &cdt));

@@ -6,6 +6,7 @@ static const char help[] = "Verification D3: JKR adhesion (P6) pulled apart slow
 #include "vofdem/core/Runtime.hpp"
 #include "vofdem/core/Simulation.hpp"
 #include "vofdem/io/TextFile.hpp"
+#include "vofdem/examples/Help.hpp"
 
 #include <cstdio>
 #include <string>
@@ -77,6 +78,11 @@ static PetscErrorCode Run() {
   const PetscReal Estar = vofdem::hertz::EffectiveModulus(E, nu, E, nu), w = 2 * gamma_, start = 1e-9;
 
   PetscFunctionBeginUser;
+  {
+    PetscBool help;
+    PetscCall(vofdem::example::Help(&help));  // -help lists the options and runs nothing
+    if (help) PetscFunctionReturn(0);
+  }
   // Heavy spheres (density 1e12) pulled at 0.1 mm/s, 1e-6 s steps: 1e-10 m per step against a
   // break overlap of about 1e-7 m. No gravity, no damping, no friction.
   PetscCall(PetscOptionsInsertString(nullptr, "-physics dem -grid_cells 2,2,2 -grid_upper 0.01,0.01,0.01 -gravity 0,0,0 -dem_radius 1e-3 "

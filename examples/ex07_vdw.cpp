@@ -6,6 +6,7 @@ static const char help[] = "Van der Waals attraction (P7, Hamaker) between two s
 #include "vofdem/core/Runtime.hpp"
 #include "vofdem/core/Simulation.hpp"
 #include "vofdem/io/TextFile.hpp"
+#include "vofdem/examples/Help.hpp"
 
 #include <cstdio>
 
@@ -54,6 +55,11 @@ static PetscErrorCode Run() {
   PetscInt failures = 0;
 
   PetscFunctionBeginUser;
+  {
+    PetscBool help;
+    PetscCall(vofdem::example::Help(&help));  // -help lists the options and runs nothing
+    if (help) PetscFunctionReturn(0);
+  }
   // Very heavy spheres (density 1e15) do not move measurably in one 1e-9 s step.
   PetscCall(PetscOptionsInsertString(nullptr, "-physics dem -grid_cells 2,2,2 -grid_upper 0.01,0.01,0.01 -gravity 0,0,0 -dem_radius 5e-5 -dem_density 1e15 "
                                               "-dem_hamaker 4.3e-20 -dem_vdw_min_gap 0.165e-9 -dem_vdw_range 1e-6 -dem_particles_file ex07_particles.csv -dt 1e-9"));

@@ -7,6 +7,7 @@ static const char help[] = "Verification of the linear spring-dashpot (P4): two 
 #include "vofdem/core/Runtime.hpp"
 #include "vofdem/core/Simulation.hpp"
 #include "vofdem/io/TextFile.hpp"
+#include "vofdem/examples/Help.hpp"
 
 #include <cstdio>
 
@@ -61,6 +62,11 @@ static PetscErrorCode Run() {
   const PetscReal m = rho * 4.0 / 3.0 * PETSC_PI * R * R * R, mstar = m / 2, w0 = PetscSqrtReal(kn / mstar);
 
   PetscFunctionBeginUser;
+  {
+    PetscBool help;
+    PetscCall(vofdem::example::Help(&help));  // -help lists the options and runs nothing
+    if (help) PetscFunctionReturn(0);
+  }
   PetscCall(PetscOptionsInsertString(nullptr, "-physics dem -grid_cells 2,2,2 -grid_upper 0.01,0.01,0.01 -gravity 0,0,0 -dem_radius 1e-3 -dem_density 2500 "
                                               "-dem_contact linear -dem_linear_stiffness 1e5 -dem_particles_file ex08_particles.csv"));
   PetscCall(PetscOptionsGetInt(nullptr, nullptr, "-steps_per_contact", &stepsPerContact, nullptr));

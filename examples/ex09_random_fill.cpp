@@ -7,6 +7,7 @@ static const char help[] = "Random non-overlapping fill (-dem_fill_mode random) 
 #include "vofdem/core/Runtime.hpp"
 #include "vofdem/core/Simulation.hpp"
 #include "vofdem/dem/RandomFill.hpp"
+#include "vofdem/examples/Help.hpp"
 
 #include <petsctime.h>
 
@@ -45,6 +46,11 @@ static PetscErrorCode Run() {
   PetscInt           failures = 0;
 
   PetscFunctionBeginUser;
+  {
+    PetscBool help;
+    PetscCall(vofdem::example::Help(&help));  // -help lists the options and runs nothing
+    if (help) PetscFunctionReturn(0);
+  }
   PetscCall(PetscOptionsGetBool(nullptr, nullptr, "-timing", &timing, nullptr));
   if (timing) PetscCall(Timing());
   PetscCall(PetscOptionsSetValue(nullptr, "-physics", "dem"));

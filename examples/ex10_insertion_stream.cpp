@@ -9,6 +9,7 @@ static const char help[] = "Insertion streams and a deletion box. Source a feeds
 
 #include "vofdem/core/Runtime.hpp"
 #include "vofdem/core/Simulation.hpp"
+#include "vofdem/examples/Help.hpp"
 
 #include <cmath>
 
@@ -17,6 +18,11 @@ static PetscErrorCode Run() {
   PetscInt           failures = 0;
 
   PetscFunctionBeginUser;
+  {
+    PetscBool help;
+    PetscCall(vofdem::example::Help(&help));  // -help lists the options and runs nothing
+    if (help) PetscFunctionReturn(0);
+  }
   const char *opts[][2] = {{"-physics", "dem"},
                            {"-grid_cells", "4,4,8"},
                            {"-grid_upper", "0.01,0.01,0.02"},

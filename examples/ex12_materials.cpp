@@ -8,6 +8,7 @@ static const char help[] = "Particle types with their own materials (config/mate
 #include "vofdem/core/Runtime.hpp"
 #include "vofdem/core/Simulation.hpp"
 #include "vofdem/io/TextFile.hpp"
+#include "vofdem/examples/Help.hpp"
 
 #include <cstdio>
 #include <string>
@@ -132,6 +133,11 @@ static PetscErrorCode Run() {
   const PetscReal v0 = 0.5;
 
   PetscFunctionBeginUser;
+  {
+    PetscBool help;
+    PetscCall(vofdem::example::Help(&help));  // -help lists the options and runs nothing
+    if (help) PetscFunctionReturn(0);
+  }
   PetscCall(PetscOptionsInsertString(nullptr, "-physics dem -grid_cells 2,2,2 -grid_upper 0.01,0.01,0.01 -gravity 0,0,0 -dem_radius 1e-3 "
                                               "-dem_types glass,steel -dem_type_glass_material glass -dem_type_steel_material steel"));
   // Reference: Hertz contact time of the unlike pair (E* from both materials, R*, m* of the pair).

@@ -8,6 +8,7 @@ static const char help[] = "SJKR cohesion (P6, LIGGGHTS' definition) and lubrica
 #include "vofdem/core/Runtime.hpp"
 #include "vofdem/core/Simulation.hpp"
 #include "vofdem/io/TextFile.hpp"
+#include "vofdem/examples/Help.hpp"
 
 #include <cmath>
 #include <cstdio>
@@ -89,6 +90,11 @@ static PetscErrorCode Run() {
   const PetscReal Estar = vofdem::hertz::EffectiveModulus(E, nu, E, nu), m = rho * 4.0 / 3.0 * PETSC_PI * R * R * R;
 
   PetscFunctionBeginUser;
+  {
+    PetscBool help;
+    PetscCall(vofdem::example::Help(&help));  // -help lists the options and runs nothing
+    if (help) PetscFunctionReturn(0);
+  }
   PetscCall(PetscOptionsInsertString(nullptr, "-physics dem -grid_cells 2,2,2 -grid_upper 0.01,0.01,0.01 -gravity 0,0,0 -dem_radius 1e-3 "
                                               "-dem_density 2500 -dem_youngs_modulus 1e8 -dem_poisson_ratio 0.28 -monitor_every 1000000"));
   // SJKR: equilibrium (4/3) E* sqrt(R*) delta^1.5 = k A(delta); two spheres: R* = R/2, A = pi (R delta - delta^2/4)

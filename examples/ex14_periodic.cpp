@@ -11,6 +11,7 @@ static const char help[] = "Periodic boundaries (-grid_periodic): a box periodic
 #include "vofdem/core/Runtime.hpp"
 #include "vofdem/core/Simulation.hpp"
 #include "vofdem/io/TextFile.hpp"
+#include "vofdem/examples/Help.hpp"
 
 #include <petscdmswarm.h>
 
@@ -172,6 +173,11 @@ static PetscErrorCode Run() {
   PetscBool seam;
 
   PetscFunctionBeginUser;
+  {
+    PetscBool help;
+    PetscCall(vofdem::example::Help(&help));  // -help lists the options and runs nothing
+    if (help) PetscFunctionReturn(0);
+  }
   PetscCall(PetscOptionsGetString(nullptr, nullptr, "-case", name, sizeof name, nullptr));
   PetscCall(PetscStrcmp(name, "seam", &seam));
   if (seam) PetscCall(Seam(&failures));

@@ -9,6 +9,7 @@ static const char help[] = "Load balancing (-dem_balance histogram): spheres thr
 
 #include "vofdem/core/Runtime.hpp"
 #include "vofdem/core/Simulation.hpp"
+#include "vofdem/examples/Help.hpp"
 
 #include <petscdmswarm.h>
 
@@ -22,6 +23,11 @@ static PetscErrorCode Run() {
   PetscMPIInt        size;
 
   PetscFunctionBeginUser;
+  {
+    PetscBool help;
+    PetscCall(vofdem::example::Help(&help));  // -help lists the options and runs nothing
+    if (help) PetscFunctionReturn(0);
+  }
   PetscCall(PetscOptionsGetInt(nullptr, nullptr, "-steps", &steps, nullptr));
   PetscCall(PetscOptionsGetInt(nullptr, nullptr, "-print_every", &printEvery, nullptr));
   PetscCall(PetscOptionsGetReal(nullptr, nullptr, "-max_imbalance", &maxImbalance, nullptr));

@@ -13,6 +13,7 @@ static const char help[] = "A moving STL blade pushes a bed of a few hundred sph
 #include "vofdem/core/Simulation.hpp"
 #include "vofdem/dem/StlMesh.hpp"
 #include "vofdem/io/TextFile.hpp"
+#include "vofdem/examples/Help.hpp"
 
 #include <cmath>
 #include <cstdio>
@@ -56,6 +57,11 @@ static PetscErrorCode Run() {
   const PetscReal    thick = 0.6;                  // mm
 
   PetscFunctionBeginUser;
+  {
+    PetscBool help;
+    PetscCall(vofdem::example::Help(&help));  // -help lists the options and runs nothing
+    if (help) PetscFunctionReturn(0);
+  }
   PetscCall(PetscOptionsGetInt(nullptr, nullptr, "-short_steps", &shortSteps, nullptr));
   PetscCall(PetscOptionsGetInt(nullptr, nullptr, "-push_steps", &pushSteps, nullptr));
   PetscCall(PetscOptionsGetReal(nullptr, nullptr, "-blade_speed", &speed, nullptr));

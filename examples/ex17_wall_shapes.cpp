@@ -7,6 +7,7 @@ static const char help[] = "Verification D1 on the walls of -dem_walls: a sphere
 #include "vofdem/core/Simulation.hpp"
 #include "vofdem/dem/StlMesh.hpp"
 #include "vofdem/io/TextFile.hpp"
+#include "vofdem/examples/Help.hpp"
 
 #include <cmath>
 #include <cstdio>
@@ -65,6 +66,11 @@ static PetscErrorCode Run() {
   PetscInt        failures = 0;
 
   PetscFunctionBeginUser;
+  {
+    PetscBool help;
+    PetscCall(vofdem::example::Help(&help));  // -help lists the options and runs nothing
+    if (help) PetscFunctionReturn(0);
+  }
   for (const auto &[name, value] : std::vector<std::pair<const char *, std::string>>{
          {"-physics", "dem"}, {"-grid_cells", "2,2,2"}, {"-grid_upper", "0.01,0.01,0.01"}, {"-gravity", "0,0,0"}, {"-dem_radius", Num(R)},
          {"-dem_density", Num(rho)}, {"-dem_youngs_modulus", Num(E)}, {"-dem_poisson_ratio", Num(nu)}, {"-dem_restitution", Num(e)},

@@ -9,6 +9,7 @@ static const char help[] = "Dem::Save / Dem::Load: a run that saves at step N, i
 
 #include "vofdem/core/Runtime.hpp"
 #include "vofdem/core/Simulation.hpp"
+#include "vofdem/examples/Help.hpp"
 
 #include <petscviewerhdf5.h>
 
@@ -116,6 +117,11 @@ static PetscErrorCode Main() {
   PetscMPIInt size, rank;
 
   PetscFunctionBeginUser;
+  {
+    PetscBool help;
+    PetscCall(vofdem::example::Help(&help));  // -help lists the options and runs nothing
+    if (help) PetscFunctionReturn(0);
+  }
   PetscCall(PetscOptionsGetInt(nullptr, nullptr, "-half_steps", &N, nullptr));
   PetscCallMPI(MPI_Comm_size(PETSC_COMM_WORLD, &size));
   PetscCallMPI(MPI_Comm_rank(PETSC_COMM_WORLD, &rank));

@@ -14,6 +14,7 @@ static const char help[] = "Love-Weber stress of a region (-dem_stress_lower/-de
 #include "vofdem/core/Runtime.hpp"
 #include "vofdem/core/Simulation.hpp"
 #include "vofdem/io/TextFile.hpp"
+#include "vofdem/examples/Help.hpp"
 
 #include <cmath>
 #include <cstdio>
@@ -156,6 +157,11 @@ static PetscErrorCode Main() {
   PetscInt steps = 2000;
 
   PetscFunctionBeginUser;
+  {
+    PetscBool help;
+    PetscCall(vofdem::example::Help(&help));  // -help lists the options and runs nothing
+    if (help) PetscFunctionReturn(0);
+  }
   PetscCall(PetscOptionsGetInt(nullptr, nullptr, "-fall_steps", &steps, nullptr));
   PetscCall(Set("-physics", "dem"));
   PetscCall(Set("-grid_cells", "4,4,4"));

@@ -10,6 +10,7 @@ static const char help[] = "Bulk statistics of a bed of spheres dropped into a c
 #include "vofdem/core/Options.hpp"
 #include "vofdem/core/Runtime.hpp"
 #include "vofdem/core/Simulation.hpp"
+#include "vofdem/examples/Help.hpp"
 
 #include <petscdmswarm.h>
 
@@ -76,6 +77,11 @@ PetscErrorCode Run() {
   PetscReal          gz = -9.81;
 
   PetscFunctionBeginUser;
+  {
+    PetscBool help;
+    PetscCall(vofdem::example::Help(&help));  // -help lists the options and runs nothing
+    if (help) PetscFunctionReturn(0);
+  }
   PetscCall(ReadSettings(&set));
   PetscCall(sim.Create(PETSC_COMM_WORLD));
   PetscCall(sim.SetFromOptions());

@@ -6,6 +6,7 @@ static const char help[] = "The particle layout of rigid clumps (P10; their rigi
 #include "vofdem/core/Runtime.hpp"
 #include "vofdem/core/Simulation.hpp"
 #include "vofdem/io/TextFile.hpp"
+#include "vofdem/examples/Help.hpp"
 
 #include <cstdio>
 
@@ -33,6 +34,11 @@ static PetscErrorCode Run() {
   const PetscReal    R        = 1e-3;
 
   PetscFunctionBeginUser;
+  {
+    PetscBool help;
+    PetscCall(vofdem::example::Help(&help));  // -help lists the options and runs nothing
+    if (help) PetscFunctionReturn(0);
+  }
   // Clump spheres (radius 1 mm) at x = 5.6 and 4.4 mm, overlapping by 0.8 mm, across the boundary
   // x = 5 mm of -grid_ranks 2,1,1, moving at -0.25 m/s in x; two free spheres 3 mm above overlap by 0.1 mm.
   PetscCall(vofdem::WriteTextFile(PETSC_COMM_WORLD, "ex21_particles.csv",

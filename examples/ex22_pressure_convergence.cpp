@@ -12,6 +12,7 @@ static const char help[] = "Verification of the pressure Poisson solve -div(beta
 #include "vofdem/core/Runtime.hpp"
 #include "vofdem/flow/PressureSolver.hpp"
 #include "vofdem/grid/Grid.hpp"
+#include "vofdem/examples/Help.hpp"
 
 #include <cmath>
 #include <string>
@@ -153,6 +154,11 @@ PetscErrorCode Run() {
   int        failures = 0;
 
   PetscFunctionBeginUser;
+  {
+    PetscBool help;
+    PetscCall(vofdem::example::Help(&help));  // -help lists the options and runs nothing
+    if (help) PetscFunctionReturn(0);
+  }
   PetscCall(PetscOptionsGetBool(nullptr, nullptr, "-fine", &fine, nullptr));
   // The discretisation error is measured: make the solver's share negligible (and equal on any rank count).
   PetscCall(PetscOptionsHasName(nullptr, nullptr, "-flow_pressure_ksp_rtol", &given));

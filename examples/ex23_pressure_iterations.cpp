@@ -10,6 +10,7 @@ static const char help[] = "Verification F4 (VERIFICATION.md): iteration counts 
 #include "vofdem/core/Runtime.hpp"
 #include "vofdem/flow/PressureSolver.hpp"
 #include "vofdem/grid/Grid.hpp"
+#include "vofdem/examples/Help.hpp"
 
 #include <cmath>
 #include <cstdlib>
@@ -119,6 +120,11 @@ PetscErrorCode Run() {
   PetscBool set;
 
   PetscFunctionBeginUser;
+  {
+    PetscBool help;
+    PetscCall(vofdem::example::Help(&help));  // -help lists the options and runs nothing
+    if (help) PetscFunctionReturn(0);
+  }
   PetscCall(PetscOptionsGetIntArray(nullptr, nullptr, "-cells_list", cells, &nCells, &set));
   if (!set) nCells = 1;
   PetscCall(PetscOptionsGetRealArray(nullptr, nullptr, "-ratios", ratios, &nRatios, &set));

@@ -8,6 +8,7 @@ static const char help[] = "Verification F1 (VERIFICATION.md): the 2-D Taylor-Gr
 #include "vofdem/core/Runtime.hpp"
 #include "vofdem/flow/Flow.hpp"
 #include "vofdem/grid/Grid.hpp"
+#include "vofdem/examples/Help.hpp"
 
 #include <petsctime.h>
 
@@ -132,6 +133,11 @@ PetscErrorCode Run() {
   PetscBool set, showTime = PETSC_FALSE;
 
   PetscFunctionBeginUser;
+  {
+    PetscBool help;
+    PetscCall(vofdem::example::Help(&help));  // -help lists the options and runs nothing
+    if (help) PetscFunctionReturn(0);
+  }
   PetscCall(PetscOptionsGetIntArray(nullptr, nullptr, "-cells_list", list, &nlist, &set));
   if (!set) nlist = 3;
   PetscCall(PetscOptionsGetReal(nullptr, nullptr, "-final_time", &finalTime, nullptr));

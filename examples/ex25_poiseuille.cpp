@@ -17,6 +17,7 @@ static const char help[] = "Verification F3 (VERIFICATION.md): plane Poiseuille 
 #include "vofdem/core/Runtime.hpp"
 #include "vofdem/flow/Flow.hpp"
 #include "vofdem/grid/Grid.hpp"
+#include "vofdem/examples/Help.hpp"
 
 #include <cmath>
 #include <cstring>
@@ -229,6 +230,11 @@ PetscErrorCode Run() {
   char      parts[8] = "ab";
 
   PetscFunctionBeginUser;
+  {
+    PetscBool help;
+    PetscCall(vofdem::example::Help(&help));  // -help lists the options and runs nothing
+    if (help) PetscFunctionReturn(0);
+  }
   PetscCall(PetscOptionsGetString(nullptr, nullptr, "-parts", parts, sizeof parts, nullptr));
   PetscBool solid = PETSC_FALSE;
   PetscCall(PetscOptionsGetBool(nullptr, nullptr, "-solid", &solid, nullptr));

@@ -10,6 +10,7 @@ static const char help[] = "Flow::Save / Flow::Load: a lid-driven cavity (16 x 1
 #include "vofdem/core/Runtime.hpp"
 #include "vofdem/flow/Flow.hpp"
 #include "vofdem/grid/Grid.hpp"
+#include "vofdem/examples/Help.hpp"
 
 #include <petscviewerhdf5.h>
 
@@ -136,6 +137,11 @@ PetscErrorCode Main() {
   char      tmp[PETSC_MAX_PATH_LEN];
 
   PetscFunctionBeginUser;
+  {
+    PetscBool help;
+    PetscCall(vofdem::example::Help(&help));  // -help lists the options and runs nothing
+    if (help) PetscFunctionReturn(0);
+  }
   PetscCall(PetscOptionsGetInt(nullptr, nullptr, "-half_steps", &sc.half, nullptr));
   PetscCall(PetscOptionsGetReal(nullptr, nullptr, "-dt", &sc.dt, nullptr));
   PetscCall(PetscOptionsGetReal(nullptr, nullptr, "-ratio", &sc.ratio, nullptr));

@@ -10,6 +10,7 @@ static const char help[] = "Verification V1 (VERIFICATION.md): the single vortex
 #include "vofdem/grid/Grid.hpp"
 #include "vofdem/vof/StreamFunction.hpp"
 #include "vofdem/vof/Vof.hpp"
+#include "vofdem/examples/Help.hpp"
 
 #include <petsctime.h>
 
@@ -130,6 +131,11 @@ PetscErrorCode Run() {
   PetscBool set, showTime = PETSC_FALSE, adaptiveOpt = PETSC_TRUE, peerCheck = PETSC_TRUE;
 
   PetscFunctionBeginUser;
+  {
+    PetscBool help;
+    PetscCall(vofdem::example::Help(&help));  // -help lists the options and runs nothing
+    if (help) PetscFunctionReturn(0);
+  }
   PetscCall(PetscOptionsGetIntArray(nullptr, nullptr, "-cells_list", list, &nlist, &set));
   if (!set) nlist = 2;
   PetscCall(PetscOptionsGetBool(nullptr, nullptr, "-adaptive", &adaptiveOpt, nullptr));

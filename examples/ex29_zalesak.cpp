@@ -9,6 +9,7 @@ static const char help[] = "Verification V2 (VERIFICATION.md): Zalesak's slotted
 #include "vofdem/grid/Grid.hpp"
 #include "vofdem/vof/StreamFunction.hpp"
 #include "vofdem/vof/Vof.hpp"
+#include "vofdem/examples/Help.hpp"
 
 #include <petsctime.h>
 
@@ -93,6 +94,11 @@ PetscErrorCode Run() {
   PetscBool set, showTime = PETSC_FALSE;
 
   PetscFunctionBeginUser;
+  {
+    PetscBool help;
+    PetscCall(vofdem::example::Help(&help));  // -help lists the options and runs nothing
+    if (help) PetscFunctionReturn(0);
+  }
   PetscCall(PetscOptionsGetIntArray(nullptr, nullptr, "-cells_list", list, &nlist, &set));
   if (!set) nlist = 2;
   PetscCall(PetscOptionsGetReal(nullptr, nullptr, "-revolutions", &revolutions, nullptr));

@@ -9,6 +9,7 @@ static const char help[] = "Verification V5 (VERIFICATION.md): the dam break of 
 
 #include "vofdem/core/Runtime.hpp"
 #include "vofdem/core/Simulation.hpp"
+#include "vofdem/examples/Help.hpp"
 
 #include <cmath>
 #include <string>
@@ -89,6 +90,11 @@ PetscErrorCode Run() {
   PetscBool          frontCheck = PETSC_TRUE;
 
   PetscFunctionBeginUser;
+  {
+    PetscBool help;
+    PetscCall(vofdem::example::Help(&help));  // -help lists the options and runs nothing
+    if (help) PetscFunctionReturn(0);
+  }
   PetscCall(PetscOptionsGetInt(nullptr, nullptr, "-resolution", &N, nullptr));
   PetscCall(PetscOptionsGetBool(nullptr, nullptr, "-front_check", &frontCheck, nullptr));
   if (N < 2 || N % 2) VofdemInputError(PETSC_COMM_WORLD, "option -resolution: give an even number of cells per column width (>= 2)");

@@ -15,6 +15,7 @@ static const char help[] = "Verification V3 (VERIFICATION.md): Popinet's (2009) 
 
 #include "vofdem/core/Runtime.hpp"
 #include "vofdem/core/Simulation.hpp"
+#include "vofdem/examples/Help.hpp"
 
 #include <cmath>
 #include <string>
@@ -93,6 +94,11 @@ PetscErrorCode Run() {
   const PetscReal    D = 0.4, R = 0.5 * D, sigma = 1;
 
   PetscFunctionBeginUser;
+  {
+    PetscBool help;
+    PetscCall(vofdem::example::Help(&help));  // -help lists the options and runs nothing
+    if (help) PetscFunctionReturn(0);
+  }
   PetscBool show = PETSC_FALSE, showCentroid = PETSC_FALSE;
   PetscCall(PetscOptionsGetBool(nullptr, nullptr, "-show_drop", &show, nullptr));
   PetscCall(PetscOptionsGetBool(nullptr, nullptr, "-show_centroid", &showCentroid, nullptr));

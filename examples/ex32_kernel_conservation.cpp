@@ -11,6 +11,7 @@ static const char help[] = "Verification C3 (VERIFICATION.md) for the kernel pro
 #include "vofdem/coupling/KernelAverager.hpp"
 #include "vofdem/flow/StaggeredGrid.hpp"
 #include "vofdem/grid/Grid.hpp"
+#include "vofdem/examples/Help.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -221,6 +222,11 @@ PetscErrorCode Run() {
   PetscInt failures = 0;
 
   PetscFunctionBeginUser;
+  {
+    PetscBool help;
+    PetscCall(vofdem::example::Help(&help));  // -help lists the options and runs nothing
+    if (help) PetscFunctionReturn(0);
+  }
   PetscBool set;
   PetscCall(PetscOptionsHasName(nullptr, nullptr, "-grid_cells", &set));
   if (!set) PetscCall(PetscOptionsSetValue(nullptr, "-grid_cells", "16,12,10"));

@@ -12,6 +12,7 @@ static const char help[] = "Verification C1 (VERIFICATION.md): a single sphere s
 
 #include "vofdem/core/Runtime.hpp"
 #include "vofdem/core/Simulation.hpp"
+#include "vofdem/examples/Help.hpp"
 
 #include <cmath>
 #include <cstdio>
@@ -107,6 +108,11 @@ PetscErrorCode Run() {
   PetscBool timing = PETSC_FALSE;
 
   PetscFunctionBeginUser;
+  {
+    PetscBool help;
+    PetscCall(vofdem::example::Help(&help));  // -help lists the options and runs nothing
+    if (help) PetscFunctionReturn(0);
+  }
   PetscCall(PetscOptionsGetRealArray(nullptr, nullptr, "-ratios", ratios, &n, nullptr));
   if (n == 0) n = 5;
   PetscCall(PetscOptionsGetReal(nullptr, nullptr, "-dt", &dt, nullptr));

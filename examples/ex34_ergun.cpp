@@ -26,6 +26,7 @@ static const char help[] = "Verification C2 (VERIFICATION.md): a packed bed with
 
 #include "vofdem/core/Runtime.hpp"
 #include "vofdem/core/Simulation.hpp"
+#include "vofdem/examples/Help.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -243,6 +244,11 @@ PetscErrorCode Run() {
   std::string bed = "ex34_bed.csv";
 
   PetscFunctionBeginUser;
+  {
+    PetscBool help;
+    PetscCall(vofdem::example::Help(&help));  // -help lists the options and runs nothing
+    if (help) PetscFunctionReturn(0);
+  }
   PetscCall(PetscOptionsGetRealArray(nullptr, nullptr, "-velocities", vel, &nv, &set));
   if (!set) nv = 2;
   PetscCall(PetscOptionsGetReal(nullptr, nullptr, "-settle_time", &settle, nullptr));

@@ -10,6 +10,7 @@ static const char help[] = "Marangoni force (PHYSICS.md F2) with a prescribed te
 
 #include "vofdem/core/Runtime.hpp"
 #include "vofdem/core/Simulation.hpp"
+#include "vofdem/examples/Help.hpp"
 
 #include <cmath>
 #include <string>
@@ -91,6 +92,11 @@ PetscErrorCode Run() {
   PetscBool set;
 
   PetscFunctionBeginUser;
+  {
+    PetscBool help;
+    PetscCall(vofdem::example::Help(&help));  // -help lists the options and runs nothing
+    if (help) PetscFunctionReturn(0);
+  }
   PetscCall(PetscOptionsGetIntArray(nullptr, nullptr, "-cells_list", list, &nlist, &set));
   if (!set) nlist = 2;
   PetscCall(PetscOptionsGetReal(nullptr, nullptr, "-final_time", &finalTime, nullptr));

@@ -16,6 +16,7 @@ static const char help[] = "Mass-consistent momentum at large density ratios (PH
 
 #include "vofdem/core/Runtime.hpp"
 #include "vofdem/core/Simulation.hpp"
+#include "vofdem/examples/Help.hpp"
 
 #include <cmath>
 #include <string>
@@ -136,6 +137,11 @@ PetscErrorCode Run() {
   const PetscReal    D = 0.4, R = 0.5 * D, U[3] = {1, 1, 0};
 
   PetscFunctionBeginUser;
+  {
+    PetscBool help;
+    PetscCall(vofdem::example::Help(&help));  // -help lists the options and runs nothing
+    if (help) PetscFunctionReturn(0);
+  }
   PetscCall(PetscOptionsGetInt(nullptr, nullptr, "-resolution", &N, nullptr));
   PetscCall(PetscOptionsGetInt(nullptr, nullptr, "-periods", &periods, nullptr));
   PetscCall(PetscOptionsGetReal(nullptr, nullptr, "-ratio", &ratio, nullptr));

@@ -21,6 +21,7 @@ static const char help[] = "Sessile drop reaching its set contact angle (issue 8
 
 #include "vofdem/core/Runtime.hpp"
 #include "vofdem/core/Simulation.hpp"
+#include "vofdem/examples/Help.hpp"
 
 #include <cmath>
 #include <string>
@@ -162,6 +163,11 @@ PetscErrorCode Run() {
   char               floor[16] = "slip";
 
   PetscFunctionBeginUser;
+  {
+    PetscBool help;
+    PetscCall(vofdem::example::Help(&help));  // -help lists the options and runs nothing
+    if (help) PetscFunctionReturn(0);
+  }
   PetscBool show = PETSC_FALSE;
   PetscCall(PetscOptionsGetBool(nullptr, nullptr, "-show_drop", &show, nullptr));
   PetscCall(PetscOptionsGetInt(nullptr, nullptr, "-resolution", &N, nullptr));

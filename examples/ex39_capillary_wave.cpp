@@ -17,6 +17,7 @@ static const char help[] = "Verification V4 (VERIFICATION.md): the damped capill
 
 #include "vofdem/core/Runtime.hpp"
 #include "vofdem/core/Simulation.hpp"
+#include "vofdem/examples/Help.hpp"
 
 #include <cmath>
 #include <complex>
@@ -216,6 +217,11 @@ PetscErrorCode Run() {
   const double       lambda = 1, k = 2 * kPi / lambda, a0 = 0.01, sigma = 1, rho = 1, mu = 0.0182571749236;
 
   PetscFunctionBeginUser;
+  {
+    PetscBool help;
+    PetscCall(vofdem::example::Help(&help));  // -help lists the options and runs nothing
+    if (help) PetscFunctionReturn(0);
+  }
   PetscCall(PetscOptionsGetInt(nullptr, nullptr, "-resolution", &N, nullptr));
   PetscCall(PetscOptionsGetBool(nullptr, nullptr, "-exact_only", &exactOnly, nullptr));
   PetscCall(PetscOptionsGetBool(nullptr, nullptr, "-error_check", &errorCheck, nullptr));

@@ -13,6 +13,7 @@ static const char help[] = "Rising bubble: test case 1 of Hysing et al. (2009, I
 
 #include "vofdem/core/Runtime.hpp"
 #include "vofdem/core/Simulation.hpp"
+#include "vofdem/examples/Help.hpp"
 
 #include <cmath>
 #include <string>
@@ -132,6 +133,11 @@ PetscErrorCode Run() {
   PetscBool          check = PETSC_TRUE, show = PETSC_FALSE;
 
   PetscFunctionBeginUser;
+  {
+    PetscBool help;
+    PetscCall(vofdem::example::Help(&help));  // -help lists the options and runs nothing
+    if (help) PetscFunctionReturn(0);
+  }
   PetscCall(PetscOptionsGetInt(nullptr, nullptr, "-resolution", &N, nullptr));
   PetscCall(PetscOptionsGetBool(nullptr, nullptr, "-check", &check, nullptr));
   PetscCall(PetscOptionsGetBool(nullptr, nullptr, "-show_bubble", &show, nullptr));

@@ -21,6 +21,7 @@ static const char help[] = "A glass sphere at a still water surface, with the pa
 #include "vofdem/core/Simulation.hpp"
 #include "vofdem/coupling/Capillary.hpp"
 #include "vofdem/vof/Vof.hpp"
+#include "vofdem/examples/Help.hpp"
 
 #include <petscdmda.h>
 
@@ -91,6 +92,11 @@ PetscErrorCode Run() {
   char      buf[256];
 
   PetscFunctionBeginUser;
+  {
+    PetscBool help;
+    PetscCall(vofdem::example::Help(&help));  // -help lists the options and runs nothing
+    if (help) PetscFunctionReturn(0);
+  }
   PetscCall(PetscOptionsGetReal(nullptr, nullptr, "-angle", &angle, nullptr));
   PetscCall(PetscOptionsGetReal(nullptr, nullptr, "-dt", &dt, nullptr));
   PetscCall(PetscOptionsGetInt(nullptr, nullptr, "-steps", &steps, nullptr));

@@ -23,6 +23,7 @@ static const char help[] = "Verification V7 (VERIFICATION.md): seed 000's partic
 #include "vofdem/core/Runtime.hpp"
 #include "vofdem/core/Simulation.hpp"
 #include "vofdem/vof/Vof.hpp"
+#include "vofdem/examples/Help.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -200,6 +201,11 @@ PetscErrorCode Run() {
   const char *names[3] = {"-time_front", "-time_impact", "-time_layer"};
 
   PetscFunctionBeginUser;
+  {
+    PetscBool help;
+    PetscCall(vofdem::example::Help(&help));  // -help lists the options and runs nothing
+    if (help) PetscFunctionReturn(0);
+  }
   PetscCall(PetscOptionsGetString(nullptr, nullptr, "-mode", mode, sizeof mode, nullptr));
   PetscCall(PetscOptionsGetString(nullptr, nullptr, "-bed", bed, sizeof bed, nullptr));
   PetscCall(PetscOptionsGetString(nullptr, nullptr, "-profiles", prefix, sizeof prefix, &hasPrefix));

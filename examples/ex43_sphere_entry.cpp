@@ -15,6 +15,7 @@ static const char help[] = "Verification V6 (VERIFICATION.md): seed 000's sphere
 #include "vofdem/core/Simulation.hpp"
 #include "vofdem/coupling/DragLaws.hpp"
 #include "vofdem/vof/Vof.hpp"
+#include "vofdem/examples/Help.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -84,6 +85,11 @@ PetscErrorCode Run() {
   char      buf[256];
 
   PetscFunctionBeginUser;
+  {
+    PetscBool help;
+    PetscCall(vofdem::example::Help(&help));  // -help lists the options and runs nothing
+    if (help) PetscFunctionReturn(0);
+  }
   PetscCall(PetscOptionsGetReal(nullptr, nullptr, "-depth", &depth, nullptr));
   PetscCall(PetscOptionsGetReal(nullptr, nullptr, "-drop", &drop, nullptr));
   PetscCall(PetscOptionsGetReal(nullptr, nullptr, "-dt", &dt, nullptr));

@@ -13,6 +13,7 @@ static const char help[] = "Particles crossing a free surface (-physics dem,flow
 #include "vofdem/dem/Dem.hpp"
 #include "vofdem/flow/Flow.hpp"
 #include "vofdem/vof/Vof.hpp"
+#include "vofdem/examples/Help.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -25,6 +26,11 @@ PetscErrorCode Run() {
   PetscReal tEnd = 0.08;
 
   PetscFunctionBeginUser;
+  {
+    PetscBool help;
+    PetscCall(vofdem::example::Help(&help));  // -help lists the options and runs nothing
+    if (help) PetscFunctionReturn(0);
+  }
   PetscCall(PetscOptionsGetReal(nullptr, nullptr, "-final_time", &tEnd, nullptr));
   PetscCall(PetscOptionsClearValue(nullptr, "-final_time"));
   PetscCall(PetscOptionsInsertString(nullptr, "-physics dem,flow,vof -grid_cells 8,8,16 -grid_upper 0.008,0.008,0.016 -gravity 0,0,-9.81 "

@@ -27,6 +27,7 @@ static const char help[] = "Rotation and lubrication in the CFD-DEM coupling (-p
 #include "vofdem/core/Runtime.hpp"
 #include "vofdem/core/Simulation.hpp"
 #include "vofdem/flow/StaggeredGrid.hpp"
+#include "vofdem/examples/Help.hpp"
 
 #include <cmath>
 #include <cstdio>
@@ -328,6 +329,11 @@ PetscErrorCode Run() {
   PetscInt failures = 0;
   char     part[16] = "abcd";
   PetscFunctionBeginUser;
+  {
+    PetscBool help;
+    PetscCall(vofdem::example::Help(&help));  // -help lists the options and runs nothing
+    if (help) PetscFunctionReturn(0);
+  }
   PetscCall(PetscOptionsGetString(nullptr, nullptr, "-parts", part, sizeof part, nullptr));  // read before the scenes clear the options
   const std::string parts = part;
   if (parts.find('a') != std::string::npos) PetscCall(Lift("rubinowkeller", &failures));

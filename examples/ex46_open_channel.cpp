@@ -24,6 +24,7 @@ static const char help[] = "VOF inflow and outflow faces (issue 8; src/vof/VofOp
 #include "vofdem/core/Simulation.hpp"
 #include "vofdem/flow/Flow.hpp"
 #include "vofdem/vof/Vof.hpp"
+#include "vofdem/examples/Help.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -106,6 +107,11 @@ PetscErrorCode Run() {
   PetscBool          band = PETSC_FALSE, drain = PETSC_FALSE, back = PETSC_FALSE;
 
   PetscFunctionBeginUser;
+  {
+    PetscBool help;
+    PetscCall(vofdem::example::Help(&help));  // -help lists the options and runs nothing
+    if (help) PetscFunctionReturn(0);
+  }
   PetscCall(PetscOptionsGetInt(nullptr, nullptr, "-resolution", &N, nullptr));
   PetscCall(PetscOptionsGetReal(nullptr, nullptr, "-ratio", &ratio, nullptr));
   PetscCall(PetscOptionsGetRealArray(nullptr, nullptr, "-band", b, &nb, &band));

@@ -16,6 +16,7 @@ static const char help[] = "Verification of the diffusion-based smoothing (Diffu
 #include "vofdem/coupling/Smoothing.hpp"
 #include "vofdem/flow/StaggeredGrid.hpp"
 #include "vofdem/grid/Grid.hpp"
+#include "vofdem/examples/Help.hpp"
 
 #include <cmath>
 #include <cstdint>
@@ -296,6 +297,11 @@ PetscErrorCode Run() {
   PetscInt failures = 0;
 
   PetscFunctionBeginUser;
+  {
+    PetscBool help;
+    PetscCall(vofdem::example::Help(&help));  // -help lists the options and runs nothing
+    if (help) PetscFunctionReturn(0);
+  }
   PetscBool gaussian = PETSC_FALSE;
   {
     char      method[32] = "diffusion";

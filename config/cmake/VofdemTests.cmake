@@ -56,9 +56,9 @@ vofdem_bad_input(missing_options    "missing\\.opts: cannot open the scene file"
 vofdem_bad_input(scene_without_name "-options_file_yaml: needs a file name"        -physics dem -options_file_yaml)
 vofdem_bad_input(malformed_yaml     "malformed\\.yaml:4:[0-9]+: malformed YAML"     -options_file_yaml ${_bad}/malformed.yaml)
 vofdem_bad_input(scene_not_mapping  "not-a-mapping\\.yaml:1:1: a scene must be a mapping" -options_file_yaml ${_bad}/not-a-mapping.yaml)
-vofdem_bad_input(typo_in_scene      "unknown or unused option -dem_restitusion"    -options_file_yaml ${_bad}/typo.yaml)
+vofdem_bad_input(typo_in_scene      "unknown or unused option -dem_restitusion \\(did you mean -dem_restitution\\?\\)" -options_file_yaml ${_bad}/typo.yaml)
 vofdem_bad_input(unknown_physics    "option -physics: unknown name 'magic'"        -physics dem,magic)
-vofdem_bad_input(physics_not_built  "option -physics: 'energy' is not available"   -physics flow,energy)
+vofdem_bad_input(physics_not_built  "option -physics: unknown name 'energy' \\(known: dem, flow, vof\\)" -physics flow,energy)
 vofdem_bad_input(vof_without_flow   "option -physics: 'vof' needs 'flow'"           -physics vof)
 vofdem_bad_input(vof_dem_no_eps_rate "option -coupling_eps_rate: particles with a free surface" -physics dem,flow,vof -grid_upper 0.01,0.01,0.01 -coupling_eps_rate 0)
 vofdem_bad_input(contact_angle_range "option -coupling_contact_angle: 200\\.? is out of range" -physics dem,flow,vof -grid_upper 0.01,0.01,0.01 -coupling_contact_angle 200)
@@ -76,7 +76,10 @@ vofdem_bad_input(not_an_integer     "option -max_steps: '2.5' is not an integer"
 vofdem_bad_input(out_of_range       "option -dem_restitution: 1.5 is out of range" ${_dem} -dem_restitution 1.5)
 vofdem_bad_input(sort_every_negative "option -dem_sort_every: -1 is out of range" ${_dem} -dem_sort_every -1)
 vofdem_bad_input(vector_length      "option -gravity: needs 3 comma-separated"     ${_dem} -gravity 0,-9.81)
-# Issue 55: requests that cannot fit refused up front (not std::bad_alloc and a core dump).
+# Issue 55: messages that say what is wrong; requests that cannot fit refused up front (not std::bad_alloc and a core dump).
+vofdem_bad_input(integer_too_large  "option -dem_fill_count: 1000000000000 is too large for this build's 32-bit indices" ${_dem} -dem_fill_count 1000000000000)
+vofdem_bad_input(scene_tab          "tab\\.yaml:3:1: malformed YAML: a tab. YAML indents with spaces only" -options_file_yaml ${_bad}/tab.yaml)
+vofdem_bad_input(scene_empty        "empty\\.yaml: the scene file is empty" -options_file_yaml ${_bad}/empty.yaml)
 vofdem_bad_input(random_fill_too_dense "option -dem_fill_count: 2000000000 particles fill .* of the fill region's volume. a random fill of equal spheres stops at its jamming limit 0.3841" ${_dem} -dem_radius 1e-4 -dem_fill_mode random -dem_fill_count 2000000000)
 vofdem_bad_input(random_fill_memory "option -dem_fill_count: 2000000000 particles of a random fill \\(every rank places all of them\\) need at least .* on each rank, .* are available" -physics dem -grid_upper 10,10,10 -grid_cells 4,4,4 -dem_radius 1e-4 -dem_fill_mode random -dem_fill_count 2000000000)
 vofdem_bad_input(lattice_fill_memory "option -dem_fill_count: 2000000000 particles \\(their swarm fields, shared among the ranks\\) need at least .* on each rank, .* are available" -physics dem -grid_upper 10,10,10 -grid_cells 4,4,4 -dem_radius 1e-4 -dem_fill_count 2000000000)

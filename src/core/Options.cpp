@@ -4,7 +4,9 @@
 
 #include <cerrno>
 #include <cmath>
+#include <algorithm>
 #include <cstdlib>
+#include <set>
 #include <sstream>
 
 namespace vofdem {
@@ -61,6 +63,49 @@ bool ParseReal(const std::string &text, PetscReal *value) {
   return true;
 }
 
+bool IntegerTooLarge(const std::string &text) {
+  const std::string t = Trim(text);
+  if (t.empty()) return false;
+  size_t i = t[0] == '-' || t[0] == '+' ? 1 : 0;
+  if (i == t.size()) return false;
+  for (; i < t.size(); ++i)
+    if (t[i] < '0' || t[i] > '9') return false;
+  PetscInt v;
+  return !ParseInt(t, &v);  // all digits, yet not a PetscInt: out of its range
+}
+
+namespace {
+std::set<std::string> &ReadNames() {
+  static std::set<std::string> names;
+  return names;
+}
+
+// Optimal string alignment distance (Damerau-Levenshtein with adjacent transpositions).
+size_t EditDistance(const std::string &a, const std::string &b) {
+  std::vector<std::vector<size_t>> d(a.size() + 1, std::vector<size_t>(b.size() + 1));
+  for (size_t i = 0; i <= a.size(); ++i) d[i][0] = i;
+  for (size_t j = 0; j <= b.size(); ++j) d[0][j] = j;
+  for (size_t i = 1; i <= a.size(); ++i)
+    for (size_t j = 1; j <= b.size(); ++j) {
+      d[i][j] = std::min({d[i - 1][j] + 1, d[i][j - 1] + 1, d[i - 1][j - 1] + (a[i - 1] != b[j - 1])});
+      if (i > 1 && j > 1 && a[i - 1] == b[j - 2] && a[i - 2] == b[j - 1]) d[i][j] = std::min(d[i][j], d[i - 2][j - 2] + 1);
+    }
+  return d[a.size()][b.size()];
+}
+}  // namespace
+
+void RecordOptionName(const std::string &fullName) { ReadNames().insert(fullName); }
+
+std::string ClosestOptionName(const std::string &fullName) {
+  std::string best;
+  size_t      bestD = std::max<size_t>(2, fullName.size() / 5) + 1;
+  for (const std::string &n : ReadNames()) {
+    const size_t d = EditDistance(fullName, n);
+    if (d < bestD) bestD = d, best = n;
+  }
+  return best;
+}
+
 bool ParseInt(const std::string &text, PetscInt *value) {
   const std::string t = Trim(text);
   if (t.empty()) return false;
@@ -88,6 +133,7 @@ std::string OptionReader::FullName(const char *name) const {
 
 PetscErrorCode OptionReader::RawValue(const char *name, const char **raw, PetscBool *given) const {
   PetscFunctionBeginUser;
+  RecordOptionName(FullName(name));
   PetscCall(PetscOptionsFindPair(items_->options, items_->prefix, name, raw, given));
   PetscFunctionReturn(0);
 }
@@ -119,6 +165,9 @@ PetscErrorCode OptionReader::Int(const char *name, const char *text, PetscInt *v
 
   PetscFunctionBeginUser;
   PetscCall(RawValue(name, &raw, &given));
+  if (given && IntegerTooLarge(raw ? raw : ""))
+    VofdemInputError(PETSC_COMM_WORLD, "option %s: %s is too large for this build's 32-bit indices (PETSc's PetscInt: at most %d)", FullName(name).c_str(), raw,
+                     (int)PETSC_MAX_INT);
   if (given && !ParseInt(raw ? raw : "", &v))
     VofdemInputError(PETSC_COMM_WORLD, "option %s: '%s' is not an integer", FullName(name).c_str(), raw ? raw : "");
   if (given && (v < lo || v > hi))

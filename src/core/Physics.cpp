@@ -7,8 +7,7 @@
 namespace vofdem {
 
 const std::vector<std::string> &KnownPhysics() {
-  static const std::vector<std::string> names = {"dem", "flow", "vof", "energy"};
-  return names;
+  return AvailablePhysics();  // -help and the checks list only what this build has
 }
 
 const std::vector<std::string> &AvailablePhysics() {
@@ -33,7 +32,7 @@ PetscErrorCode MakePhysicsSet(MPI_Comm comm, const std::vector<std::string> &nam
 
   PetscFunctionBeginUser;
   *set = PhysicsSet{};
-  if (names.empty()) VofdemInputError(comm, "option -physics: name at least one module (known: dem, flow, vof, energy)");
+  if (names.empty()) VofdemInputError(comm, "option -physics: name at least one module (available: dem, flow, vof)");
   for (const auto &n : names) {
     if (std::find(available.begin(), available.end(), n) == available.end())
       VofdemInputError(comm, "option -physics: '%s' is not available in this build of vofdem yet (available: dem, flow, vof)", n.c_str());

@@ -1,5 +1,7 @@
 #include "vofdem/core/Runtime.hpp"
 
+#include "vofdem/core/Options.hpp"
+
 #include "vofdem/core/MpiStartupDefaults.hpp"
 #include "vofdem/core/SceneFile.hpp"
 
@@ -141,6 +143,8 @@ PetscErrorCode CheckUnusedOptions(MPI_Comm comm) {
     for (const char *l : lateReaders) late = late || !std::strcmp(names[i], l);
     if (late) continue;
     unused += (unused.empty() ? "-" : ", -") + std::string(names[i]);
+    const std::string close = ClosestOptionName("-" + std::string(names[i]));
+    if (!close.empty()) unused += " (did you mean " + close + "?)";
   }
   PetscCall(PetscOptionsLeftRestore(nullptr, &n, &names, &values));
   if (!unused.empty())

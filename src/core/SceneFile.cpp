@@ -16,6 +16,14 @@ std::string Where(const std::string &path, const yaml_mark_t &mark) {
   return s.str();
 }
 
+int CharacterAt(FILE *file, size_t index) {
+  const long keep = std::ftell(file);
+  int        c    = EOF;
+  if (std::fseek(file, (long)index, SEEK_SET) == 0) c = std::fgetc(file);
+  std::fseek(file, keep, SEEK_SET);
+  return c;
+}
+
 bool CheckYaml(const std::string &path, FILE *file, std::string *message) {
   yaml_parser_t parser;
   if (!yaml_parser_initialize(&parser)) {
@@ -28,9 +36,11 @@ bool CheckYaml(const std::string &path, FILE *file, std::string *message) {
   for (;;) {
     yaml_event_t event;
     if (!yaml_parser_parse(&parser, &event)) {
+      // libyaml's "found character that cannot start any token" for a tab says neither "tab" nor why
+      const bool tab = CharacterAt(file, parser.problem_mark.index) == '\t' || CharacterAt(file, parser.context_mark.index) == '\t';
       *message = Where(path, parser.problem_mark) + ": malformed YAML: " +
-                 (parser.problem ? parser.problem : "parse error");
-      if (parser.context) *message += std::string(" ") + parser.context;
+                 (tab ? std::string("a tab; YAML indents with spaces only") : std::string(parser.problem ? parser.problem : "parse error"));
+      if (parser.context && !tab) *message += std::string(" ") + parser.context;
       ok = false;
       break;
     }
@@ -46,6 +56,10 @@ bool CheckYaml(const std::string &path, FILE *file, std::string *message) {
       ++depth;
     }
     if (type == YAML_MAPPING_END_EVENT || type == YAML_SEQUENCE_END_EVENT) --depth;
+    if (type == YAML_STREAM_END_EVENT && !seenRoot) {
+      *message = path + ": the scene file is empty (no options in it)";
+      ok = false;
+    }
     yaml_event_delete(&event);
     if (!ok || type == YAML_STREAM_END_EVENT) break;
   }

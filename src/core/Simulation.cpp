@@ -29,7 +29,7 @@ PetscErrorCode Simulation::SetFromOptions() {
   {
     OptionReader opt(PetscOptionsObject);
     PetscCall(opt.NameList("-physics", "Modules to switch on, comma-separated", KnownPhysics(), &names, &physicsSet));
-    PetscCall(opt.Int("-max_steps", "Number of time steps to run at most", &maxSteps_, 0));
+    PetscCall(opt.Int("-max_steps", "Number of time steps to run at most", &maxSteps_, 0, PETSC_MAX_INT, &maxStepsSet_));
     PetscCall(opt.Real("-final_time", "Simulated time to stop at (default: none)", "s", &finalTime_, RealRange::Positive(), &finalSet));
     PetscCall(opt.Real("-dt", "Time step (0: the smallest stable limit of the modules)", "s", &dtUser_, RealRange::NonNegative()));
     PetscCall(opt.Bool("-dt_force", "Accept a -dt above a module's stable limit", &dtForce_));
@@ -375,7 +375,14 @@ PetscErrorCode Simulation::Run() {
   if (physics_.dem && !dem_->SaveParticlesPath().empty()) PetscCall(dem_->SaveParticles(dem_->SaveParticlesPath()));
   if (physics_.dem && !dem_->SaveContactHistoryPath().empty()) PetscCall(dem_->SaveContactHistory(dem_->SaveContactHistoryPath()));
   if (physics_.flow && !flow_->ProfilePath().empty()) PetscCall(flow_->WriteProfile(flow_->ProfilePath()));
-  PetscCall(PetscPrintf(comm_, "vofdem: finished after %" PetscInt_FMT " steps at t = %g s%s%s\n", step_, (double)time_,
+  // A run that a limit the scene did not set ended (the default -max_steps before its -final_time) says so.
+  std::string why;
+  if (step_ == maxSteps_ && !maxStepsSet_ && finalTime_ < PETSC_MAX_REAL && time_ < finalTime_ * (1 - 1e-12)) {
+    char b[200];
+    std::snprintf(b, sizeof b, " (the default -max_steps %d ended it before -final_time %g s: raise -max_steps)", (int)maxSteps_, (double)finalTime_);
+    why = b;
+  }
+  PetscCall(PetscPrintf(comm_, "vofdem: finished after %" PetscInt_FMT " steps at t = %g s%s%s%s\n", step_, (double)time_, why.c_str(),
                         csv_ ? "; monitor table in " : "", csv_ ? (outputDir_ + "/monitor.csv").c_str() : ""));
   PetscFunctionReturn(0);
 }

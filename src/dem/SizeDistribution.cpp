@@ -139,7 +139,7 @@ PetscErrorCode SizeDistribution::SetFromOptions(OptionReader &opt, MPI_Comm comm
 
   PetscFunctionBeginUser;
   PetscCall(opt.NameList(name("size_distribution").c_str(),
-                         "Size distribution by number: discrete (radii with mass fractions), uniform, normal or lognormal radius between the cut-offs", kinds,
+                         "Size distribution: discrete (the radii of _radii in the MASS fractions of _mass_fractions, drawn by number n_i ~ w_i/r_i^3), or uniform, normal or lognormal (each particle's radius drawn from it BY NUMBER, between the cut-offs)", kinds,
                          &kind));
   if (kind.size() != 1) VofdemInputError(comm, "option %s: give one distribution (discrete, uniform, normal or lognormal)", full("size_distribution").c_str());
   PetscCall(opt.RealList(name("radii").c_str(), "Radii of the discrete size distribution (default: -dem_radius)", "m", &radii, 64, RealRange::Positive()));

@@ -59,6 +59,12 @@ private:
 // Text helpers, exposed for unit tests.
 bool ParseReal(const std::string &text, PetscReal *value);
 bool ParseInt(const std::string &text, PetscInt *value);
+// An integer written out (digits, an optional sign) that does not fit a PetscInt (32 bits in this PETSc).
+bool IntegerTooLarge(const std::string &text);
+// Every option an OptionReader has looked up ("-dem_restitution"), and the one closest to a misspelt name
+// (edit distance at most max(2, length/5); "" when none is), for "did you mean" in CheckUnusedOptions.
+void        RecordOptionName(const std::string &fullName);
+std::string ClosestOptionName(const std::string &fullName);
 std::vector<std::string> SplitList(const std::string &text);
 
 }  // namespace vofdem

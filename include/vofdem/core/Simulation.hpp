@@ -70,6 +70,7 @@ private:
   PetscReal time_ = 0, dt_ = 0, dtUser_ = 0, dtInitial_ = 0, dtMax_ = 0, finalTime_ = PETSC_MAX_REAL;
   PetscBool dtForce_ = PETSC_FALSE, monitorTiming_ = PETSC_TRUE;
   PetscInt  step_ = 0, maxSteps_ = 100, monitorEvery_ = 10;
+  PetscBool maxStepsSet_ = PETSC_FALSE;  // the scene gave -max_steps (the closing line names a default that ended the run)
   PetscReal gravity_[3] = {0, 0, -9.81};
   PetscReal stopKinetic_ = 0, stopKineticAfter_ = 0;  // -stop_kinetic_energy, -stop_kinetic_energy_after
   PetscReal lastKinetic_ = PETSC_MAX_REAL;            // the particles' kinetic energy at the last monitor line
