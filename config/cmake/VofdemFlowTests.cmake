@@ -103,3 +103,7 @@ vofdem_bad_input_pressure(pressure_not_converged "pressure solve did not converg
 # velocity projected with the particles' eps, the first step chosen from the pores' speed (bubbling-bed scene, 1 and 2 ranks).
 add_test(NAME coupling/first_step_cfl COMMAND ${VOFDEM_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/test/coupling/test_first_step_cfl.py $<TARGET_FILE:vofdem_app>)
 set_tests_properties(coupling/first_step_cfl PROPERTIES LABELS "quick;coupling" PROCESSORS 2 TIMEOUT 300)
+# d(eps)/dt when the step changes (issue 55): a last step shortened 5x, and one of 2e-9 s, move a settling sphere
+# toward the finer step's velocity and not past it; monitor.csv gives the step taken.
+add_test(NAME coupling/eps_rate_step_change COMMAND ${VOFDEM_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/test/coupling/test_eps_rate_step_change.py $<TARGET_FILE:vofdem_app>)
+set_tests_properties(coupling/eps_rate_step_change PROPERTIES LABELS "quick;coupling" PROCESSORS 2 TIMEOUT 300)

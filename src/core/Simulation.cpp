@@ -268,12 +268,13 @@ PetscErrorCode Simulation::Step() {
   // so that drivers calling Step() alone (the examples) step stably too; a step the contacts allow is kept.
   if (physics_.dem && !physics_.flow && dtUser_ == 0 && step_ > 0 && dem_->StableTimeStep() != dt_) PetscCall(ChooseTimeStep());
   const PetscReal dt = finalTime_ < PETSC_MAX_REAL ? std::min(dt_, finalTime_ - time_) : dt_;
+  dtTaken_           = dt;
   // The coupled step (ARCHITECTURE.md, Coupling.hpp): projection, flow step, averaging, DEM sub-steps.
   // With a free surface the interface's force joins the flow step and the interface moves with the
   // projected velocity before the particles read the fluid (its new density and viscosity, P1).
   if (coupling_) {
     PetscCall(PetscLogStagePush(couplingStage_));
-    PetscCall(coupling_->Project());
+    PetscCall(coupling_->Project(dt));
     PetscCall(PetscLogStagePop());
     if (physics_.vof) {
       PetscCall(PetscLogStagePush(vofStage_));
@@ -454,7 +455,8 @@ PetscErrorCode Simulation::Monitor() {
   }
   std::string line;
   char        buf[512];
-  std::snprintf(buf, sizeof buf, "step %6d  t %.6e s  dt %.3e s", (int)step_, (double)time_, (double)dt_);
+  const PetscReal dtShown = step_ > runStartStep_ ? dtTaken_ : dt_;  // the step just taken (a last step shortened to -final_time too)
+  std::snprintf(buf, sizeof buf, "step %6d  t %.6e s  dt %.3e s", (int)step_, (double)time_, (double)dtShown);
   line += buf;
   if (physics_.dem) {
     std::snprintf(buf, sizeof buf, "  | particles %d  KE %.6e J  rot %.3e J  contacts %d  Z %.3f  wall %d  overlap %.3e d  floor %.6e N", (int)s.particles,
@@ -481,7 +483,7 @@ PetscErrorCode Simulation::Monitor() {
   }
   PetscCall(PetscPrintf(comm_, "%s\n", line.c_str()));
   if (csv_) {
-    std::fprintf(csv_, "%d,%.10e,%.6e,%d,%.10e,%.10e,%d,%.6f,%d,%.6e,%.10e,%lld,%lld,%.3f", (int)step_, (double)time_, (double)dt_, (int)s.particles, (double)s.kinetic,
+    std::fprintf(csv_, "%d,%.10e,%.6e,%d,%.10e,%.10e,%d,%.6f,%d,%.6e,%.10e,%lld,%lld,%.3f", (int)step_, (double)time_, (double)dtShown, (int)s.particles, (double)s.kinetic,
                  (double)s.rotational, (int)s.pairContacts, (double)s.coordination, (int)s.wallContacts, (double)s.maxOverlap, (double)s.wallForce[4][2],
                  (long long)s.inserted, (long long)s.deleted, wall);
     for (const WallLoad &L : s.walls)

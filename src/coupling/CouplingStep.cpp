@@ -13,7 +13,12 @@ PetscInt Coupling::Substeps(PetscReal dt) const {
 }
 
 // Step 1: eps from the particles' volume; the fluid's share of the drag impulse of the last step.
-PetscErrorCode Coupling::Project() {
+// dt is the fluid step about to be taken (0 at set-up). The fluid is given the particles' displacement at
+// the rate it happened, d(eps)/dt = (eps_particles - eps)/dtLast (F1): a step shorter than the last one
+// takes its share dt/dtLast of what it has not been given yet, the rest follows in the next steps; a step as
+// long or longer takes all of it (the fluid never runs ahead of the particles). Without this a final step
+// shortened 5.4x to land on -final_time put 5.4x the displacement rate into the continuity (issue 55).
+PetscErrorCode Coupling::Project(PetscReal dt) {
   ParticleArrays a;
   LocalField     eps, rho, A, Fw;
   PetscInt       s[3], n[3];
@@ -73,12 +78,14 @@ PetscErrorCode Coupling::Project() {
     PetscCall(VecGetArray(e, &ea));
     PetscCall(VecGetArrayRead(volume_, &va));
     if (epsChange_) PetscCall(VecGetArray(epsChange_, &ca));
+    const PetscReal share = dtLast_ > 0 && dt > 0 && dt < dtLast_ ? dt / dtLast_ : 1;
     for (PetscInt k = 0; k < m; ++k) {
       PetscReal v = 1 - PetscRealPart(va[k]) / Vc;
       if (v < minEps_) v = minEps_, ++clipped;
-      if (ca) ca[k] = v - PetscRealPart(ea[k]);  // what the particles displaced since the last projection (F1)
+      lo = std::min(lo, v);
+      if (share < 1) v = PetscRealPart(ea[k]) + share * (v - PetscRealPart(ea[k]));
+      if (ca) ca[k] = v - PetscRealPart(ea[k]);  // what the particles displaced since the last projection, this step's share (F1)
       ea[k] = v;
-      lo    = std::min(lo, v);
     }
     if (epsChange_) PetscCall(VecRestoreArray(epsChange_, &ca));
     PetscCall(VecRestoreArrayRead(volume_, &va));

@@ -68,6 +68,7 @@ private:
   Checkpoint checkpoint_;
 
   PetscReal time_ = 0, dt_ = 0, dtUser_ = 0, dtInitial_ = 0, dtMax_ = 0, finalTime_ = PETSC_MAX_REAL;
+  PetscReal dtTaken_ = 0;  // the last step's length: dt_, or less where it landed on -final_time (the monitor's dt)
   PetscBool dtForce_ = PETSC_FALSE, monitorTiming_ = PETSC_TRUE;
   PetscInt  step_ = 0, maxSteps_ = 100, monitorEvery_ = 10;
   PetscBool maxStepsSet_ = PETSC_FALSE;  // the scene gave -max_steps (the closing line names a default that ended the run)

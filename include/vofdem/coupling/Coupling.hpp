@@ -69,7 +69,9 @@ public:
   // The parts of one coupled step, called in this order by Simulation::Step (CouplingStep.cpp):
   // Project() (step 1), the flow step, Average() (step 3), Substeps() DEM steps of dt/Substeps(dt)
   // (step 4), Finish(dt).
-  PetscErrorCode Project();
+  // dt: the fluid step about to be taken, whose d(eps)/dt is the particles' displacement rate of the last
+  // step (CouplingStep.cpp); 0 at set-up.
+  PetscErrorCode Project(PetscReal dt = 0);
   // dt: the fluid step just taken (the interval since the last Average, for the fluid acceleration
   // Du/Dt of the added mass); 0 at set-up (no acceleration).
   PetscErrorCode Average(PetscReal dt = 0);
