@@ -36,6 +36,10 @@ vofdem_checkpoint_test(signal_2 2 signal 2 SIGTERM rank)
 vofdem_checkpoint_test(signal_usr1_2 2 signal 2 SIGUSR1 mpiexec)
 vofdem_checkpoint_test(diskfull_1 1 diskfull 1)
 vofdem_checkpoint_test(diskfull_2 2 diskfull 2)
+# A real full file system (a 4 MB tmpfs): skipped, with the script's message, where it cannot be mounted.
+vofdem_checkpoint_test(tmpfs_1 1 tmpfs 1)
+vofdem_checkpoint_test(tmpfs_2 2 tmpfs 2)
+set_tests_properties(checkpoint/tmpfs_1 checkpoint/tmpfs_2 PROPERTIES SKIP_RETURN_CODE 77)
 vofdem_checkpoint_test(bad_input 2 badinput)
 vofdem_checkpoint_test(final_only_2 2 final 2)
 # Inserted regolith clumps (P10) across a restart: bitwise on 2 ranks, and 2 -> 1 ranks.

@@ -12,8 +12,9 @@
   signal RANKS SIG TO   SIG (SIGTERM, SIGINT, SIGUSR1) to one rank (TO rank) or to mpiexec (TO mpiexec)
                         mid-run: exit 0 with one message, a checkpoint of that step; -restart latest
                         ends bitwise equal to the uninterrupted run.
-  diskfull RANKS        a checkpoint that does not fit (file-size limit; a full tmpfs where mounting is
-                        allowed): one line, non-zero exit, the previous checkpoint intact.
+  tmpfs RANKS           a full 4 MB tmpfs (exit 77, skipped, where it cannot be mounted)
+  diskfull RANKS        a checkpoint that does not fit a 1 MB file-size limit (before the write, and inside
+                        the HDF5 write): one line, non-zero exit, the previous checkpoint intact.
   reuse SCENE RANKS M   restarts at a step where the pressure preconditioner is reused and at the last reused step
                         before a rebuild, against M steps uninterrupted: bitwise, the same reuse decisions.
   final RANKS           -checkpoint_final 1 alone: the last step's checkpoint only, and a run goes on from it.
@@ -335,8 +336,7 @@ def case_diskfull(exe, ranks):
     """A full disk while checkpoints are written: one line, non-zero exit, the previous checkpoint
     intact (restartable). Two ways: a 1 MB-per-file limit on the ranks (prlimit --fsize; Open MPI's
     shared memory needs bigger files, so the ranks talk over TCP here) before the space check and,
-    with -checkpoint_space_check 0, inside the HDF5 write; and, where mounting is allowed (root), a
-    real 4 MB tmpfs that fills up at the third checkpoint of a 1.6 MB flow state."""
+    with -checkpoint_space_check 0, inside the HDF5 write. The real full file system is case_tmpfs."""
     tmp = tempfile.mkdtemp(prefix="vofdem-ckpt-")
     d = os.path.join(tmp, "ck")
     run(exe, ranks, "flow", ["-max_steps", "10", "-checkpoint_dir", d, "-checkpoint_every", "10", "-grid_cells", "64,64,4"])
@@ -351,21 +351,51 @@ def case_diskfull(exe, ranks):
         one_error_line(p, pattern, "file-size limit, -checkpoint_space_check %s" % space_check)
         p = run(exe, ranks, "flow", ["-grid_cells", "64,64,4", "-max_steps", "11", "-checkpoint_dir", d, "-restart", "latest", "-checkpoint_final", "0"])
         check("restarted from %s at step 10" % ckpt(d, 10) in p.stdout, "after the failed write, -restart latest continues from the intact step-10 file")
+    shutil.rmtree(tmp)
+
+
+SKIP = 77  # CTest's SKIP_RETURN_CODE for this script's checkpoint/tmpfs_* tests
+
+
+def run_each_rank(exe, ranks, scene, args):
+    """Runs with every rank under sh, which reports that rank's own exit status (Open MPI is told not
+    to kill the others when one exits non-zero). Returns (output without the status lines, {rank: status})."""
+    wrapper = '"$@"; echo "rank-status: ${OMPI_COMM_WORLD_RANK} $?"'
+    cmd = mpi(ranks) + ["--mca", "orte_abort_on_non_zero_status", "0", "sh", "-c", wrapper, "sh", exe] + scene_args(scene, ranks) + args
+    p = subprocess.run(cmd, capture_output=True, text=True, timeout=300, env=ENV)
+    out = p.stdout + p.stderr
+    status = {int(r): int(c) for r, c in re.findall(r"^rank-status: (\d+) (\d+)$", out, re.M)}
+    return "\n".join(l for l in out.splitlines() if not l.startswith("rank-status: ")), status
+
+
+def case_tmpfs(exe, ranks):
+    """A real full file system: a 4 MB tmpfs fills up at the third checkpoint of a 1.8 MB flow state.
+    One error line, every rank exits non-zero by itself (no signal, no hang), the two complete
+    checkpoints are all that is left on the disk, and the second restarts. Skipped (exit 77) where a
+    tmpfs cannot be mounted (not root, or no mount namespace)."""
+    tmp = tempfile.mkdtemp(prefix="vofdem-ckpt-")
     mnt = os.path.join(tmp, "tmpfs")
     os.makedirs(mnt)
-    if subprocess.run(["mount", "-t", "tmpfs", "-o", "size=4m", "tmpfs", mnt], capture_output=True).returncode != 0:
-        print("note: cannot mount a tmpfs here (not root?): the real full-disk case is not run")
-    else:
-        try:
-            p = run(exe, ranks, "flow", ["-grid_cells", "64,64,4", "-max_steps", "30", "-checkpoint_dir", mnt, "-checkpoint_every", "5"], expect_ok=False)
-            one_error_line(p, r"checkpoint: cannot write '.*\.checkpoint_00000015\.h5\.tmp' \(-checkpoint_dir\): no room for about 1\.\d MB \(No space left "
-                           r"on device\); checkpoint_00000010\.h5 is kept", "4 MB tmpfs")
-            check(sorted(os.listdir(mnt)) == ["checkpoint_00000005.h5", "checkpoint_00000010.h5"], "the tmpfs holds the two complete checkpoints only (%s)"
-                  % sorted(os.listdir(mnt)))
-            p = run(exe, ranks, "flow", ["-grid_cells", "64,64,4", "-max_steps", "12", "-checkpoint_dir", mnt, "-restart", "latest", "-checkpoint_final", "0"])
-            check("restarted from %s at step 10" % ckpt(mnt, 10) in p.stdout, "the full disk's step-10 checkpoint is intact (-restart latest)")
-        finally:
-            subprocess.run(["umount", mnt])
+    m = subprocess.run(["mount", "-t", "tmpfs", "-o", "size=4m", "tmpfs", mnt], capture_output=True, text=True)
+    if m.returncode != 0:
+        print("skipped: cannot mount a 4 MB tmpfs here (%s): the full-file-system case needs root" % (" ".join(m.stderr.split()) or m.returncode))
+        shutil.rmtree(tmp)
+        sys.exit(SKIP)
+    try:
+        out, status = run_each_rank(exe, ranks, "flow", ["-grid_cells", "64,64,4", "-max_steps", "30", "-checkpoint_dir", mnt,
+                                                         "-checkpoint_every", "5"])
+        errs = [l for l in out.splitlines() if l.startswith("vofdem: error:")]
+        check(len(errs) == 1 and re.search(r"checkpoint: cannot write '.*\.checkpoint_00000015\.h5\.tmp' \(-checkpoint_dir\): no room for about "
+                                           r"1\.\d MB \(No space left on device\); checkpoint_00000010\.h5 is kept", errs[0]) is not None
+              and "PETSC ERROR" not in out and "HDF5-DIAG" not in out, "4 MB tmpfs: one clear error line (%s)" % errs)
+        check(sorted(status) == list(range(ranks)) and all(0 < c < 128 for c in status.values()),
+              "every rank exits non-zero by itself, none by a signal (statuses %s)" % status)
+        check(sorted(os.listdir(mnt)) == ["checkpoint_00000005.h5", "checkpoint_00000010.h5"],
+              "the tmpfs holds the two complete checkpoints only, no partial file (%s)" % sorted(os.listdir(mnt)))
+        p = run(exe, ranks, "flow", ["-grid_cells", "64,64,4", "-max_steps", "12", "-checkpoint_dir", mnt, "-restart", "latest", "-checkpoint_final", "0"])
+        check("restarted from %s at step 10" % ckpt(mnt, 10) in p.stdout, "the full disk's step-10 checkpoint is intact (-restart latest)")
+    finally:
+        subprocess.run(["umount", mnt])
     shutil.rmtree(tmp)
 
 
@@ -510,6 +540,8 @@ def main():
         case_signal(exe, int(args[0]), args[1], args[2])
     elif case == "diskfull":
         case_diskfull(exe, int(args[0]))
+    elif case == "tmpfs":
+        case_tmpfs(exe, int(args[0]))
     elif case == "badinput":
         case_badinput(exe)
     elif case == "final":
