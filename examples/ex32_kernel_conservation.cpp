@@ -9,7 +9,7 @@ static const char help[] = "Verification C3 (VERIFICATION.md) for the kernel pro
 
 #include "vofdem/core/Runtime.hpp"
 #include "vofdem/coupling/KernelAverager.hpp"
-#include "vofdem/flow/StaggeredGrid.hpp"
+#include "vofdem/grid/StaggeredGrid.hpp"
 #include "vofdem/grid/Grid.hpp"
 #include "vofdem/examples/Help.hpp"
 

@@ -26,7 +26,7 @@ static const char help[] = "Rotation and lubrication in the CFD-DEM coupling (-p
 
 #include "vofdem/core/Runtime.hpp"
 #include "vofdem/core/Simulation.hpp"
-#include "vofdem/flow/StaggeredGrid.hpp"
+#include "vofdem/grid/StaggeredGrid.hpp"
 #include "vofdem/examples/Help.hpp"
 
 #include <cmath>

@@ -14,7 +14,7 @@ static const char help[] = "Verification of the diffusion-based smoothing (Diffu
 
 #include "vofdem/core/Runtime.hpp"
 #include "vofdem/coupling/Smoothing.hpp"
-#include "vofdem/flow/StaggeredGrid.hpp"
+#include "vofdem/grid/StaggeredGrid.hpp"
 #include "vofdem/grid/Grid.hpp"
 #include "vofdem/examples/Help.hpp"
 

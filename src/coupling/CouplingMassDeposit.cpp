@@ -1,5 +1,6 @@
 // The fluid's reaction to explicit particle forces, shared by face mass (Coupling.hpp, PHYSICS.md F5).
 #include "vofdem/coupling/Coupling.hpp"
+#include "vofdem/grid/FaceProperties.hpp"
 
 namespace vofdem {
 
@@ -34,7 +35,8 @@ PetscErrorCode Coupling::DepositByFaceMass(int d, const ParticleArrays &a, Local
         cm[d] -= 1;
         const PetscReal eL = PetscRealPart(eps.at(cm)), eR = PetscRealPart(eps.at(q));
         const PetscReal bL = eL / PetscRealPart(rho.at(cm)), bR = eR / PetscRealPart(rho.at(q));
-        const PetscReal eF = 0.5 * (eL + eR), bF = 2 * bL * bR / (bL + bR);
+        const FaceProperties face = FaceAverage(eL, eR, bL, bR);
+        const PetscReal eF = face.eps, bF = face.beta;
         M.at(q) = eF * eF / bF;
       }
   PetscCall(sg.RestoreGlobal(d, work, &M));

@@ -1,6 +1,7 @@
 // The coupled step's exchanges (Coupling.hpp): projection of the particles to the grid (K3, F5) and
 // averaging of the fluid at the particles with the fluid-particle forces (K1, K2, K1b, F6, P1).
 #include "vofdem/coupling/Coupling.hpp"
+#include "vofdem/grid/FaceProperties.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -95,8 +96,8 @@ PetscErrorCode Coupling::Project(PetscReal dt) {
     PetscCall(flow_->PropertiesChanged());
   }
   // The reaction: -F on the faces of each component, as an acceleration -F/(V (eps rho)_f) with the
-  // face's (eps rho) exactly as the flow's predictor forms it (harmonic mean of eps/rho, mean of eps),
-  // so the fluid's momentum changes by exactly -F dt.
+  // face's (eps rho) of the flow's predictor (FaceAverage, grid/FaceProperties.hpp), so the fluid's momentum
+  // changes by exactly -F dt.
   PetscCall(DMGlobalToLocal(sg.Cells(), flow_->FluidFraction(), INSERT_VALUES, cellLocal_));
   PetscCall(DMGlobalToLocal(sg.Cells(), flow_->Density(), INSERT_VALUES, rhoLocal_));
   PetscCall(sg.GetLocal(3, cellLocal_, &eps));
@@ -141,7 +142,8 @@ PetscErrorCode Coupling::Project(PetscReal dt) {
             cm[d] -= 1;
             const PetscReal eL = PetscRealPart(eps.at(cm)), eR = PetscRealPart(eps.at(q));
             const PetscReal bL = eL / PetscRealPart(rho.at(cm)), bR = eR / PetscRealPart(rho.at(q));
-            const PetscReal eF = 0.5 * (eL + eR), bF = 2 * bL * bR / (bL + bR);
+            const FaceProperties face = FaceAverage(eL, eR, bL, bR);
+            const PetscReal eF = face.eps, bF = face.beta;
             const PetscReal w = PetscRealPart(W.at(q)) / K;
             source[d] += K * (w - PetscRealPart(U.at(q)));  // the fluid's drag at the start of the step, N
             W.at(q) = w;
@@ -192,7 +194,8 @@ PetscErrorCode Coupling::Project(PetscReal dt) {
         for (PetscInt i = i0; i < i1; ++i) {
           const PetscReal eL = PetscRealPart(er[i - sd]), eR = PetscRealPart(er[i]);
           const PetscReal bL = eL / PetscRealPart(rr[i - sd]), bR = eR / PetscRealPart(rr[i]);
-          const PetscReal eF = 0.5 * (eL + eR), bF = 2 * bL * bR / (bL + bR);
+          const FaceProperties face = FaceAverage(eL, eR, bL, bR);
+          const PetscReal eF = face.eps, bF = face.beta;
           Ar[i] = -PetscRealPart(Ar[i]) / (Vc * eF * eF / bF);
         }
       }

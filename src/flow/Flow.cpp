@@ -1,4 +1,5 @@
 #include "vofdem/flow/Flow.hpp"
+#include "vofdem/grid/FaceProperties.hpp"
 
 #include "vofdem/core/Options.hpp"
 #include "vofdem/core/Runtime.hpp"
@@ -380,7 +381,8 @@ PetscErrorCode Flow::Summarize(FlowSummary *s) {
           const PetscReal v = PetscRealPart(u.at(q));
           mx = std::fmax(mx, std::fabs(v));
           const PetscReal bL = PetscRealPart(beta.at(cm)), bR = PetscRealPart(beta.at(q));
-          const PetscReal eF = 0.5 * PetscRealPart(eps.at(cm) + eps.at(q)), bF = 2 * bL * bR / (bL + bR);
+          const FaceProperties face = FaceAverage(PetscRealPart(eps.at(cm)), PetscRealPart(eps.at(q)), bL, bR);
+          const PetscReal eF = face.eps, bF = face.beta;
           // A boundary face carries half a control volume.
           const PetscReal w = (!grid_->Periodic(d) && (q[d] == 0 || q[d] == last)) ? 0.5 : 1;
           ke += w * 0.5 * eF * eF / bF * v * v * V;

@@ -1,6 +1,7 @@
 // The momentum predictor of Flow (Flow.hpp): explicit terms at time level n and the provisional
 // velocity u*. PHYSICS.md (F2); discretisation on the MAC grid described in Flow.hpp.
 #include "vofdem/flow/Flow.hpp"
+#include "vofdem/grid/FaceProperties.hpp"
 
 namespace vofdem {
 
@@ -84,7 +85,8 @@ void MomentumTerms(int d, const TermFields &F, const PetscInt s[3], const PetscI
           trans += (emP * (uea - ueam) - emN * (ueb - uebm)) * ih[d] * ih[e];
         }
         const PetscReal bL = be[i - cs_d], bR = be[i];
-        const PetscReal eF = 0.5 * (ep[i - cs_d] + ep[i]), bF = 2 * bL * bR / (bL + bR);
+        const FaceProperties face = FaceAverage(ep[i - cs_d], ep[i], bL, bR);
+        const PetscReal eF = face.eps, bF = face.beta;
         Ho[i] = (ADV ? -adv : 0) + (F.transpose ? trans * bF / (eF * eF) : 0);  // (eps rho)_f = eps_f^2 / b_f
         Lo[i] = lap;
       }
@@ -226,7 +228,8 @@ PetscErrorCode Flow::Predict(PetscReal t, PetscReal dt) {
             PetscInt q[3] = {i, j, k}, cm[3] = {i, j, k};
             cm[d] -= 1;
             const PetscReal bL = PetscRealPart(beta.at(cm)), bR = PetscRealPart(beta.at(q));
-            const PetscReal eF = 0.5 * PetscRealPart(eps.at(cm) + eps.at(q)), bF = 2 * bL * bR / (bL + bR);
+            const FaceProperties face = FaceAverage(PetscRealPart(eps.at(cm)), PetscRealPart(eps.at(q)), bL, bR);
+            const PetscReal eF = face.eps, bF = face.beta;
             Hd.at(q) += Ld.at(q) * bF / (eF * eF);
           }
       PetscCall(sg_.RestoreGlobal(d, L_[d], &Ld));
@@ -261,7 +264,8 @@ PetscErrorCode Flow::Predict(PetscReal t, PetscReal dt) {
             continue;
           }
           const PetscReal bL = PetscRealPart(bq[i - cs]), bR = PetscRealPart(bq[i]);
-          const PetscReal eF = 0.5 * PetscRealPart(eq[i - cs] + eq[i]), bF = 2 * bL * bR / (bL + bR);
+          const FaceProperties face = FaceAverage(PetscRealPart(eq[i - cs]), PetscRealPart(eq[i]), bL, bR);
+          const PetscReal eF = face.eps, bF = face.beta;
           const PetscReal invRho = bF / eF, epsRho = eF * eF / bF;
           PetscReal       acc = c1 * PetscRealPart(Hq[i]) + c0 * PetscRealPart(Hoq[i]) + gravity_[d];
           acc -= invRho * PetscRealPart(pq[i] - pq[i - cs]) / h[d];

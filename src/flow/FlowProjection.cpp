@@ -2,6 +2,7 @@
 // then u = u* - dt (1/rho)_f G phi and p += phi. PHYSICS.md (F1): div(eps U) = -d(eps)/dt, the rate
 // from the coupling's change of eps over the step (SetFluidFractionChange; 0 without particles).
 #include "vofdem/flow/Flow.hpp"
+#include "vofdem/grid/FaceProperties.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -128,7 +129,8 @@ PetscErrorCode Flow::Project(PetscReal dt, Vec *) {
         const PetscScalar *bb = &beta.at(s[0], j, k), *ee = &eps.at(s[0], j, k), *ph = &phi.at(s[0], j, k);
         for (PetscInt i = 0; i < n[0]; ++i) {
           const PetscReal bL = bb[i - cs], bR = bb[i];
-          const PetscReal eF = 0.5 * (ee[i - cs] + ee[i]), bF = 2 * bL * bR / (bL + bR);
+          const FaceProperties face = FaceAverage(ee[i - cs], ee[i], bL, bR);
+          const PetscReal eF = face.eps, bF = face.beta;
           uu[i] -= c * bF / eF * (ph[i] - ph[i - cs]);
         }
       }

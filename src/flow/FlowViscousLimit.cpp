@@ -19,6 +19,7 @@
 // (eps varying, div U not zero) the term was never limited and runs such as ex34's packed bed are stable
 // at steps this estimate would cut by about 1.5x; no bound is claimed there.
 #include "vofdem/flow/Flow.hpp"
+#include "vofdem/grid/FaceProperties.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -61,7 +62,8 @@ PetscReal FaceRates(int d, const LocalField &em, const LocalField &beta, const L
           for (int a = 0; a < 2; ++a) row += 2 * (emP[a] + emN[a]) * ihe2[a];
         }
         const PetscReal bL = b0[i - cs_d], bR = b0[i];
-        const PetscReal eF = 0.5 * (e0[i - cs_d] + e0[i]), bF = 2 * bL * bR / (bL + bR);
+        const FaceProperties face = FaceAverage(e0[i - cs_d], e0[i], bL, bR);
+        const PetscReal eF = face.eps, bF = face.beta;
         worst = std::max(worst, row * bF / (eF * eF));  // / (eps rho)_f
       }
     }

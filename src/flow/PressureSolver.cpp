@@ -1,4 +1,5 @@
 #include "vofdem/flow/PressureSolver.hpp"
+#include "vofdem/grid/FaceProperties.hpp"
 
 #include <petscviewerhdf5.h>
 
@@ -306,7 +307,7 @@ PetscErrorCode PressureSolver::Assemble(Vec beta) {
               q[d]          = nb;  // DMDA wraps -1 and N in periodic directions
               if (sol && PetscRealPart(sol[q[2]][q[1]][q[0]]) > 0.5) continue;  // a solid neighbour: no flux
               const PetscReal bn = PetscRealPart(b[q[2]][q[1]][q[0]]);
-              const PetscReal w  = 2 * bc * bn / (bc + bn) * ih2[d];  // harmonic mean at the face
+              const PetscReal w  = FaceBeta(bc, bn) * ih2[d];  // harmonic mean at the face
               col[n]             = {q[2], q[1], q[0], 0};
               val[n++]           = -w;
               diag += w;

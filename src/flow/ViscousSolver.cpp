@@ -1,4 +1,5 @@
 #include "vofdem/flow/ViscousSolver.hpp"
+#include "vofdem/grid/FaceProperties.hpp"
 
 #include "vofdem/core/Runtime.hpp"
 
@@ -16,7 +17,8 @@ PetscInt InteriorRow(int d, const PetscInt q[3], PetscReal dt, const PetscReal h
   const PetscInt     sd = em.stride[d];
   const PetscReal    bL = PetscRealPart((&beta.at(q))[-beta.stride[d]]), bR = PetscRealPart(beta.at(q));
   const PetscScalar *epq = &eps.at(q);
-  const PetscReal    eF = 0.5 * PetscRealPart(epq[-eps.stride[d]] + epq[0]), bF = 2 * bL * bR / (bL + bR);
+  const FaceProperties face = FaceAverage(PetscRealPart(epq[-eps.stride[d]]), PetscRealPart(epq[0]), bL, bR);
+  const PetscReal eF = face.eps, bF = face.beta;
   PetscReal          diag = 0;
   PetscInt           nc   = 1;
   col[0]                  = {q[2], q[1], q[0], 0};
@@ -111,7 +113,8 @@ PetscInt ViscousSolver::Row(int d, const PetscInt q[3], PetscReal dt, const Loca
     return 1;
   }
   const PetscReal bL = PetscRealPart(beta.at(cm)), bR = PetscRealPart(beta.at(q));
-  const PetscReal eF = 0.5 * PetscRealPart(eps.at(cm) + eps.at(q)), bF = 2 * bL * bR / (bL + bR);
+  const FaceProperties face = FaceAverage(PetscRealPart(eps.at(cm)), PetscRealPart(eps.at(q)), bL, bR);
+  const PetscReal eF = face.eps, bF = face.beta;
   PetscReal       diag = 0;
   for (int e = 0; e < 3; ++e)
     for (int side = 0; side < 2; ++side) {
@@ -257,7 +260,8 @@ PetscErrorCode ViscousSolver::Assemble(PetscReal dt, Vec epsLocal, Vec betaLocal
               continue;
             }
             const PetscReal bL = PetscRealPart(bq[i - cs]), bR = PetscRealPart(bq[i]);
-            const PetscReal eF = 0.5 * PetscRealPart(eq[i - cs] + eq[i]), bF = 2 * bL * bR / (bL + bR);
+            const FaceProperties face = FaceAverage(PetscRealPart(eq[i - cs]), PetscRealPart(eq[i]), bL, bR);
+            const PetscReal eF = face.eps, bF = face.beta;
             o[i] = MassOverDt(eF, bF, dt) + PetscRealPart(Kq[i]);
           }
         }

@@ -29,7 +29,7 @@
 #include "vofdem/coupling/DiffusionOperator.hpp"
 #include "vofdem/coupling/GaussianFilter.hpp"
 #include "vofdem/coupling/KernelAverager.hpp"
-#include "vofdem/flow/StaggeredGrid.hpp"
+#include "vofdem/grid/StaggeredGrid.hpp"
 
 #include <petscksp.h>
 

@@ -16,7 +16,7 @@
 #pragma once
 
 #include "vofdem/coupling/Kernel.hpp"
-#include "vofdem/flow/StaggeredGrid.hpp"
+#include "vofdem/grid/StaggeredGrid.hpp"
 
 #include <vector>
 

@@ -21,7 +21,7 @@
 #include "vofdem/flow/FlowBoundary.hpp"
 #include "vofdem/flow/PressureSolver.hpp"
 #include "vofdem/flow/SolidMask.hpp"
-#include "vofdem/flow/StaggeredGrid.hpp"
+#include "vofdem/grid/StaggeredGrid.hpp"
 #include "vofdem/flow/ViscousSolver.hpp"
 #include "vofdem/io/Xdmf.hpp"
 

@@ -12,7 +12,7 @@
 // for the normal velocity at a wall (d(u_n)/dn = 0 there by continuity), zero gradient otherwise.
 #pragma once
 
-#include "vofdem/flow/StaggeredGrid.hpp"
+#include "vofdem/grid/StaggeredGrid.hpp"
 
 #include <string>
 

@@ -13,7 +13,7 @@
 // Without any solid nothing is allocated and the flow's loops are unchanged.
 #pragma once
 
-#include "vofdem/flow/StaggeredGrid.hpp"
+#include "vofdem/grid/StaggeredGrid.hpp"
 
 #include <vector>
 

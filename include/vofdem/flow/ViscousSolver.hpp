@@ -10,7 +10,7 @@
 #include "vofdem/flow/AijRowWriter.hpp"
 #include "vofdem/flow/FlowBoundary.hpp"
 #include "vofdem/flow/SolidMask.hpp"
-#include "vofdem/flow/StaggeredGrid.hpp"
+#include "vofdem/grid/StaggeredGrid.hpp"
 
 #include <petscksp.h>
 

@@ -4,7 +4,7 @@
 // whose discrete divergence is zero to round-off in every cell (the differences telescope).
 #pragma once
 
-#include "vofdem/flow/StaggeredGrid.hpp"
+#include "vofdem/grid/StaggeredGrid.hpp"
 
 namespace vofdem {
 

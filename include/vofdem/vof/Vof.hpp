@@ -16,7 +16,7 @@
 // alternates (x,y,z then z,y,x).
 #pragma once
 
-#include "vofdem/flow/StaggeredGrid.hpp"
+#include "vofdem/grid/StaggeredGrid.hpp"
 
 #include <string>
 #include <vector>

@@ -1,4 +1,4 @@
-// The MAC layout of the flow module (ARCHITECTURE.md "face velocities"; notes/petsc-3.18.md, DMDA):
+// The staggered (MAC) layout on the grid, shared by flow, vof and coupling (docs/architecture.md, "face velocities"; DMDA traps: docs/petsc-notes.md):
 // one DMDA per staggered location, all with the ownership ranges of the grid's cell DMDA.
 //  - Cells(): cell-centred fields (density, viscosity, eps, pressure) as vectors with a 2-wide BOX
 //    ghost layer (the TVD stencil); matrices are never assembled on it.

@@ -1,4 +1,4 @@
-#include "vofdem/flow/StaggeredGrid.hpp"
+#include "vofdem/grid/StaggeredGrid.hpp"
 
 #include "vofdem/core/Runtime.hpp"
 
