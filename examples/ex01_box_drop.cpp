@@ -4,8 +4,8 @@ static const char help[] = "Spheres dropped into a closed box: lattice fill with
                            "and checks what must hold whatever the rank count: averaged over the last -average_steps steps, the walls\n"
                            "carry the whole weight (momentum balance), and the bed has come nearly to rest.\n\n";
 
-#include "vofdem/core/Runtime.hpp"
-#include "vofdem/core/Simulation.hpp"
+#include "vofdem/base/Runtime.hpp"
+#include "vofdem/sim/ModuleAccess.hpp"
 #include "vofdem/examples/Help.hpp"
 
 #include <petscdmswarm.h>
@@ -43,7 +43,7 @@ static PetscErrorCode Run() {
   PetscCall(sim.Create(PETSC_COMM_WORLD));
   PetscCall(sim.SetFromOptions());
   PetscCall(sim.SetUp());
-  vofdem::Dem *dem = sim.Particles();
+  vofdem::Dem *dem = Particles(sim);
   for (;;) {
     if (sim.StepNumber() % printEvery == 0) {
       PetscCall(dem->Summarize(&s));

@@ -5,8 +5,8 @@ static const char help[] = "Verification D1 (sphere-wall variant): normal impact
 // A wall is a sphere of infinite radius and mass (PHYSICS.md P3): R* = R, m* = m. The contact
 // starts and ends where the gap crosses zero, found by linear interpolation between steps.
 
-#include "vofdem/core/Runtime.hpp"
-#include "vofdem/core/Simulation.hpp"
+#include "vofdem/base/Runtime.hpp"
+#include "vofdem/sim/ModuleAccess.hpp"
 #include "vofdem/examples/Help.hpp"
 
 #include <cstdio>
@@ -43,7 +43,7 @@ static PetscErrorCode RunImpact(PetscReal e, PetscReal v0, PetscReal tc, PetscIn
   PetscCall(sim.Create(PETSC_COMM_WORLD));
   PetscCall(sim.SetFromOptions());
   PetscCall(sim.SetUp());
-  vofdem::Dem    *dem = sim.Particles();
+  vofdem::Dem    *dem = Particles(sim);
   const PetscReal R   = dem->Radius();
   PetscCall(dem->FindParticle(0, x, v, &found));
   PetscCheck(found, PETSC_COMM_WORLD, PETSC_ERR_PLIB, "particle 0 missing");

@@ -6,8 +6,8 @@ static const char help[] = "Verification D1 (two spheres) and D2 (oblique impact
                            "there is the restitution the impact realised (printed next to the input).\n"
                            "With -grid_ranks 1,1,2 the head-on collision happens on the boundary between the two ranks.\n\n";
 
-#include "vofdem/core/Runtime.hpp"
-#include "vofdem/core/Simulation.hpp"
+#include "vofdem/base/Runtime.hpp"
+#include "vofdem/sim/ModuleAccess.hpp"
 #include "vofdem/io/TextFile.hpp"
 #include "vofdem/examples/Help.hpp"
 
@@ -66,7 +66,7 @@ static PetscErrorCode Binary(PetscReal e, PetscReal v0, PetscInt stepsPerContact
   PetscCall(sim.Create(PETSC_COMM_WORLD));
   PetscCall(sim.SetFromOptions());
   PetscCall(sim.SetUp());
-  vofdem::Dem *dem = sim.Particles();
+  vofdem::Dem *dem = Particles(sim);
   PetscReal    xa[3], va[3], xb[3], vb[3];
   PetscBool    found;
   auto gap = [&](PetscReal *g) {
@@ -100,7 +100,7 @@ static PetscErrorCode Oblique(PetscReal e, PetscReal mu, PetscReal vt, PetscReal
   PetscCall(sim.Create(PETSC_COMM_WORLD));
   PetscCall(sim.SetFromOptions());
   PetscCall(sim.SetUp());
-  vofdem::Dem *dem = sim.Particles();
+  vofdem::Dem *dem = Particles(sim);
   auto gap = [&](PetscReal *g) {
     PetscFunctionBeginUser;
     PetscCall(dem->FindParticle(0, x, v, &found, w));

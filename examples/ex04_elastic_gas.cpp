@@ -9,8 +9,8 @@ static const char help[] = "Verification D4: an elastic gas of spheres in a clos
                            "fit of log2(drift) against the halving count over the whole ladder, which averages that scatter out\n"
                            "(the single pairs are printed beside it).\n\n";
 
-#include "vofdem/core/Runtime.hpp"
-#include "vofdem/core/Simulation.hpp"
+#include "vofdem/base/Runtime.hpp"
+#include "vofdem/sim/ModuleAccess.hpp"
 #include "vofdem/examples/Help.hpp"
 
 #include <cmath>
@@ -30,13 +30,13 @@ static PetscErrorCode Drift(PetscReal dt, PetscInt steps, PetscReal *drift, Pets
   PetscCall(sim.Create(PETSC_COMM_WORLD));
   PetscCall(sim.SetFromOptions());
   PetscCall(sim.SetUp());
-  PetscCall(sim.Particles()->Summarize(&s));
+  PetscCall(Particles(sim)->Summarize(&s));
   const PetscReal e0 = s.kinetic + s.rotational + s.elastic;
   *drift    = 0;
   *contacts = 0;
   for (PetscInt k = 0; k < steps; ++k) {
     PetscCall(sim.Step());
-    PetscCall(sim.Particles()->Summarize(&s));
+    PetscCall(Particles(sim)->Summarize(&s));
     *drift = PetscMax(*drift, PetscAbsReal(s.kinetic + s.rotational + s.elastic - e0) / e0);
     *contacts += s.pairContacts;
   }

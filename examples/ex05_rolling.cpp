@@ -4,8 +4,8 @@ static const char help[] = "Verification D5: rolling resistance (P5) of a sphere
                            "Once it has stopped, epsd holds it (|w| stays below 1e-6 of the initial spin) while cdt chatters around\n"
                            "w = 0, its torque flipping sign every step.\n\n";
 
-#include "vofdem/core/Runtime.hpp"
-#include "vofdem/core/Simulation.hpp"
+#include "vofdem/base/Runtime.hpp"
+#include "vofdem/sim/ModuleAccess.hpp"
 #include "vofdem/io/TextFile.hpp"
 #include "vofdem/examples/Help.hpp"
 
@@ -42,7 +42,7 @@ static PetscErrorCode Roll(const char *model, PetscReal R, PetscReal v0, PetscRe
   out->restSpin     = 0;
   while (sim.Time() < tEnd) {
     PetscCall(sim.Step());
-    PetscCall(sim.Particles()->FindParticle(0, x, v, &found, w));
+    PetscCall(Particles(sim)->FindParticle(0, x, v, &found, w));
     const PetscReal t = sim.Time();
     if (t > 0.1 * tStop && t < 0.6 * tStop) st += t, sv += v[0], stt += t * t, stv += t * v[0], cnt += 1;
     if (t > 0.75 * tEnd) out->restSpin = PetscMax(out->restSpin, PetscSqrtReal(w[0] * w[0] + w[1] * w[1] + w[2] * w[2]));

@@ -3,8 +3,8 @@ static const char help[] = "Verification D3: JKR adhesion (P6) pulled apart slow
                            "breaks at delta_c = -(3/4) (pi^2 w^2 R*/E*^2)^(1/3) (within 2 %). The spheres are made very heavy so the\n"
                            "adhesive force cannot change their pulling speed (displacement control in a dynamic code).\n\n";
 
-#include "vofdem/core/Runtime.hpp"
-#include "vofdem/core/Simulation.hpp"
+#include "vofdem/base/Runtime.hpp"
+#include "vofdem/sim/ModuleAccess.hpp"
 #include "vofdem/io/TextFile.hpp"
 #include "vofdem/examples/Help.hpp"
 
@@ -38,7 +38,7 @@ static PetscErrorCode PullApart(bool pair, Overlap overlap, Pulled *out) {
   PetscCall(sim.Create(PETSC_COMM_WORLD));
   PetscCall(sim.SetFromOptions());
   PetscCall(sim.SetUp());
-  vofdem::Dem *dem = sim.Particles();
+  vofdem::Dem *dem = Particles(sim);
   out->maxTension  = 0;
   out->breakOverlap = 0;
   PetscReal last = 0;

@@ -3,8 +3,8 @@ static const char help[] = "Van der Waals attraction (P7, Hamaker) between two s
                            "below z0 (the largest attraction, 2 pi w R* with w = A / (12 pi z0^2)), and zero from the range on (within 1e-10).\n"
                            "With -dem_vdw_walls 0 the walls do not attract (zero force) and two spheres as before.\n\n";
 
-#include "vofdem/core/Runtime.hpp"
-#include "vofdem/core/Simulation.hpp"
+#include "vofdem/base/Runtime.hpp"
+#include "vofdem/sim/ModuleAccess.hpp"
 #include "vofdem/io/TextFile.hpp"
 #include "vofdem/examples/Help.hpp"
 
@@ -36,11 +36,11 @@ static PetscErrorCode ForceAtGap(Partner partner, PetscReal gap, PetscReal *forc
   PetscCall(sim.SetFromOptions());
   PetscCall(sim.SetUp());
   PetscCall(sim.Step());
-  PetscCall(sim.Particles()->FindParticle(0, x, v, &found, w, f));
+  PetscCall(Particles(sim)->FindParticle(0, x, v, &found, w, f));
   *force = (pair ? f[2] : -f[2]) + 0.0;  // attraction: towards the partner (up) or the floor (down); + 0.0: no -0
   if (pair) {
     PetscReal x1[3];
-    PetscCall(sim.Particles()->FindParticle(1, x1, v, &found));
+    PetscCall(Particles(sim)->FindParticle(1, x1, v, &found));
     *realised = x1[2] - x[2] - 2 * R;
   } else {
     *realised = x[2] - base - R;

@@ -4,8 +4,8 @@ static const char help[] = "Verification of the linear spring-dashpot (P4): two 
                            "at -steps_per_contact 200 within D1's tolerances, 2 %% and 1 %%. The dashpot acts on the half-step\n"
                            "velocity (velocity Verlet, as in LIGGGHTS), an error of first order in dt that grows with the damping.\n\n";
 
-#include "vofdem/core/Runtime.hpp"
-#include "vofdem/core/Simulation.hpp"
+#include "vofdem/base/Runtime.hpp"
+#include "vofdem/sim/ModuleAccess.hpp"
 #include "vofdem/io/TextFile.hpp"
 #include "vofdem/examples/Help.hpp"
 
@@ -31,7 +31,7 @@ static PetscErrorCode Collide(PetscReal e, PetscReal dt, PetscReal *restitution,
   PetscCall(sim.Create(PETSC_COMM_WORLD));
   PetscCall(sim.SetFromOptions());
   PetscCall(sim.SetUp());
-  vofdem::Dem *dem = sim.Particles();
+  vofdem::Dem *dem = Particles(sim);
   auto gap = [&](PetscReal *g) {
     PetscFunctionBeginUser;
     PetscCall(dem->FindParticle(0, xa, va, &found));

@@ -3,9 +3,9 @@ static const char help[] = "Random non-overlapping fill (-dem_fill_mode random) 
                            "agrees with the truncated law's within 4 standard errors, and prints a fingerprint of every particle's id, position\n"
                            "and radius (bits), which must be the same on any rank count. -timing also times the fill for 1e4 and 1e5 particles.\n\n";
 
-#include "vofdem/core/Random.hpp"
-#include "vofdem/core/Runtime.hpp"
-#include "vofdem/core/Simulation.hpp"
+#include "vofdem/base/Random.hpp"
+#include "vofdem/base/Runtime.hpp"
+#include "vofdem/sim/ModuleAccess.hpp"
 #include "vofdem/dem/RandomFill.hpp"
 #include "vofdem/examples/Help.hpp"
 
@@ -70,7 +70,7 @@ static PetscErrorCode Run() {
   PetscCall(sim.Create(PETSC_COMM_WORLD));
   PetscCall(sim.SetFromOptions());
   PetscCall(sim.SetUp());
-  vofdem::Dem *dem = sim.Particles();
+  vofdem::Dem *dem = Particles(sim);
 
   // Every particle to rank 0: id, x, y, z, r.
   DM          swarm = dem->Swarm();

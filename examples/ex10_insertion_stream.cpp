@@ -7,8 +7,8 @@ static const char help[] = "Insertion streams and a deletion box. Source a feeds
                            "and in mass, and after every step no centre is inside the deletion box (a particle goes the step it\n"
                            "enters, not at the next neighbour-list rebuild).\n\n";
 
-#include "vofdem/core/Runtime.hpp"
-#include "vofdem/core/Simulation.hpp"
+#include "vofdem/base/Runtime.hpp"
+#include "vofdem/sim/ModuleAccess.hpp"
 #include "vofdem/examples/Help.hpp"
 
 #include <cmath>
@@ -56,7 +56,7 @@ static PetscErrorCode Run() {
   PetscCall(sim.Create(PETSC_COMM_WORLD));
   PetscCall(sim.SetFromOptions());
   PetscCall(sim.SetUp());
-  vofdem::Dem     *dem = sim.Particles();
+  vofdem::Dem     *dem = Particles(sim);
   vofdem::DemSummary s0;
   PetscCall(dem->Summarize(&s0));
   const PetscReal rho = dem->Material().density, mass = 4.0 / 3.0 * PETSC_PI * rho;  // times r^3

@@ -5,8 +5,8 @@ static const char help[] = "Particle types with their own materials (config/mate
                            "the masses from the two densities is conserved (1e-12); each type bounces off the floor with its own\n"
                            "restitution (within 2 %). Exits non-zero on failure.\n\n";
 
-#include "vofdem/core/Runtime.hpp"
-#include "vofdem/core/Simulation.hpp"
+#include "vofdem/base/Runtime.hpp"
+#include "vofdem/sim/ModuleAccess.hpp"
 #include "vofdem/io/TextFile.hpp"
 #include "vofdem/examples/Help.hpp"
 
@@ -74,7 +74,7 @@ static PetscErrorCode Binary(const char *pairRestitution, PetscReal v0, PetscRea
   PetscCall(sim.Create(PETSC_COMM_WORLD));
   PetscCall(sim.SetFromOptions());
   PetscCall(sim.SetUp());
-  vofdem::Dem *dem = sim.Particles();
+  vofdem::Dem *dem = Particles(sim);
   auto         gap = [&](PetscReal *g) {
     PetscFunctionBeginUser;
     PetscCall(dem->FindParticle(0, xa, va, &found));
@@ -104,7 +104,7 @@ static PetscErrorCode Floor(int t, PetscReal v0, PetscReal dt, PetscReal *restit
   PetscCall(sim.Create(PETSC_COMM_WORLD));
   PetscCall(sim.SetFromOptions());
   PetscCall(sim.SetUp());
-  vofdem::Dem *dem = sim.Particles();
+  vofdem::Dem *dem = Particles(sim);
   PetscReal    duration;
   auto         gap = [&](PetscReal *g) {
     PetscFunctionBeginUser;

@@ -5,8 +5,8 @@ static const char help[] = "SJKR cohesion (P6, LIGGGHTS' definition) and lubrica
                            "Reduced modulus: a surface energy measured at E is scaled by (E'/E)^(2/5) (P9) once, and only on request.\n"
                            "Exits non-zero on failure.\n\n";
 
-#include "vofdem/core/Runtime.hpp"
-#include "vofdem/core/Simulation.hpp"
+#include "vofdem/base/Runtime.hpp"
+#include "vofdem/sim/ModuleAccess.hpp"
 #include "vofdem/io/TextFile.hpp"
 #include "vofdem/examples/Help.hpp"
 
@@ -42,7 +42,7 @@ static PetscErrorCode Gap(bool pair, const char *options, PetscInt steps, PetscR
   PetscCall(sim.Create(PETSC_COMM_WORLD));
   PetscCall(sim.SetFromOptions());
   PetscCall(sim.SetUp());
-  vofdem::Dem *dem = sim.Particles();
+  vofdem::Dem *dem = Particles(sim);
   auto         gap = [&](PetscReal *g) {
     PetscFunctionBeginUser;
     PetscCall(dem->FindParticle(0, xa, va, &found));
@@ -138,7 +138,7 @@ static PetscErrorCode Run() {
     PetscCall(PetscOptionsInsertString(nullptr, "-dem_youngs_modulus 3.4e9 -dem_cohesion jkr -dem_surface_energy 1 -dem_surface_energy_modulus 3.4e11"));
     PetscCall(sim.Create(PETSC_COMM_WORLD));
     PetscCall(sim.SetFromOptions());
-    PetscCall(Check("surface energy scaled once from 340 GPa to 3.4 GPa", sim.Particles()->TypeMaterial(0).surfaceEnergy, std::pow(0.01, 0.4), 1e-12, &failures));
+    PetscCall(Check("surface energy scaled once from 340 GPa to 3.4 GPa", Particles(sim)->TypeMaterial(0).surfaceEnergy, std::pow(0.01, 0.4), 1e-12, &failures));
     PetscCall(sim.Destroy());
   }
   if (failures) PetscCall(PetscPrintf(PETSC_COMM_WORLD, "FAILED: %d checks out of tolerance\n", (int)failures));

@@ -8,8 +8,8 @@ static const char help[] = "Periodic boundaries (-grid_periodic): a box periodic
                            "periodic face x = 0 = L (the moving sphere wraps before they meet); the seam pair's restitution must equal\n"
                            "the interior pair's to 1e-9, and both the input e within D1's 2 %%.\n\n";
 
-#include "vofdem/core/Runtime.hpp"
-#include "vofdem/core/Simulation.hpp"
+#include "vofdem/base/Runtime.hpp"
+#include "vofdem/sim/ModuleAccess.hpp"
 #include "vofdem/io/TextFile.hpp"
 #include "vofdem/examples/Help.hpp"
 
@@ -104,7 +104,7 @@ static PetscErrorCode Bed(PetscInt *failures) {
   PetscCall(sim.Create(PETSC_COMM_WORLD));
   PetscCall(sim.SetFromOptions());
   PetscCall(sim.SetUp());
-  Dem *dem = sim.Particles();
+  Dem *dem = Particles(sim);
   PetscCall(Measure(dem, sim.GetGrid(), &st0));
   for (;;) {
     PetscCall(Measure(dem, sim.GetGrid(), &st));
@@ -152,7 +152,7 @@ static PetscErrorCode Seam(PetscInt *failures) {
   PetscCall(sim.SetUp());
   for (PetscInt k = 0; k < steps; ++k) PetscCall(sim.Step());
   for (int id = 0; id < 4; ++id) {
-    PetscCall(sim.Particles()->FindParticle(id, x, v[id], &found));
+    PetscCall(Particles(sim)->FindParticle(id, x, v[id], &found));
     PetscCheck(found, PETSC_COMM_WORLD, PETSC_ERR_PLIB, "particle %d is lost", id);
   }
   const PetscReal eInterior = (v[1][0] - v[0][0]) / v0, eSeam = (v[3][0] - v[2][0]) / v0;

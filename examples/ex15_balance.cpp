@@ -7,8 +7,8 @@ static const char help[] = "Load balancing (-dem_balance histogram): spheres thr
                            "best cut is not exact), and prints whether the rank holding the floor has at most the mean number of particles\n"
                            "(with contacts weighing in, the settled bed's rank takes fewer than the loose spheres' ranks).\n\n";
 
-#include "vofdem/core/Runtime.hpp"
-#include "vofdem/core/Simulation.hpp"
+#include "vofdem/base/Runtime.hpp"
+#include "vofdem/sim/ModuleAccess.hpp"
 #include "vofdem/examples/Help.hpp"
 
 #include <petscdmswarm.h>
@@ -35,7 +35,7 @@ static PetscErrorCode Run() {
   PetscCall(sim.Create(PETSC_COMM_WORLD));
   PetscCall(sim.SetFromOptions());
   PetscCall(sim.SetUp());
-  vofdem::Dem *dem = sim.Particles();
+  vofdem::Dem *dem = Particles(sim);
   for (;;) {
     if (sim.StepNumber() % printEvery == 0) {
       PetscReal *x, local = 0, z;

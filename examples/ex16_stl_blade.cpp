@@ -9,8 +9,8 @@ static const char help[] = "A moving STL blade pushes a bed of a few hundred sph
                            "(0.287 Rayleigh times, Dem::UpdateContactStepLimit), the step then follows the chaotic push, and the blade's travel\n"
                            "in 3000 steps differs between rank counts (2.980 and 2.971 mm on 1 and 4 ranks).\n\n";
 
-#include "vofdem/core/Runtime.hpp"
-#include "vofdem/core/Simulation.hpp"
+#include "vofdem/base/Runtime.hpp"
+#include "vofdem/sim/ModuleAccess.hpp"
 #include "vofdem/dem/StlMesh.hpp"
 #include "vofdem/io/TextFile.hpp"
 #include "vofdem/examples/Help.hpp"
@@ -79,7 +79,7 @@ static PetscErrorCode Run() {
   PetscCall(sim.Create(PETSC_COMM_WORLD));
   PetscCall(sim.SetFromOptions());
   PetscCall(sim.SetUp());
-  vofdem::Dem *dem = sim.Particles();
+  vofdem::Dem *dem = Particles(sim);
   PetscCall(dem->Summarize(&s));
   PetscCheck(s.walls.size() == 1, PETSC_COMM_WORLD, PETSC_ERR_USER_INPUT, "this example needs -dem_walls blade");
   const PetscInt  count0 = s.particles;

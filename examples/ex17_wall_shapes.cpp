@@ -3,8 +3,8 @@ static const char help[] = "Verification D1 on the walls of -dem_walls: a sphere
                            "e = 0.6 within 2 % (D1) and equal the box floor's (the same impact on a box face) within 1e-6: walls are spheres of\n"
                            "infinite radius and mass (P3) whatever their shape, and a mesh vertex is one contact. Exits non-zero on failure.\n\n";
 
-#include "vofdem/core/Runtime.hpp"
-#include "vofdem/core/Simulation.hpp"
+#include "vofdem/base/Runtime.hpp"
+#include "vofdem/sim/ModuleAccess.hpp"
 #include "vofdem/dem/StlMesh.hpp"
 #include "vofdem/io/TextFile.hpp"
 #include "vofdem/examples/Help.hpp"
@@ -42,7 +42,7 @@ static PetscErrorCode Impact(const std::vector<std::pair<std::string, std::strin
   PetscCall(sim.Create(PETSC_COMM_WORLD));
   PetscCall(sim.SetFromOptions());
   PetscCall(sim.SetUp());
-  vofdem::Dem *dem = sim.Particles();
+  vofdem::Dem *dem = Particles(sim);
   PetscReal    gOld = gap(x0);
   bool         started = false, ended = false;
   for (int k = 0; k < 100000 && !ended; ++k) {

@@ -7,8 +7,8 @@ static const char help[] = "Dem::Save / Dem::Load: a run that saves at step N, i
 // The scene: spheres with random velocities under gravity in a small box, so that the first N
 // steps contain contacts, wall contacts, list rebuilds and particles crossing between ranks.
 
-#include "vofdem/core/Runtime.hpp"
-#include "vofdem/core/Simulation.hpp"
+#include "vofdem/base/Runtime.hpp"
+#include "vofdem/sim/ModuleAccess.hpp"
 #include "vofdem/examples/Help.hpp"
 
 #include <petscviewerhdf5.h>
@@ -84,7 +84,7 @@ static PetscErrorCode Run(MPI_Comm comm, PetscInt steps, const std::string &load
   PetscCall(sim.Create(comm));
   PetscCall(sim.SetFromOptions());
   PetscCall(sim.SetUp());
-  vofdem::Dem *dem = sim.Particles();
+  vofdem::Dem *dem = Particles(sim);
   if (!loadFrom.empty()) {
     PetscCall(PetscViewerHDF5Open(comm, loadFrom.c_str(), FILE_MODE_READ, &viewer));
     PetscCall(dem->Load(viewer));

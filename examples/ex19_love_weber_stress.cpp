@@ -11,8 +11,8 @@ static const char help[] = "Love-Weber stress of a region (-dem_stress_lower/-de
 // point cancel, so sum over particles and contacts of F_c (x) (x_c - x_p) leaves only the wall
 // contacts and the particle terms; Love-Weber with compression positive is minus that over V.
 
-#include "vofdem/core/Runtime.hpp"
-#include "vofdem/core/Simulation.hpp"
+#include "vofdem/base/Runtime.hpp"
+#include "vofdem/sim/ModuleAccess.hpp"
 #include "vofdem/io/TextFile.hpp"
 #include "vofdem/examples/Help.hpp"
 
@@ -87,7 +87,7 @@ static PetscErrorCode Lattice() {
     PetscCall(sim.Create(PETSC_COMM_WORLD));
     PetscCall(sim.SetFromOptions());
     PetscCall(sim.SetUp());
-    PetscCall(sim.Particles()->Stress(sigma));
+    PetscCall(Particles(sim)->Stress(sigma));
     PetscCall(PetscPrintf(PETSC_COMM_WORLD, " region %s:\n", r.name));
     PetscCall(Report("sigma_xx", sigma[0], r.xx, r.xx));
     PetscCall(Report("sigma_yy", sigma[1], r.yy, r.xx));
@@ -125,7 +125,7 @@ static PetscErrorCode FallingBed(PetscInt steps) {
   PetscCall(sim.SetFromOptions());
   PetscCall(sim.SetUp());
   for (PetscInt k = 0; k < steps; ++k) PetscCall(sim.Step());
-  vofdem::Dem *dem = sim.Particles();
+  vofdem::Dem *dem = Particles(sim);
   PetscCall(dem->Stress(sigma));
   PetscCall(dem->Summarize(&s));
   DM swarm = dem->Swarm();

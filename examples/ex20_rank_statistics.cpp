@@ -7,9 +7,9 @@ static const char help[] = "Bulk statistics of a bed of spheres dropped into a c
                            "spread of a 1-rank ensemble of seeds (test/statistics/d6_rank_statistics.py). Over a short horizon the\n"
                            "printed values agree across rank counts to ~1e-10 (this file's TEST block).\n\n";
 
-#include "vofdem/core/Options.hpp"
-#include "vofdem/core/Runtime.hpp"
-#include "vofdem/core/Simulation.hpp"
+#include "vofdem/base/Options.hpp"
+#include "vofdem/base/Runtime.hpp"
+#include "vofdem/sim/ModuleAccess.hpp"
 #include "vofdem/examples/Help.hpp"
 
 #include <petscdmswarm.h>
@@ -86,7 +86,7 @@ PetscErrorCode Run() {
   PetscCall(sim.Create(PETSC_COMM_WORLD));
   PetscCall(sim.SetFromOptions());
   PetscCall(sim.SetUp());
-  vofdem::Dem *dem = sim.Particles();
+  vofdem::Dem *dem = Particles(sim);
   {
     PetscReal g[3] = {0, 0, -9.81};
     PetscInt  three = 3;

@@ -3,8 +3,8 @@ static const char help[] = "The particle layout of rigid clumps (P10; their rigi
                            "push each other apart; the clump's spheres live on one rank even when they straddle a rank boundary, and stay\n"
                            "together through migrations (the clump is located by its lowest-id sphere). Exits non-zero on failure.\n\n";
 
-#include "vofdem/core/Runtime.hpp"
-#include "vofdem/core/Simulation.hpp"
+#include "vofdem/base/Runtime.hpp"
+#include "vofdem/sim/ModuleAccess.hpp"
 #include "vofdem/io/TextFile.hpp"
 #include "vofdem/examples/Help.hpp"
 
@@ -53,7 +53,7 @@ static PetscErrorCode Run() {
   PetscCall(sim.Create(PETSC_COMM_WORLD));
   PetscCall(sim.SetFromOptions());
   PetscCall(sim.SetUp());
-  vofdem::Dem *dem = sim.Particles();
+  vofdem::Dem *dem = Particles(sim);
   PetscMPIInt  owner[3];
   PetscInt     holders[3];
   PetscReal    x0[3], x1[3], v[3], f[3], w[3], xs[3];

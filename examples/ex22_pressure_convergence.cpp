@@ -9,7 +9,7 @@ static const char help[] = "Verification of the pressure Poisson solve -div(beta
 // direction for the periodic case (wave number 2 pi). beta = 1 + 0.5 cos(2 pi x) cos(2 pi y) cos(2 pi z)
 // (smooth, periodic, between 0.5 and 1.5) or 1. f = -(grad beta . grad p + beta lap p) at cell centres.
 
-#include "vofdem/core/Runtime.hpp"
+#include "vofdem/base/Runtime.hpp"
 #include "vofdem/flow/PressureSolver.hpp"
 #include "vofdem/grid/Grid.hpp"
 #include "vofdem/examples/Help.hpp"

@@ -7,7 +7,7 @@ static const char help[] = "Verification F4 (VERIFICATION.md): iteration counts 
                            "the end), and the\n"
                            "difference between this run's solution and the same solve on one rank (rank 0 alone). Exits non-zero on failure.\n\n";
 
-#include "vofdem/core/Runtime.hpp"
+#include "vofdem/base/Runtime.hpp"
 #include "vofdem/flow/PressureSolver.hpp"
 #include "vofdem/grid/Grid.hpp"
 #include "vofdem/examples/Help.hpp"

@@ -5,7 +5,7 @@ static const char help[] = "Verification F1 (VERIFICATION.md): the 2-D Taylor-Gr
                            "order must be >= 1.8 between the two finest grids. Flow options (-flow_advection, -flow_viscous, ...) apply.\n"
                            "Also prints the wall time per grid (for scripts/work-precision; the test output does not compare it).\n\n";
 
-#include "vofdem/core/Runtime.hpp"
+#include "vofdem/base/Runtime.hpp"
 #include "vofdem/flow/Flow.hpp"
 #include "vofdem/grid/Grid.hpp"
 #include "vofdem/examples/Help.hpp"

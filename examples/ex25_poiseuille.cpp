@@ -14,7 +14,7 @@ static const char help[] = "Verification F3 (VERIFICATION.md): plane Poiseuille 
                            "-solid (part a only): the box extends H/4 beyond each wall and the walls are solid cells (-flow_solid_boxes) instead of\n"
                            "the box's: the wall then sits at the face of the first solid cell and the errors must equal those of the box walls.\n\n";
 
-#include "vofdem/core/Runtime.hpp"
+#include "vofdem/base/Runtime.hpp"
 #include "vofdem/flow/Flow.hpp"
 #include "vofdem/grid/Grid.hpp"
 #include "vofdem/examples/Help.hpp"

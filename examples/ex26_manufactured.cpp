@@ -8,7 +8,7 @@ static const char help[] = "Verification F5 (VERIFICATION.md): a manufactured so
                            "removed, against p(t - dt/2): the incremental scheme's pressure lives at half steps) and the observed orders; the\n"
                            "velocity RMS order must be >= 1.8 between the two finest grids. Flow options (-flow_advection, ...) apply.\n\n";
 
-#include "vofdem/core/Runtime.hpp"
+#include "vofdem/base/Runtime.hpp"
 #include "vofdem/flow/Flow.hpp"
 #include "vofdem/grid/Grid.hpp"
 #include "vofdem/examples/Help.hpp"

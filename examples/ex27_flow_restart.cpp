@@ -7,7 +7,7 @@ static const char help[] = "Flow::Save / Flow::Load: a lid-driven cavity (16 x 1
                            "would rebuild it at step N and differ. Options: -half_steps N (default 12), -dt (s, default 0.005). Flow options\n"
                            "(-flow_advection, -flow_viscous, -flow_pressure_pc, ...) apply. Exits non-zero on failure.\n\n";
 
-#include "vofdem/core/Runtime.hpp"
+#include "vofdem/base/Runtime.hpp"
 #include "vofdem/flow/Flow.hpp"
 #include "vofdem/grid/Grid.hpp"
 #include "vofdem/examples/Help.hpp"

@@ -6,7 +6,7 @@ static const char help[] = "Verification V1 (VERIFICATION.md): the single vortex
                            "seen after any sweep. Must reach: volume error <= 1e-12, bound violation <= 1e-12, shape error at or below Basilisk\n"
                            "where a value is known (T = 8 only). Time step dt = -vof_cfl h / max|u(t)| over the step (-adaptive 0: constant, with max|u| = 1).\n-show_time adds the wall time;\n-peer_check 0 prints the comparison with the peers without making a miss fail the run (scripts/work-precision).\n\n";
 
-#include "vofdem/core/Runtime.hpp"
+#include "vofdem/base/Runtime.hpp"
 #include "vofdem/grid/Grid.hpp"
 #include "vofdem/vof/StreamFunction.hpp"
 #include "vofdem/vof/Vof.hpp"

@@ -5,7 +5,7 @@ static const char help[] = "Verification V2 (VERIFICATION.md): Zalesak's slotted
                            "VERIFICATION.md), the relative volume error and the largest bound violation. Must reach: below OpenFOAM on the grids\n"
                            "it was measured on, the finer grid never worse, volume error and bound violation <= 1e-12. -show_time adds wall times.\n\n";
 
-#include "vofdem/core/Runtime.hpp"
+#include "vofdem/base/Runtime.hpp"
 #include "vofdem/grid/Grid.hpp"
 #include "vofdem/vof/StreamFunction.hpp"
 #include "vofdem/vof/Vof.hpp"

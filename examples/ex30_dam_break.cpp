@@ -7,8 +7,8 @@ static const char help[] = "Verification V5 (VERIFICATION.md): the dam break of 
                            "file has 16). -front_check 0: a front error above 5 percent is printed (FAIL) but does not fail the run (the quick tier's\n"
                            "regression test; the front is then compared with the reference output).\n\n";
 
-#include "vofdem/core/Runtime.hpp"
-#include "vofdem/core/Simulation.hpp"
+#include "vofdem/base/Runtime.hpp"
+#include "vofdem/sim/ModuleAccess.hpp"
 #include "vofdem/examples/Help.hpp"
 
 #include <cmath>
@@ -103,24 +103,24 @@ PetscErrorCode Run() {
   PetscCall(sim.Create(PETSC_COMM_WORLD));
   PetscCall(sim.SetFromOptions());
   PetscCall(sim.SetUp());
-  if (!sim.Interface()) VofdemInputError(PETSC_COMM_WORLD, "ex30: give a dam-break scene with -physics flow,vof (-options_file_yaml config/scenes/dam-break.yaml)");
+  if (!Interface(sim)) VofdemInputError(PETSC_COMM_WORLD, "ex30: give a dam-break scene with -physics flow,vof (-options_file_yaml config/scenes/dam-break.yaml)");
   const vofdem::Grid &grid = sim.GetGrid();
   const PetscReal     g = 9.81, scale = std::sqrt(2 * g / a);
   vofdem::VofSummary  s0, s1;
-  PetscCall(sim.Interface()->Summarize(&s0));
+  PetscCall(Interface(sim)->Summarize(&s0));
   std::vector<PetscReal> T, Z;
   PetscReal              x;
-  PetscCall(FrontPosition(*sim.Interface(), grid, &x));
+  PetscCall(FrontPosition(*Interface(sim), grid, &x));
   T.push_back(0);
   Z.push_back(x / a);
   while (sim.Time() < finalTime * (1 - 1e-12)) {
     PetscCall(sim.ChooseTimeStep());
     PetscCall(sim.Step());
-    PetscCall(FrontPosition(*sim.Interface(), grid, &x));
+    PetscCall(FrontPosition(*Interface(sim), grid, &x));
     T.push_back(sim.Time() * scale);
     Z.push_back(x / a);
   }
-  PetscCall(sim.Interface()->Summarize(&s1));
+  PetscCall(Interface(sim)->Summarize(&s1));
   PetscCall(PetscPrintf(PETSC_COMM_WORLD, "V5 dam break, %d x %d x %d cells (a/h = %.0f), %d steps to T = %.3f\n", (int)grid.Cells()[0], (int)grid.Cells()[1], (int)grid.Cells()[2],
                         (double)(a / grid.Spacing()[0]), (int)sim.StepNumber(), (double)T.back()));
   PetscReal worst = 0;

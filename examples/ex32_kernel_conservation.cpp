@@ -7,7 +7,7 @@ static const char help[] = "Verification C3 (VERIFICATION.md) for the kernel pro
                            "with a periodic direction. The kernel average of a constant field must be that constant (1e-14), and the sum of\n"
                            "the averages of a non-uniform field is printed (the same on any rank count). Exits non-zero on failure.\n\n";
 
-#include "vofdem/core/Runtime.hpp"
+#include "vofdem/base/Runtime.hpp"
 #include "vofdem/coupling/KernelAverager.hpp"
 #include "vofdem/grid/StaggeredGrid.hpp"
 #include "vofdem/grid/Grid.hpp"

@@ -10,8 +10,8 @@ static const char help[] = "Verification C1 (VERIFICATION.md): a single sphere s
                            "-timing: also one line per run with its error and wall time; -runs corrected|uncorrected: only that run, nothing\n"
                            "checked (scripts/work-precision C1).\n\n";
 
-#include "vofdem/core/Runtime.hpp"
-#include "vofdem/core/Simulation.hpp"
+#include "vofdem/base/Runtime.hpp"
+#include "vofdem/sim/ModuleAccess.hpp"
 #include "vofdem/examples/Help.hpp"
 
 #include <cmath>
@@ -88,11 +88,11 @@ PetscErrorCode Settle(PetscReal ratio, bool correct, PetscReal dt, PetscReal tEn
   while (sim.Time() < tEnd * (1 - 1e-12)) {
     PetscCall(sim.Step());
     if (before == 0 && sim.Time() >= tEnd - 0.05 - 1e-12) {
-      PetscCall(sim.Particles()->FindParticle(0, x, v, &found));
+      PetscCall(Particles(sim)->FindParticle(0, x, v, &found));
       before = v[2];
     }
   }
-  PetscCall(sim.Particles()->FindParticle(0, x, v, &found));
+  PetscCall(Particles(sim)->FindParticle(0, x, v, &found));
   PetscCheck(found, PETSC_COMM_WORLD, PETSC_ERR_PLIB, "the sphere was lost");
   out->velocity = -v[2];
   out->change   = std::fabs(v[2] - before) / std::fabs(v[2]);

@@ -24,8 +24,8 @@ static const char help[] = "Verification C2 (VERIFICATION.md): a packed bed with
                            "-grate: height of the grate\n"
                            "the bed rests on (m, default 0.005; 0: on the inflow face, as in CFDEM's set-up).\n\n";
 
-#include "vofdem/core/Runtime.hpp"
-#include "vofdem/core/Simulation.hpp"
+#include "vofdem/base/Runtime.hpp"
+#include "vofdem/sim/ModuleAccess.hpp"
 #include "vofdem/examples/Help.hpp"
 
 #include <algorithm>
@@ -228,7 +228,7 @@ PetscErrorCode Pour(const std::string &bed, PetscInt particles, PetscReal settle
   PetscCall(sim.SetUp());
   PetscCall(sim.Run());
   vofdem::DemSummary s;
-  PetscCall(sim.Particles()->Summarize(&s));
+  PetscCall(Particles(sim)->Summarize(&s));
   PetscCall(PetscPrintf(PETSC_COMM_WORLD, "bed poured: %d spheres, kinetic energy at the end %.3e J\n", (int)s.particles, (double)s.kinetic));
   PetscCall(sim.Destroy());
   for (const char *o : {"-dem_fill_mode", "-dem_fill_count", "-dem_fill_lower", "-dem_fill_upper", "-final_time", "-dem_save_particles", "-allow_unused_options"}) PetscCall(PetscOptionsClearValue(nullptr, o));
@@ -322,12 +322,12 @@ PetscErrorCode Run() {
       if (!userDt) PetscCall(sim.ChooseTimeStep());  // as Run() does
       PetscCall(sim.Step());
       if (k >= first || (every > 0 && k % every == 0)) {
-        PetscCall(Rows(*sim.Fluid(), &p, &e));
+        PetscCall(Rows(*Fluid(sim), &p, &e));
         // From the floor: the lowest row's centre is half a cell above it; the inflow face's half control volume
         // carries the share of the bed's force deposited there, with the gradient dp/dz the particles read at the
         // floor (Coupling::WallPressureGradient), so p(floor) = p[0] - (h/2) dp/dz.
         PetscReal dpdz0;
-        PetscCall(sim.Coupled()->WallPressureGradient(2, 0, &dpdz0));
+        PetscCall(Coupled(sim)->WallPressureGradient(2, 0, &dpdz0));
         dp = p[0] - 0.5 * h * dpdz0 - p[top] - kRhoF * kG * ((top + 0.5) * h);
         if (k >= first) sum += dp, sum2 += dp * dp;
         if (every > 0 && k % every == 0) PetscCall(PetscPrintf(PETSC_COMM_WORLD, "  step %4d  t %.4e s  drop %.4f Pa\n", (int)k, (double)sim.Time(), (double)dp));
@@ -344,7 +344,7 @@ PetscErrorCode Run() {
                           fixed ? "Ergun" : "weight", (double)(100 * err), balance || fluxOnly || steady ? "(not checked)" : ok ? "ok" : "FAIL", (int)nw, (double)spread));
     // (a) momentum balance: fluid force on the particles less their buoyancy, per area, is the drop (model A)
     PetscReal sums[5];
-    PetscCall(ParticleSums(*sim.Particles(), b, sums));
+    PetscCall(ParticleSums(*Particles(sim), b, sums));
     const PetscReal perArea = (sums[0] - kRhoF * kG * b.n * kVp) / (kA * kA);
     // (b) the mean drag in the bed's middle third against Ergun's per particle at the bed's eps and slip U/eps
     // at the middle third's own exact eps (a bed is not uniform: its middle may be looser or denser than its interior)
@@ -385,7 +385,7 @@ PetscErrorCode Run() {
     // (e) the inflow is superficial: eps w at the floor is U whatever eps the bed gives the lowest cells, and the
     // same volume leaves at the top (to the pressure solver's tolerance); checked in every mode
     PetscReal flux[2];
-    PetscCall(Fluxes(*sim.Fluid(), flux));
+    PetscCall(Fluxes(*Fluid(sim), flux));
     const bool okFlux = std::fabs(flux[0] / U - 1) <= 1e-6 && std::fabs(flux[1] / U - 1) <= 1e-6;
     failures += !okFlux;
     PetscCall(PetscPrintf(PETSC_COMM_WORLD, "  (e) superficial velocity: floor (eps w) %s U, top %s U (lowest row's eps %.3f): %s\n", std::fabs(flux[0] / U - 1) <= 1e-10 ? "=" : "!=",

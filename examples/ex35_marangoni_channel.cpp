@@ -8,8 +8,8 @@ static const char help[] = "Marangoni force (PHYSICS.md F2) with a prescribed te
                            "relative to |U|. Must reach: below 2 percent on every grid (the exact solution is linear: the discrete one matches\n"
                            "it to round-off, which the output states as below 1e-6).\n\n";
 
-#include "vofdem/core/Runtime.hpp"
-#include "vofdem/core/Simulation.hpp"
+#include "vofdem/base/Runtime.hpp"
+#include "vofdem/sim/ModuleAccess.hpp"
 #include "vofdem/examples/Help.hpp"
 
 #include <cmath>
@@ -65,19 +65,19 @@ PetscErrorCode RunGrid(PetscInt N, PetscReal finalTime, PetscReal *err) {
   PetscCall(sim.SetUp());
   while (sim.Time() < finalTime * (1 - 1e-12)) PetscCall(sim.Step());
   // u at the x-faces (cell centres in y) against the two Couette layers.
-  const vofdem::StaggeredGrid &sg = sim.Fluid()->Staggered();
+  const vofdem::StaggeredGrid &sg = Fluid(sim)->Staggered();
   vofdem::LocalField           u;
   PetscInt                     s[3], n[3];
   PetscReal                    worst = 0, all;
   sg.Owned(0, s, n);
-  PetscCall(sg.GetGlobal(0, sim.Fluid()->Velocity(0), &u));
+  PetscCall(sg.GetGlobal(0, Fluid(sim)->Velocity(0), &u));
   for (PetscInt k = s[2]; k < s[2] + n[2]; ++k)
     for (PetscInt j = s[1]; j < s[1] + n[1]; ++j)
       for (PetscInt i = s[0]; i < s[0] + n[0]; ++i) {
         const PetscReal y = (j + 0.5) * h, exact = y < a ? U * y / a : U * (H - y) / (H - a);
         worst             = std::fmax(worst, std::fabs(PetscRealPart(u.at(i, j, k)) - exact));
       }
-  PetscCall(sg.RestoreGlobal(0, sim.Fluid()->Velocity(0), &u));
+  PetscCall(sg.RestoreGlobal(0, Fluid(sim)->Velocity(0), &u));
   PetscCallMPI(MPI_Allreduce(&worst, &all, 1, MPIU_REAL, MPI_MAX, PETSC_COMM_WORLD));
   *err = all / std::fabs(U);
   PetscCall(PetscPrintf(PETSC_COMM_WORLD, "grid %d cells across: U = %.6e m/s, largest error of u %s 1e-6 of |U|\n", (int)N, (double)U, *err < 1e-6 ? "below" : "ABOVE"));

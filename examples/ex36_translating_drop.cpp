@@ -14,8 +14,8 @@ static const char help[] = "Mass-consistent momentum at large density ratios (PH
                            "Both: volume change below 1e-12, no blow-up. -vof_momentum advective (the flow's non-conservative transport) prints the\n"
                            "same numbers for comparison; -expect_fail 1 turns the verdict around (the run must miss a tolerance).\n\n";
 
-#include "vofdem/core/Runtime.hpp"
-#include "vofdem/core/Simulation.hpp"
+#include "vofdem/base/Runtime.hpp"
+#include "vofdem/sim/ModuleAccess.hpp"
 #include "vofdem/examples/Help.hpp"
 
 #include <cmath>
@@ -59,7 +59,7 @@ PetscErrorCode VelocityError(vofdem::Flow &flow, const PetscReal U[3], PetscReal
 // Face momentum sum rho_f u_f dV per component (rho_f the mean of the two cells' densities, the
 // flow's face density; collective) and the speed of the heavy phase, sum alpha u / sum alpha at cells.
 PetscErrorCode Momentum(vofdem::Simulation &sim, PetscReal P[3], PetscReal dropU[3]) {
-  vofdem::Flow               &flow = *sim.Fluid();
+  vofdem::Flow               &flow = *Fluid(sim);
   const vofdem::StaggeredGrid &sg   = flow.Staggered();
   Vec                          rhoL, aL;
   vofdem::LocalField           rho, a;
@@ -70,7 +70,7 @@ PetscErrorCode Momentum(vofdem::Simulation &sim, PetscReal P[3], PetscReal dropU
   PetscCall(DMGetLocalVector(sg.Cells(), &rhoL));
   PetscCall(DMGlobalToLocal(sg.Cells(), flow.Density(), INSERT_VALUES, rhoL));
   PetscCall(DMGetLocalVector(sg.Cells(), &aL));
-  PetscCall(DMGlobalToLocal(sg.Cells(), sim.Interface()->Fraction(), INSERT_VALUES, aL));
+  PetscCall(DMGlobalToLocal(sg.Cells(), Interface(sim)->Fraction(), INSERT_VALUES, aL));
   PetscCall(sg.GetLocal(3, rhoL, &rho));
   PetscCall(sg.GetLocal(3, aL, &a));
   for (int d = 0; d < 3; ++d) {
@@ -105,7 +105,7 @@ PetscErrorCode Momentum(vofdem::Simulation &sim, PetscReal P[3], PetscReal dropU
 
 // -still_gas: u = U on the faces inside the drop, 0 outside, then projected (div u = 0).
 PetscErrorCode StillGas(vofdem::Simulation &sim, const PetscReal U[3], PetscReal R) {
-  vofdem::Flow               &flow = *sim.Fluid();
+  vofdem::Flow               &flow = *Fluid(sim);
   const vofdem::StaggeredGrid &sg   = flow.Staggered();
 
   PetscFunctionBeginUser;
@@ -176,8 +176,8 @@ PetscErrorCode Run() {
   PetscCall(sim.Create(PETSC_COMM_WORLD));
   PetscCall(sim.SetFromOptions());
   PetscCall(sim.SetUp());
-  vofdem::Vof  *vof  = sim.Interface();
-  vofdem::Flow *flow = sim.Fluid();
+  vofdem::Vof  *vof  = Interface(sim);
+  vofdem::Flow *flow = Fluid(sim);
   if (stillGas) PetscCall(StillGas(sim, U, R));
   PetscReal P0[3], P1[3], drop0[3], drop1[3];
   PetscCall(Momentum(sim, P0, drop0));

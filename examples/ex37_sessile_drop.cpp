@@ -19,8 +19,8 @@ static const char help[] = "Sessile drop reaching its set contact angle (issue 8
                            "needs 16 cells per R0 (error 1.34 % at 10, 0.49 % at 16, 0.30 % at 20: second order). -show_drop (one rank):\n"
                            "alpha at the end as characters (2-D: the first y layer).\n\n";
 
-#include "vofdem/core/Runtime.hpp"
-#include "vofdem/core/Simulation.hpp"
+#include "vofdem/base/Runtime.hpp"
+#include "vofdem/sim/ModuleAccess.hpp"
 #include "vofdem/examples/Help.hpp"
 
 #include <cmath>
@@ -69,8 +69,8 @@ PetscErrorCode Profiles(vofdem::Simulation &sim, int dim, Profile *p) {
   p->nx = N[0], p->ny = dim == 2 ? 1 : N[1], p->nz = N[2];
   const size_t        cols = (size_t)(p->nx * p->ny);
   std::vector<double> loc(2 * cols + (size_t)N[2], 0.0), glob(loc.size());
-  PetscCall(DMDAGetCorners(sim.Interface()->FractionDM(), &s[0], &s[1], &s[2], &n[0], &n[1], &n[2]));
-  PetscCall(DMDAVecGetArray(sim.Interface()->FractionDM(), sim.Interface()->Fraction(), &a));
+  PetscCall(DMDAGetCorners(Interface(sim)->FractionDM(), &s[0], &s[1], &s[2], &n[0], &n[1], &n[2]));
+  PetscCall(DMDAVecGetArray(Interface(sim)->FractionDM(), Interface(sim)->Fraction(), &a));
   for (PetscInt k = s[2]; k < s[2] + n[2]; ++k)
     for (PetscInt j = s[1]; j < s[1] + n[1]; ++j)
       for (PetscInt i = s[0]; i < s[0] + n[0]; ++i) {
@@ -80,7 +80,7 @@ PetscErrorCode Profiles(vofdem::Simulation &sim, int dim, Profile *p) {
         loc[cols + (size_t)k] += dim == 2 ? v * h[0] : v * h[0] * h[1];
         if (k == 0) loc[cols + (size_t)N[2] + c] += v;
       }
-  PetscCall(DMDAVecRestoreArray(sim.Interface()->FractionDM(), sim.Interface()->Fraction(), &a));
+  PetscCall(DMDAVecRestoreArray(Interface(sim)->FractionDM(), Interface(sim)->Fraction(), &a));
   PetscCallMPI(MPI_Allreduce(loc.data(), glob.data(), (int)loc.size(), MPI_DOUBLE, MPI_SUM, PETSC_COMM_WORLD));
   p->Z.assign(glob.begin(), glob.begin() + cols);
   p->layer.assign(glob.begin() + cols, glob.begin() + cols + N[2]);
@@ -143,7 +143,7 @@ PetscErrorCode ShowDrop(vofdem::Simulation &sim) {
   PetscCallMPI(MPI_Comm_size(PETSC_COMM_WORLD, &size));
   if (size > 1) VofdemInputError(PETSC_COMM_WORLD, "option -show_drop: run on one rank");
   const PetscInt *N = sim.GetGrid().Cells();
-  PetscCall(DMDAVecGetArray(sim.Interface()->FractionDM(), sim.Interface()->Fraction(), &a));
+  PetscCall(DMDAVecGetArray(Interface(sim)->FractionDM(), Interface(sim)->Fraction(), &a));
   for (PetscInt k = N[2] - 1; k >= 0; --k) {
     std::string row;
     for (PetscInt i = 0; i < N[0]; ++i) {
@@ -152,7 +152,7 @@ PetscErrorCode ShowDrop(vofdem::Simulation &sim) {
     }
     PetscCall(PetscPrintf(PETSC_COMM_WORLD, "%s\n", row.c_str()));
   }
-  PetscCall(DMDAVecRestoreArray(sim.Interface()->FractionDM(), sim.Interface()->Fraction(), &a));
+  PetscCall(DMDAVecRestoreArray(Interface(sim)->FractionDM(), Interface(sim)->Fraction(), &a));
   PetscFunctionReturn(0);
 }
 
@@ -215,14 +215,14 @@ PetscErrorCode Run() {
   PetscCall(sim.Create(PETSC_COMM_WORLD));
   PetscCall(sim.SetFromOptions());
   PetscCall(sim.SetUp());
-  if (!sim.Interface()) VofdemInputError(PETSC_COMM_WORLD, "ex37: needs -physics flow,vof");
+  if (!Interface(sim)) VofdemInputError(PETSC_COMM_WORLD, "ex37: needs -physics flow,vof");
   const PetscInt samples2[3] = {32, 1, 32}, samples3[3] = {16, 16, 16};
-  PetscCall(sim.Interface()->SetFraction(dim == 2 ? HalfDisc : QuarterSphere, nullptr, dim == 2 ? samples2 : samples3));
-  PetscCall(sim.Interface()->UpdateProperties(*sim.Fluid()));
+  PetscCall(Interface(sim)->SetFraction(dim == 2 ? HalfDisc : QuarterSphere, nullptr, dim == 2 ? samples2 : samples3));
+  PetscCall(Interface(sim)->UpdateProperties(*Fluid(sim)));
   const PetscReal *hs = sim.GetGrid().Spacing();
-  const double     theta = sim.Interface()->ContactAngle(4), th = theta * kPi / 180;
+  const double     theta = Interface(sim)->ContactAngle(4), th = theta * kPi / 180;
   vofdem::VofSummary s0, s1;
-  PetscCall(sim.Interface()->Summarize(&s0));
+  PetscCall(Interface(sim)->Summarize(&s0));
   const PetscInt *cells = sim.GetGrid().Cells();
   double          Rexact;
   if (dim == 2) {
@@ -250,7 +250,7 @@ PetscErrorCode Run() {
     if (sim.Time() >= report * finalTime / 6 * (1 - 1e-12) || sim.Time() >= finalTime * (1 - 1e-12)) {
       PetscCall(Profiles(sim, (int)dim, &P));
       const CapFit f = FitCap(P, (int)dim, hs);
-      PetscCall(sim.Fluid()->Summarize(&fs));
+      PetscCall(Fluid(sim)->Summarize(&fs));
       const double base = dim == 2 ? P.layer[0] : std::sqrt(4 * P.layer[0] / kPi);
       PetscCall(PetscPrintf(PETSC_COMM_WORLD, "  t %6.2f  step %6d  Ca %.3e  fitted angle %7.3f  R %.5f  apex height %.5f  base row width %.5f\n", (double)sim.Time(), (int)sim.StepNumber(),
                             (double)(fs.maxSpeed * mu / sigma), f.theta, f.R, P.Z[0], base));
@@ -259,8 +259,8 @@ PetscErrorCode Run() {
   }
   PetscCall(Profiles(sim, (int)dim, &P));
   const CapFit f = FitCap(P, (int)dim, hs);
-  PetscCall(sim.Fluid()->Summarize(&fs));
-  PetscCall(sim.Interface()->Summarize(&s1));
+  PetscCall(Fluid(sim)->Summarize(&fs));
+  PetscCall(Interface(sim)->Summarize(&s1));
   if (show) PetscCall(ShowDrop(sim));
   const double ca = fs.maxSpeed * mu / sigma, dA = std::fabs(s1.volume - s0.volume) / s0.volume, eR = std::fabs(f.R - Rexact) / Rexact;
   const double eTheta = f.theta - theta;

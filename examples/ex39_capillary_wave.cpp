@@ -15,8 +15,8 @@ static const char help[] = "Verification V4 (VERIFICATION.md): the damped capill
                            "printed (FAIL) but does not fail the run (the quick tier's regression test at 16 points, compared with its reference output).\n"
                            "-dt: a fixed time step (default: the capillary limit, adapted every step).\n\n";
 
-#include "vofdem/core/Runtime.hpp"
-#include "vofdem/core/Simulation.hpp"
+#include "vofdem/base/Runtime.hpp"
+#include "vofdem/sim/ModuleAccess.hpp"
 #include "vofdem/examples/Help.hpp"
 
 #include <cmath>
@@ -191,12 +191,12 @@ PetscErrorCode Amplitude(vofdem::Simulation &sim, double k, std::vector<double> 
   const PetscReal    *h = grid.Spacing(), *lo = grid.Lower();
   const PetscInt      Nx = grid.Cells()[0];
   std::fill(col.begin(), col.end(), 0.0);
-  PetscCall(DMDAGetCorners(sim.Interface()->FractionDM(), &s[0], &s[1], &s[2], &n[0], &n[1], &n[2]));
-  PetscCall(DMDAVecGetArray(sim.Interface()->FractionDM(), sim.Interface()->Fraction(), &f));
+  PetscCall(DMDAGetCorners(Interface(sim)->FractionDM(), &s[0], &s[1], &s[2], &n[0], &n[1], &n[2]));
+  PetscCall(DMDAVecGetArray(Interface(sim)->FractionDM(), Interface(sim)->Fraction(), &f));
   if (s[2] == 0)
     for (PetscInt j = s[1]; j < s[1] + n[1]; ++j)
       for (PetscInt i = s[0]; i < s[0] + n[0]; ++i) col[(size_t)i] += PetscRealPart(f[0][j][i]) * h[1];
-  PetscCall(DMDAVecRestoreArray(sim.Interface()->FractionDM(), sim.Interface()->Fraction(), &f));
+  PetscCall(DMDAVecRestoreArray(Interface(sim)->FractionDM(), Interface(sim)->Fraction(), &f));
   PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, col.data(), (int)Nx, MPI_DOUBLE, MPI_SUM, PETSC_COMM_WORLD));
   double sum = 0;
   *top       = -PETSC_MAX_REAL;
@@ -263,7 +263,7 @@ PetscErrorCode Run() {
   PetscCall(sim.Create(PETSC_COMM_WORLD));
   PetscCall(sim.SetFromOptions());
   PetscCall(sim.SetUp());
-  if (!sim.Interface()) VofdemInputError(PETSC_COMM_WORLD, "ex39: needs -physics flow,vof");
+  if (!Interface(sim)) VofdemInputError(PETSC_COMM_WORLD, "ex39: needs -physics flow,vof");
   PetscReal finalTime = tEnd;
   PetscCall(PetscOptionsGetReal(nullptr, nullptr, "-final_time", &finalTime, nullptr));
   {  // the exact initial fraction (phase 1 below the interface), then the ghosts through a zero step
@@ -271,18 +271,18 @@ PetscErrorCode Run() {
     const PetscReal    *hh = grid.Spacing(), *lo = grid.Lower();
     PetscScalar      ***f;
     PetscInt            s[3], n[3];
-    PetscCall(DMDAGetCorners(sim.Interface()->FractionDM(), &s[0], &s[1], &s[2], &n[0], &n[1], &n[2]));
-    PetscCall(DMDAVecGetArray(sim.Interface()->FractionDM(), sim.Interface()->Fraction(), &f));
+    PetscCall(DMDAGetCorners(Interface(sim)->FractionDM(), &s[0], &s[1], &s[2], &n[0], &n[1], &n[2]));
+    PetscCall(DMDAVecGetArray(Interface(sim)->FractionDM(), Interface(sim)->Fraction(), &f));
     for (PetscInt kk = s[2]; kk < s[2] + n[2]; ++kk)
       for (PetscInt j = s[1]; j < s[1] + n[1]; ++j)
         for (PetscInt i = s[0]; i < s[0] + n[0]; ++i) f[kk][j][i] = CellFraction(a0, k, lo[0] + i * hh[0], hh[0], lo[1] + j * hh[1], hh[1]);
-    PetscCall(DMDAVecRestoreArray(sim.Interface()->FractionDM(), sim.Interface()->Fraction(), &f));
-    Vec u[3] = {sim.Fluid()->Velocity(0), sim.Fluid()->Velocity(1), sim.Fluid()->Velocity(2)};
-    PetscCall(sim.Interface()->Advect(u, 0));  // refills alpha's ghost layer (nothing moves at rest)
-    PetscCall(sim.Interface()->UpdateProperties(*sim.Fluid()));
+    PetscCall(DMDAVecRestoreArray(Interface(sim)->FractionDM(), Interface(sim)->Fraction(), &f));
+    Vec u[3] = {Fluid(sim)->Velocity(0), Fluid(sim)->Velocity(1), Fluid(sim)->Velocity(2)};
+    PetscCall(Interface(sim)->Advect(u, 0));  // refills alpha's ghost layer (nothing moves at rest)
+    PetscCall(Interface(sim)->UpdateProperties(*Fluid(sim)));
   }
   vofdem::VofSummary s0, s1;
-  PetscCall(sim.Interface()->Summarize(&s0));
+  PetscCall(Interface(sim)->Summarize(&s0));
   std::vector<double> col((size_t)sim.GetGrid().Cells()[0]);
   double              a, top;
   PetscCall(Amplitude(sim, k, col, &a, &top));
@@ -306,7 +306,7 @@ PetscErrorCode Run() {
       ++report;
     }
   }
-  PetscCall(sim.Interface()->Summarize(&s1));
+  PetscCall(Interface(sim)->Summarize(&s1));
   const double rms = 100 * std::sqrt(se / st), basilisk = N == 16 ? 2.4 : N == 32 ? 0.64 : N == 64 ? 0.23 : 0;
   const double dv = std::fabs(s1.volume - s0.volume) / s0.volume;
   const bool   ok = rms <= tol, volOk = dv <= 1e-12, boundOk = s1.boundViolation <= 1e-12;

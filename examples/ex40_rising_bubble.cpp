@@ -11,8 +11,8 @@ static const char help[] = "Rising bubble: test case 1 of Hysing et al. (2009, I
                            "bound violation <= 1e-12. -check 0: a miss is printed (FAIL) but does not fail the run. -show_bubble (one rank): alpha at the\n"
                            "end as characters. -dt: a fixed time step (default: the modules' limit, adapted every step).\n\n";
 
-#include "vofdem/core/Runtime.hpp"
-#include "vofdem/core/Simulation.hpp"
+#include "vofdem/base/Runtime.hpp"
+#include "vofdem/sim/ModuleAccess.hpp"
 #include "vofdem/examples/Help.hpp"
 
 #include <cmath>
@@ -49,7 +49,7 @@ PetscErrorCode ShowBubble(vofdem::Simulation &sim) {
   PetscCallMPI(MPI_Comm_size(PETSC_COMM_WORLD, &size));
   if (size > 1) VofdemInputError(PETSC_COMM_WORLD, "option -show_bubble: run on one rank");
   const PetscInt *N = sim.GetGrid().Cells();
-  PetscCall(DMDAVecGetArray(sim.Interface()->FractionDM(), sim.Interface()->Fraction(), &a));
+  PetscCall(DMDAVecGetArray(Interface(sim)->FractionDM(), Interface(sim)->Fraction(), &a));
   for (PetscInt j = N[1] - 1; j >= 0; --j) {
     std::string row;
     for (PetscInt i = 0; i < N[0]; ++i) {
@@ -58,7 +58,7 @@ PetscErrorCode ShowBubble(vofdem::Simulation &sim) {
     }
     PetscCall(PetscPrintf(PETSC_COMM_WORLD, "%s\n", row.c_str()));
   }
-  PetscCall(DMDAVecRestoreArray(sim.Interface()->FractionDM(), sim.Interface()->Fraction(), &a));
+  PetscCall(DMDAVecRestoreArray(Interface(sim)->FractionDM(), Interface(sim)->Fraction(), &a));
   PetscFunctionReturn(0);
 }
 
@@ -67,10 +67,10 @@ struct BubbleState {
 };
 
 PetscErrorCode Measure(vofdem::Simulation &sim, BubbleState *b) {
-  vofdem::Vof         *vof = sim.Interface();
+  vofdem::Vof         *vof = Interface(sim);
   const vofdem::Grid  &grid = sim.GetGrid();
   const PetscReal     *h = grid.Spacing(), *lo = grid.Lower();
-  const vofdem::StaggeredGrid &sg = sim.Fluid()->Staggered();
+  const vofdem::StaggeredGrid &sg = Fluid(sim)->Staggered();
   Vec                  aLoc, vLoc;
   PetscScalar       ***a;
   vofdem::LocalField   v;
@@ -81,7 +81,7 @@ PetscErrorCode Measure(vofdem::Simulation &sim, BubbleState *b) {
   PetscCall(DMGetLocalVector(vof->FractionDM(), &aLoc));
   PetscCall(DMGlobalToLocal(vof->FractionDM(), vof->Fraction(), INSERT_VALUES, aLoc));
   PetscCall(DMGetLocalVector(sg.Face(1), &vLoc));
-  PetscCall(DMGlobalToLocal(sg.Face(1), sim.Fluid()->Velocity(1), INSERT_VALUES, vLoc));
+  PetscCall(DMGlobalToLocal(sg.Face(1), Fluid(sim)->Velocity(1), INSERT_VALUES, vLoc));
   PetscCall(DMDAVecGetArrayRead(vof->FractionDM(), aLoc, &a));
   PetscCall(sg.GetLocal(1, vLoc, &v));
   PetscCall(DMDAGetCorners(vof->FractionDM(), &s[0], &s[1], &s[2], &n[0], &n[1], &n[2]));
@@ -167,16 +167,16 @@ PetscErrorCode Run() {
   PetscCall(sim.Create(PETSC_COMM_WORLD));
   PetscCall(sim.SetFromOptions());
   PetscCall(sim.SetUp());
-  if (!sim.Interface()) VofdemInputError(PETSC_COMM_WORLD, "ex40: needs -physics flow,vof");
+  if (!Interface(sim)) VofdemInputError(PETSC_COMM_WORLD, "ex40: needs -physics flow,vof");
   PetscBool shapes = PETSC_FALSE;  // a scene that gives its own bubble (-vof_spheres) keeps it
   PetscCall(PetscOptionsHasName(nullptr, nullptr, "-vof_spheres", &shapes));
   if (!shapes) {
     const PetscInt samples[3] = {64, 64, 1};
-    PetscCall(sim.Interface()->SetFraction(Bubble, nullptr, samples));
-    PetscCall(sim.Interface()->UpdateProperties(*sim.Fluid()));
+    PetscCall(Interface(sim)->SetFraction(Bubble, nullptr, samples));
+    PetscCall(Interface(sim)->UpdateProperties(*Fluid(sim)));
   }
   vofdem::VofSummary s0, s1;
-  PetscCall(sim.Interface()->Summarize(&s0));
+  PetscCall(Interface(sim)->Summarize(&s0));
   BubbleState b;
   PetscCall(Measure(sim, &b));
   PetscCall(PetscPrintf(PETSC_COMM_WORLD, "rising bubble (Hysing et al. test case 1): %d x %d x %d cells (h = 1/%d), to t = %g; at t = 0: area %.6f (pi/16 = %.6f), centroid %.6f, circularity %.5f\n",
@@ -196,7 +196,7 @@ PetscErrorCode Run() {
       ++report;
     }
   }
-  PetscCall(sim.Interface()->Summarize(&s1));
+  PetscCall(Interface(sim)->Summarize(&s1));
   if (show) PetscCall(ShowBubble(sim));
   const double ev = 100 * (vmax - 0.2417) / 0.2417, ey = 100 * (b.yc - 1.0813) / 1.0813, ec = 100 * (cmin - 0.9013) / 0.9013;
   const bool   full = finalTime >= 3 * (1 - 1e-12);

@@ -17,8 +17,8 @@ static const char help[] = "A glass sphere at a still water surface, with the pa
                            "   still float, deep in the water (the force pulls up once beta > 180 - theta); that case is not checked here.\n"
 "Exits non-zero on failure.\n\n";
 
-#include "vofdem/core/Runtime.hpp"
-#include "vofdem/core/Simulation.hpp"
+#include "vofdem/base/Runtime.hpp"
+#include "vofdem/sim/ModuleAccess.hpp"
 #include "vofdem/coupling/Capillary.hpp"
 #include "vofdem/vof/Vof.hpp"
 #include "vofdem/examples/Help.hpp"
@@ -162,9 +162,9 @@ PetscErrorCode Run() {
   PetscCall(PetscPrintf(PETSC_COMM_WORLD, "     t (s)   surface (m)  centre - surface (R)  v (m/s)   centre - surface over the last tenth (R)\n"));
   for (PetscInt step = 1; step <= steps; ++step) {
     PetscCall(sim.Step());
-    PetscCall(sim.Particles()->FindParticle(0, x, u, &found));
+    PetscCall(Particles(sim)->FindParticle(0, x, u, &found));
     PetscCheck(found, PETSC_COMM_WORLD, PETSC_ERR_PLIB, "the sphere was lost");
-    PetscCall(SurfaceHeight(*sim.Interface(), &zs));
+    PetscCall(SurfaceHeight(*Interface(sim), &zs));
     const PetscReal s = (x[2] - zs) / kR;
     lowest = std::min(lowest, s);
     tenthLo = std::min(tenthLo, s), tenthHi = std::max(tenthHi, s);  // printed every tenth: a bobbing period is about 40 steps

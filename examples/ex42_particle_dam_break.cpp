@@ -20,8 +20,8 @@ static const char help[] = "Verification V7 (VERIFICATION.md): seed 000's partic
                            "neighbours, conserving the volumes). The experiment's values are read off figures (seed 000, Fig. 5) that are not in\n"
                            "this repository: the quantities are printed, not judged.\n\n";
 
-#include "vofdem/core/Runtime.hpp"
-#include "vofdem/core/Simulation.hpp"
+#include "vofdem/base/Runtime.hpp"
+#include "vofdem/sim/ModuleAccess.hpp"
 #include "vofdem/vof/Vof.hpp"
 #include "vofdem/examples/Help.hpp"
 
@@ -232,18 +232,18 @@ PetscErrorCode Run() {
   const PetscReal    *h = grid.Spacing();
   const PetscInt      layerRow = std::min(nz - 1, (PetscInt)(layerHeight / h[2]));
   vofdem::VofSummary  v0, vs;
-  PetscCall(sim.Interface()->Summarize(&v0));
+  PetscCall(Interface(sim)->Summarize(&v0));
   vofdem::DemSummary d0;
-  PetscCall(sim.Particles()->Summarize(&d0));
+  PetscCall(Particles(sim)->Summarize(&d0));
   PetscCall(PetscPrintf(PETSC_COMM_WORLD, "V7 particle-laden dam break, %s: %d x %d x %d cells of %.3g m (%.2f d), %d beads of d %g m\n", mode, (int)nx, (int)ny, (int)nz, (double)h[0],
                         (double)(h[0] / kD), (int)d0.particles, (double)kD));
 
   std::vector<PetscReal> a(nx * nz), scratch(nx * nz);
   Observation            obs[3] = {{"A front on the floor (m)", times[0]}, {"B impact height on the far wall (m)", times[1]}, {"C layer thickness at the far wall (m)", times[2]}};
   PetscReal              now[3], front, dvol = 0, bound = 0;
-  PetscCall(ProfileXZ(*sim.Interface(), nx, ny, nz, a, scratch));
+  PetscCall(ProfileXZ(*Interface(sim), nx, ny, nz, a, scratch));
   Measure(a, nx, nz, h, layerRow, now);
-  PetscCall(ParticleFront(*sim.Particles(), &front));
+  PetscCall(ParticleFront(*Particles(sim), &front));
   for (int q = 0; q < 3; ++q) obs[q].previous = now[q], obs[q].previousFront = front;
   bool           written[3] = {!hasPrefix, !hasPrefix, !hasPrefix};
   PetscLogDouble start;
@@ -251,10 +251,10 @@ PetscErrorCode Run() {
   while (!obs[2].done) {
     PetscCall(sim.ChooseTimeStep());
     PetscCall(sim.Step());
-    PetscCall(ProfileXZ(*sim.Interface(), nx, ny, nz, a, scratch));
+    PetscCall(ProfileXZ(*Interface(sim), nx, ny, nz, a, scratch));
     Measure(a, nx, nz, h, layerRow, now);
-    PetscCall(ParticleFront(*sim.Particles(), &front));
-    PetscCall(sim.Interface()->Summarize(&vs));
+    PetscCall(ParticleFront(*Particles(sim), &front));
+    PetscCall(Interface(sim)->Summarize(&vs));
     dvol  = std::max(dvol, std::max(std::fabs(vs.volume / v0.volume - 1), std::fabs(vs.otherVolume / v0.otherVolume - 1)));
     bound = std::max(bound, vs.boundViolation);
     const PetscReal t = sim.Time();
@@ -273,14 +273,14 @@ PetscErrorCode Run() {
       }
       if (!o.done) o.previous = now[q], o.previousFront = front, o.previousTime = t;
       if (o.done && !written[q]) {
-        PetscCall(WriteProfiles(prefix, t, a, nx, nz, *sim.Particles()));
+        PetscCall(WriteProfiles(prefix, t, a, nx, nz, *Particles(sim)));
         written[q] = true;
       }
     }
     if (sim.StepNumber() >= 10000000) break;
   }
   vofdem::DemSummary d1;
-  PetscCall(sim.Particles()->Summarize(&d1));
+  PetscCall(Particles(sim)->Summarize(&d1));
   PetscCall(PetscPrintf(PETSC_COMM_WORLD, "V7 %s after %d steps:\n", mode, (int)sim.StepNumber()));
   for (const Observation &o : obs)
     PetscCall(PetscPrintf(PETSC_COMM_WORLD, "  t %.3f s: %-38s %.4f%s\n", (double)o.time, o.name, (double)o.value,

@@ -11,8 +11,8 @@ static const char help[] = "Verification V6 (VERIFICATION.md): seed 000's sphere
                            "checked: max |v - v_ode| relative to the ODE's largest speed (largest at the entry, where the kernel, H = 1.5 d,\n"
                            "mixes the water's density into what the sphere reads about a kernel width early). Exits non-zero on failure.\n\n";
 
-#include "vofdem/core/Runtime.hpp"
-#include "vofdem/core/Simulation.hpp"
+#include "vofdem/base/Runtime.hpp"
+#include "vofdem/sim/ModuleAccess.hpp"
 #include "vofdem/coupling/DragLaws.hpp"
 #include "vofdem/vof/Vof.hpp"
 #include "vofdem/examples/Help.hpp"
@@ -145,7 +145,7 @@ PetscErrorCode Run() {
   PetscCall(sim.SetFromOptions());
   PetscCall(sim.SetUp());
   vofdem::VofSummary v0, vs;
-  PetscCall(sim.Interface()->Summarize(&v0));
+  PetscCall(Interface(sim)->Summarize(&v0));
   PetscReal errZ = 0, errV = 0, tZ = 0, tV = 0, dvol[2] = {0, 0};
   PetscReal x[3], u[3];
   PetscBool found;
@@ -154,9 +154,9 @@ PetscErrorCode Run() {
   while (sim.Time() < tEnd * (1 - 1e-12)) {
     PetscCall(sim.Step());
     ++step;
-    PetscCall(sim.Particles()->FindParticle(0, x, u, &found));
+    PetscCall(Particles(sim)->FindParticle(0, x, u, &found));
     PetscCheck(found, PETSC_COMM_WORLD, PETSC_ERR_PLIB, "the sphere was lost");
-    PetscCall(sim.Interface()->Summarize(&vs));
+    PetscCall(Interface(sim)->Summarize(&vs));
     const Sample    r  = At(ref, sim.Time());
     const PetscReal ez = std::fabs(x[2] - r.z) / fallen, ev = std::fabs(u[2] - r.v) / vmax;
     const PetscReal c1 = vs.volume / v0.volume - 1, c0 = vs.otherVolume / v0.otherVolume - 1;

@@ -8,8 +8,8 @@ static const char help[] = "Particles crossing a free surface (-physics dem,flow
                            "(no clipping is done) and the continuity residual max |div(eps u) + d(eps)/dt| dt. -final_time (default 0.08 s).\n"
                            "Exits non-zero on failure.\n\n";
 
-#include "vofdem/core/Runtime.hpp"
-#include "vofdem/core/Simulation.hpp"
+#include "vofdem/base/Runtime.hpp"
+#include "vofdem/sim/ModuleAccess.hpp"
 #include "vofdem/dem/Dem.hpp"
 #include "vofdem/flow/Flow.hpp"
 #include "vofdem/vof/Vof.hpp"
@@ -43,7 +43,7 @@ PetscErrorCode Run() {
   PetscCall(sim.SetFromOptions());
   PetscCall(sim.SetUp());
   vofdem::VofSummary v0, vs;
-  PetscCall(sim.Interface()->Summarize(&v0));
+  PetscCall(Interface(sim)->Summarize(&v0));
   PetscCall(PetscPrintf(PETSC_COMM_WORLD, "60 spheres falling into water: volumes at the start: water %.10e m^3, air %.10e m^3\n", (double)v0.volume, (double)v0.otherVolume));
   PetscReal worst[2] = {0, 0}, bounds = 0, residual = 0;
   PetscInt  steps    = 0;
@@ -52,8 +52,8 @@ PetscErrorCode Run() {
     PetscCall(sim.Step());
     ++steps;
     vofdem::FlowSummary fs;
-    PetscCall(sim.Interface()->Summarize(&vs));
-    PetscCall(sim.Fluid()->Summarize(&fs));
+    PetscCall(Interface(sim)->Summarize(&vs));
+    PetscCall(Fluid(sim)->Summarize(&fs));
     worst[0] = std::max(worst[0], std::fabs(vs.volume / v0.volume - 1));
     worst[1] = std::max(worst[1], std::fabs(vs.otherVolume / v0.otherVolume - 1));
     bounds   = std::max(bounds, vs.boundViolation);
@@ -64,7 +64,7 @@ PetscErrorCode Run() {
   for (PetscInt id = 0; id < 60; ++id) {
     PetscReal x[3], v[3];
     PetscBool found;
-    PetscCall(sim.Particles()->FindParticle(id, x, v, &found));
+    PetscCall(Particles(sim)->FindParticle(id, x, v, &found));
     total += found ? 1 : 0;
     below += found && x[2] < kSurface ? 1 : 0;
   }

@@ -24,8 +24,8 @@ static const char help[] = "Rotation and lubrication in the CFD-DEM coupling (-p
                            "    central differences of a linear field is exact; the sphere's eps bends the shear by 2e-6 in the step).\n"
                            "-parts abcd: the parts to run. Exits non-zero on failure.\n\n";
 
-#include "vofdem/core/Runtime.hpp"
-#include "vofdem/core/Simulation.hpp"
+#include "vofdem/base/Runtime.hpp"
+#include "vofdem/sim/ModuleAccess.hpp"
 #include "vofdem/grid/StaggeredGrid.hpp"
 #include "vofdem/examples/Help.hpp"
 
@@ -111,10 +111,10 @@ PetscErrorCode StepImpulses(vofdem::Simulation &sim, PetscReal drag[3], PetscRea
   vofdem::ParticleArrays a;
   PetscReal              loc[6] = {0, 0, 0, 0, 0, 0}, all[6];
   PetscFunctionBeginUser;
-  PetscCall(sim.Particles()->Particles().GetArrays(&a));
+  PetscCall(Particles(sim)->Particles().GetArrays(&a));
   for (PetscInt p = 0; p < a.n; ++p)
     for (int c = 0; c < 3; ++c) loc[c] += a.fluidImpulse[3 * p + c], loc[3 + c] += a.fluidExplicitImpulse[3 * p + c];
-  PetscCall(sim.Particles()->Particles().RestoreArrays(&a));
+  PetscCall(Particles(sim)->Particles().RestoreArrays(&a));
   PetscCallMPI(MPI_Allreduce(loc, all, 6, MPIU_REAL, MPIU_SUM, PETSC_COMM_WORLD));
   for (int c = 0; c < 3; ++c) drag[c] = all[c], lift[c] = all[3 + c];
   PetscFunctionReturn(0);
@@ -139,7 +139,7 @@ PetscErrorCode Lift(const char *law, PetscInt *failures) {
   while (sim.Time() < T * (1 - 1e-12)) {
     PetscCall(sim.Step());
     PetscCall(StepImpulses(sim, drag, lift));
-    PetscCall(sim.Particles()->FindParticle(0, x, v, &found, w));
+    PetscCall(Particles(sim)->FindParticle(0, x, v, &found, w));
     if (sim.Time() <= T / 2 + 1e-12) {  // the second half only: the fluid's disturbance has formed (H/V = 0.03 s)
       t0 = sim.Time(), vy0 = v[1], vz0 = v[2];
       continue;
@@ -148,7 +148,7 @@ PetscErrorCode Lift(const char *law, PetscInt *failures) {
     for (int c = 0; c < 3; ++c) applied[c] += lift[c];
     vSum += v[0], ++steps;
     vofdem::CouplingSummary cs;
-    PetscCall(sim.Coupled()->Summarize(&cs));
+    PetscCall(Coupled(sim)->Summarize(&cs));
     const PetscReal f = std::sqrt(cs.dragSum[0] * cs.dragSum[0] + cs.dragSum[1] * cs.dragSum[1] + cs.dragSum[2] * cs.dragSum[2]);
     for (int c = 0; c < 3; ++c) worst = std::max(worst, std::fabs(cs.sourceSum[c] + cs.dragSum[c]) / f);
   }
@@ -188,7 +188,7 @@ PetscErrorCode SpinDown(bool correction, PetscInt *failures) {
   PetscReal x[3], v[3], w[3];
   PetscBool found;
   while (sim.Time() < T * (1 - 1e-12)) PetscCall(sim.Step());
-  PetscCall(sim.Particles()->FindParticle(0, x, v, &found, w));
+  PetscCall(Particles(sim)->FindParticle(0, x, v, &found, w));
   PetscCheck(found, PETSC_COMM_WORLD, PETSC_ERR_PLIB, "the sphere was lost");
   const PetscReal t = sim.Time();
   if (!correction) {
@@ -250,8 +250,8 @@ PetscErrorCode Lubrication(bool vof, PetscInt *failures) {
     PetscCall(sim.Step());
     PetscReal xA[3], vA[3], fA[3], xB[3], vB[3], fB[3], w[3];
     PetscBool fa, fb;
-    PetscCall(sim.Particles()->FindParticle(0, xA, vA, &fa, w, fA));
-    PetscCall(sim.Particles()->FindParticle(1, xB, vB, &fb, w, fB));
+    PetscCall(Particles(sim)->FindParticle(0, xA, vA, &fa, w, fA));
+    PetscCall(Particles(sim)->FindParticle(1, xB, vB, &fb, w, fB));
     PetscCheck(fa && fb, PETSC_COMM_WORLD, PETSC_ERR_PLIB, "a sphere was lost");
     const PetscReal h = xB[0] - xA[0] - 2 * R, vn = vA[0] - vB[0];  // approach speed > 0
     if (!(h > 0.01 * R && h < 0.2 * R)) continue;  // inside the default range of -dem_lubrication_*_gap, above its floor
@@ -291,11 +291,11 @@ PetscErrorCode Shear(int c, PetscInt *failures) {
   vofdem::Simulation sim;
   PetscCall(SetUp(sim));
   {
-    const vofdem::StaggeredGrid &sg = sim.Fluid()->Staggered();
+    const vofdem::StaggeredGrid &sg = Fluid(sim)->Staggered();
     vofdem::LocalField           U;
     PetscInt                     st[3], n[3];
     const PetscReal             *h = sg.Base().Spacing(), *lo = sg.Base().Lower();
-    PetscCall(sg.GetGlobal(c, sim.Fluid()->Velocity(c), &U));
+    PetscCall(sg.GetGlobal(c, Fluid(sim)->Velocity(c), &U));
     sg.Owned(c, st, n);
     for (PetscInt k = st[2]; k < st[2] + n[2]; ++k)
       for (PetscInt j = st[1]; j < st[1] + n[1]; ++j)
@@ -303,14 +303,14 @@ PetscErrorCode Shear(int c, PetscInt *failures) {
           const PetscInt q[3] = {i, j, k};
           U.at(q)             = gamma * (lo[e] + (q[e] + 0.5) * h[e] - centre[e]);  // faces of c sit at cell centres along e
         }
-    PetscCall(sg.RestoreGlobal(c, sim.Fluid()->Velocity(c), &U));
+    PetscCall(sg.RestoreGlobal(c, Fluid(sim)->Velocity(c), &U));
   }
   PetscCall(sim.Step());
   vofdem::ParticleArrays a;
   PetscReal              loc[4] = {0, 0, 0, 0}, all[4], expect[3] = {0, 0, 0};
-  PetscCall(sim.Particles()->Particles().GetArrays(&a));
+  PetscCall(Particles(sim)->Particles().GetArrays(&a));
   for (PetscInt p = 0; p < a.n; ++p) loc[0] += a.fluidRotation[3 * p], loc[1] += a.fluidRotation[3 * p + 1], loc[2] += a.fluidRotation[3 * p + 2], loc[3] += 1;
-  PetscCall(sim.Particles()->Particles().RestoreArrays(&a));
+  PetscCall(Particles(sim)->Particles().RestoreArrays(&a));
   PetscCallMPI(MPI_Allreduce(loc, all, 4, MPIU_REAL, MPIU_SUM, PETSC_COMM_WORLD));
   PetscCheck(all[3] == 1, PETSC_COMM_WORLD, PETSC_ERR_PLIB, "the sphere was lost");
   expect[f] = -gamma / 2;

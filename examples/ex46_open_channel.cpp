@@ -20,8 +20,8 @@ static const char help[] = "VOF inflow and outflow faces (issue 8; src/vof/VofOp
                            "     rate equals U A_jet alpha_in to 1e-12;\n"
                            " (d) the velocity stays U: max |u - U| / U over the run <= 1e-8 at the density ratio (stable, no spurious momentum).\n\n";
 
-#include "vofdem/core/Runtime.hpp"
-#include "vofdem/core/Simulation.hpp"
+#include "vofdem/base/Runtime.hpp"
+#include "vofdem/sim/ModuleAccess.hpp"
 #include "vofdem/flow/Flow.hpp"
 #include "vofdem/vof/Vof.hpp"
 #include "vofdem/examples/Help.hpp"
@@ -75,7 +75,7 @@ PetscErrorCode VelocityError(vofdem::Flow &flow, PetscReal ux, PetscReal *err) {
 
 // sum |alpha - alpha_exact| dV / (A_jet h) with the front at xf (collective).
 PetscErrorCode ShapeError(vofdem::Simulation &sim, bool band, const PetscReal b[2], bool drain, PetscReal xf, PetscReal ajet, PetscReal *err) {
-  vofdem::Vof *vof = sim.Interface();
+  vofdem::Vof *vof = Interface(sim);
   DM           da  = vof->FractionDM();
   PetscScalar ***a;
   PetscInt      s[3], n[3];
@@ -153,8 +153,8 @@ PetscErrorCode Run() {
   PetscCall(sim.Create(PETSC_COMM_WORLD));
   PetscCall(sim.SetFromOptions());
   PetscCall(sim.SetUp());
-  vofdem::Vof  *vof  = sim.Interface();
-  vofdem::Flow *flow = sim.Fluid();
+  vofdem::Vof  *vof  = Interface(sim);
+  vofdem::Flow *flow = Fluid(sim);
   // The liquid's cross-section at the inflow (A_jet) for the front and the rates; the drained liquid
   // leaves through the whole face.
   const PetscReal depth = 2 * h, ajet = (band ? b[1] - b[0] : kW) * depth;

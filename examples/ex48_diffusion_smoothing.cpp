@@ -12,7 +12,7 @@ static const char help[] = "Verification of the diffusion-based smoothing (Diffu
                            "second moment is printed beside it. -method gaussian runs the same checks on the separable discrete Gaussian\n"
                            "(GaussianFilter.hpp) instead of the diffusion (its variance is exact: the moments to round-off). Exits non-zero on failure.\n\n";
 
-#include "vofdem/core/Runtime.hpp"
+#include "vofdem/base/Runtime.hpp"
 #include "vofdem/coupling/Smoothing.hpp"
 #include "vofdem/grid/StaggeredGrid.hpp"
 #include "vofdem/grid/Grid.hpp"

@@ -1,4 +1,4 @@
-# Checkpoint/restart (issue 5; src/core/Checkpoint.cpp, CheckpointFile.cpp): bitwise continuation on
+# Checkpoint/restart (issue 5; src/sim/Checkpoint.cpp, CheckpointFile.cpp): bitwise continuation on
 # the same rank count, continuation on another rank count, signals, a full disk, and bad input
 # (test/checkpoint/test_checkpoint.py says what each case checks).
 set(_ckpt ${VOFDEM_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/test/checkpoint/test_checkpoint.py $<TARGET_FILE:vofdem_app>)

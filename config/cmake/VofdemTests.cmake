@@ -155,6 +155,7 @@ include(VofdemAnalysisTests)  # powder-bed analysis (issue 6)
 include(VofdemSpreadingTests)  # spreading machinery and scenes (issue 6)
 include(VofdemClumpTests)  # rigid multi-sphere clumps (P10)
 include(VofdemHardCaseTests)  # VERIFICATION.md's hard cases (numerical stability)
+include(VofdemStructureTests)  # the include floors (issue 50)
 # -help lists the options of every named insertion source and wall (and of NAME) instead of stopping at a missing one.
 add_test(NAME dem/help_sources COMMAND ${VOFDEM_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/test/dem/test_help_sources.py $<TARGET_FILE:vofdem_app>)
 set_tests_properties(dem/help_sources PROPERTIES LABELS "quick;dem" PROCESSORS 2 TIMEOUT 300)

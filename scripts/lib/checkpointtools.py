@@ -1,4 +1,4 @@
-"""Helpers for vofdem checkpoints (src/core/Checkpoint.cpp, CheckpointFile.cpp), used by
+"""Helpers for vofdem checkpoints (src/sim/Checkpoint.cpp, CheckpointFile.cpp), used by
 test/checkpoint/test_checkpoint.py and scripts/kill-restart-test: file names, the comparison of two
 checkpoints (every dataset and the Simulation's clock, bit for bit), the rank processes of a run."""
 import os

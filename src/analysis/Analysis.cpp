@@ -1,8 +1,8 @@
 // -analysis_* options, the metrics of a set of spheres, and their CSV files (Analysis.hpp).
 #include "vofdem/analysis/Analysis.hpp"
 
-#include "vofdem/core/Options.hpp"
-#include "vofdem/core/Runtime.hpp"
+#include "vofdem/base/Options.hpp"
+#include "vofdem/base/Runtime.hpp"
 #include "vofdem/io/TextFile.hpp"
 
 #include <algorithm>

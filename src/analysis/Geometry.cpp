@@ -1,6 +1,6 @@
 #include "vofdem/analysis/Geometry.hpp"
 
-#include "vofdem/core/GaussLegendre.hpp"
+#include "vofdem/base/GaussLegendre.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -14,7 +14,7 @@ namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 
-// Gauss-Legendre nodes and weights on [0, 1] (core/GaussLegendre.hpp), computed once per n.
+// Gauss-Legendre nodes and weights on [0, 1] (base/GaussLegendre.hpp), computed once per n.
 struct GaussLegendre {
   std::vector<double> x, w;
   explicit GaussLegendre(int n) { GaussLegendre01(n, &x, &w); }

@@ -3,7 +3,7 @@
 // clump, the clump id of each sphere, -1 for a loose one; files written before it have no clump).
 #include "vofdem/analysis/Analysis.hpp"
 
-#include "vofdem/core/Runtime.hpp"
+#include "vofdem/base/Runtime.hpp"
 #include "vofdem/dem/Dem.hpp"
 #include "vofdem/dem/ParticleSwarm.hpp"
 #include "vofdem/grid/Grid.hpp"

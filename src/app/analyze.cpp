@@ -4,8 +4,8 @@
 // scene of the run); without them the default window is the particles' bounding box. The files go
 // to -analysis_dir, by default <input without .h5>_analysis next to the input.
 #include "vofdem/analysis/Analysis.hpp"
-#include "vofdem/core/Options.hpp"
-#include "vofdem/core/Runtime.hpp"
+#include "vofdem/base/Options.hpp"
+#include "vofdem/base/Runtime.hpp"
 #include "vofdem/grid/Grid.hpp"
 
 #include <algorithm>

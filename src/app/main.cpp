@@ -1,7 +1,7 @@
 // vofdem: mpiexec -n N vofdem -options_file_yaml scene.yaml [-option value ...]
 #include "vofdem/analysis/Analysis.hpp"
-#include "vofdem/core/Runtime.hpp"
-#include "vofdem/core/Simulation.hpp"
+#include "vofdem/base/Runtime.hpp"
+#include "vofdem/sim/ModuleAccess.hpp"
 
 static const char help[] = "vofdem: particle-laden flows with free surfaces, heat transfer and melting.\n"
                            "Usage: mpiexec -n N vofdem -options_file_yaml scene.yaml [-option value ...]\n\n";
@@ -19,7 +19,7 @@ static PetscErrorCode Run() {
   PetscCall(PetscOptionsGetString(nullptr, nullptr, "-output_dir", out, sizeof out, &outSet));
   PetscCall(analysis.SetFromOptions(PETSC_COMM_WORLD, {}, outSet ? std::string(out) + "/analysis" : std::string()));
   if (!help) {
-    if (analysis.Enabled() && !sim.Physics().dem) VofdemInputError(PETSC_COMM_WORLD, "option -analysis_metrics: the analysis needs particles (-physics dem)");
+    if (analysis.Enabled() && !sim.Modules().Has("dem")) VofdemInputError(PETSC_COMM_WORLD, "option -analysis_metrics: the analysis needs particles (-physics dem)");
     PetscCall(sim.SetUp());
     vofdem::analysis::Window box;  // the default window, and what a given one must overlap
     for (int d = 0; d < 3; ++d) box.lo[d] = sim.GetGrid().Lower()[d], box.hi[d] = sim.GetGrid().Upper()[d];
@@ -30,7 +30,7 @@ static PetscErrorCode Run() {
       PetscCall(PetscPrintf(PETSC_COMM_WORLD, "vofdem: the run was stopped before its end: no analysis (-restart latest goes on)\n"));
     else if (analysis.Enabled()) {
       vofdem::analysis::Spheres s;
-      PetscCall(vofdem::PowderAnalysis::Gather(*sim.Particles(), sim.GetGrid(), &s));
+      PetscCall(vofdem::PowderAnalysis::Gather(*Particles(sim), sim.GetGrid(), &s));
       PetscCall(analysis.Run(s, box, "the particles at the end of the run"));
     }
   }

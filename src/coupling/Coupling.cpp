@@ -1,8 +1,8 @@
 // Options, set-up, banner and Save/Load of the coupling (Coupling.hpp); the step is CouplingStep.cpp.
 #include "vofdem/coupling/Coupling.hpp"
 
-#include "vofdem/core/Options.hpp"
-#include "vofdem/core/Runtime.hpp"
+#include "vofdem/base/Options.hpp"
+#include "vofdem/base/Runtime.hpp"
 
 #include <petscviewerhdf5.h>
 

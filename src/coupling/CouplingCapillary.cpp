@@ -8,13 +8,22 @@
 
 namespace vofdem {
 
+// Princen's F_n as the DEM's surface-force law (SurfaceForce.hpp): params = (sigma N/m, theta rad).
+static PetscReal PrincenLaw(PetscReal R, PetscReal s, const PetscReal *params) {
+  return capillary::PrincenForce(R, params[0], params[1], s);
+}
+
 PetscErrorCode Coupling::SetFreeSurface(Vec alpha, PetscReal sigma) {
   PetscFunctionBeginUser;
   freeSurface_ = true;
   sigma_       = sigma;
   if (!contactAngleSet_ || !(sigma > 0)) PetscFunctionReturn(0);  // no force: nothing to average
   alpha_ = alpha;
-  dem_->SetCapillary(sigma, contactAngle_ * PETSC_PI / 180);
+  SurfaceForce princen;
+  princen.law       = PrincenLaw;
+  princen.params[0] = sigma;
+  princen.params[1] = contactAngle_ * PETSC_PI / 180;
+  dem_->SetSurfaceForce(princen);
   marginal_.Build(kernel_.shape, kernel_.truncation);
   for (int d = 0; d < 3; ++d) {
     PetscCall(VecDuplicate(faceEps_[d], &gradAlpha_[d]));
@@ -54,7 +63,7 @@ PetscErrorCode Coupling::AlphaGradient() {
 
 // Capillary.hpp: n = -grad alpha/|grad alpha| (from the liquid into the gas) and the centre's height above the
 // interface s = -H F^-1(alpha_avg), stored as the plane (n, c) with s = n.x + c through the particle's position
-// now: the DEM kicks evaluate Princen's force F_n n at the particle's current height on it (Dem::SetCapillary;
+// now: the DEM kicks evaluate Princen's force F_n n at the particle's current height on it (Dem::SetSurfaceForce;
 // held at one height over the fluid step the stiff force pumps the particle's oscillation). Where the kernel
 // sees no interface (|grad alpha| H below 1e-6, against about 1/2 at an interface) n = 0: no force.
 void Coupling::SurfacePlane(PetscReal H, PetscReal alphaAvg, const PetscReal grad[3], const PetscReal x[3], PetscReal plane[4]) const {

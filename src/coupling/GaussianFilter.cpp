@@ -1,6 +1,6 @@
 #include "vofdem/coupling/GaussianFilter.hpp"
 
-#include "vofdem/core/Runtime.hpp"
+#include "vofdem/base/Runtime.hpp"
 
 #include <algorithm>
 #include <cmath>

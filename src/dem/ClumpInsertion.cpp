@@ -7,8 +7,8 @@
 // Migrate follows) and the rigid state that Clumps::SetUp would give them: the template's mass
 // properties computed once and scaled (ClumpLibrary::Place), mass shares M/n, the velocity of the
 // source, no spin.
-#include "vofdem/core/Random.hpp"
-#include "vofdem/core/Runtime.hpp"
+#include "vofdem/base/Random.hpp"
+#include "vofdem/base/Runtime.hpp"
 #include "vofdem/dem/Clumps.hpp"
 #include "vofdem/dem/ParticleSources.hpp"
 #include "vofdem/dem/SphereHash.hpp"

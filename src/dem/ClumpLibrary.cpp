@@ -1,7 +1,7 @@
 // Clump shapes for insertion (ClumpLibrary.hpp, PHYSICS.md P10).
 #include "vofdem/dem/ClumpLibrary.hpp"
 
-#include "vofdem/core/Runtime.hpp"
+#include "vofdem/base/Runtime.hpp"
 #include "vofdem/dem/Clumps.hpp"
 
 #include <algorithm>

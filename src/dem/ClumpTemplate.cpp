@@ -1,7 +1,7 @@
 // Mass properties of a clump template: the union of overlapping spheres (ClumpTemplate.hpp, P10).
 #include "vofdem/dem/ClumpTemplate.hpp"
 
-#include "vofdem/core/GaussLegendre.hpp"
+#include "vofdem/base/GaussLegendre.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -1,7 +1,7 @@
 // Rigid multi-sphere clumps (Clumps.hpp, PHYSICS.md P10).
 #include "vofdem/dem/Clumps.hpp"
 
-#include "vofdem/core/Runtime.hpp"
+#include "vofdem/base/Runtime.hpp"
 
 #include <algorithm>
 #include <cmath>

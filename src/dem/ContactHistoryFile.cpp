@@ -8,7 +8,7 @@
 // file names the particles by their rows (0-based, header not counted) in the particles file written with
 // it: the ids of the reading run are others (ReadParticles numbers the rows from the swarm's count).
 #include "vofdem/dem/Dem.hpp"
-#include "vofdem/core/Runtime.hpp"
+#include "vofdem/base/Runtime.hpp"
 #include "vofdem/io/InputPath.hpp"
 #include "vofdem/io/TextFile.hpp"
 

@@ -1,8 +1,7 @@
 #include "vofdem/dem/Dem.hpp"
-#include "vofdem/coupling/Capillary.hpp"
 
-#include "vofdem/core/Options.hpp"
-#include "vofdem/core/Runtime.hpp"
+#include "vofdem/base/Options.hpp"
+#include "vofdem/base/Runtime.hpp"
 #include "vofdem/io/TextFile.hpp"
 
 #include <algorithm>
@@ -290,7 +289,7 @@ PetscErrorCode Dem::SetFluidLubrication(PetscReal uniform) {
 // The added mass m_a = C_vm rho_f V (P1, f_vm = m_a (Du/Dt - dv/dt)) is taken implicitly: its -m_a dv/dt
 // part moves to the left, (m + m_a) dv/dt = F + ..., and the coupling puts m_a Du/Dt into the fluid
 // force; the fluid gets -f_vm as well (F5). Without it (m_a = 0) the kick is the one above.
-// With the particles' wettability (sigma > 0) Princen's capillary force F_n n (Capillary.hpp) joins the explicit
+// With a surface force set (SurfaceForce.hpp: the coupling's capillary force, Princen's F_n n) it joins the explicit
 // fluid force, evaluated at the particle's current height s = n.x + c above the surface plane the coupling
 // read once per fluid step: the force is stiff (dF/ds = 2 pi sigma at a floating equilibrium, a 1 mm sphere
 // oscillates with a period of about 10 ms), and held over a fluid step at any one height it feeds that
@@ -298,7 +297,7 @@ PetscErrorCode Dem::SetFluidLubrication(PetscReal uniform) {
 // at all, so that any other lag wins). Taken per kick it is part of the symplectic DEM integration.
 // Its impulse is summed for the fluid's reaction (F5).
 template <bool fluid>
-static void HalfKick(const ParticleArrays &a, PetscReal dt, PetscReal sigma, PetscReal theta) {
+static void HalfKick(const ParticleArrays &a, PetscReal dt, const SurfaceForce &surface) {
   for (PetscInt p = 0; p < a.n; ++p) {
     if (a.clump[p] >= 0) continue;
     const PetscReal ma = fluid ? a.fluidAddedMass[p] : 0, m = a.mass[p] + ma;
@@ -317,9 +316,9 @@ static void HalfKick(const ParticleArrays &a, PetscReal dt, PetscReal sigma, Pet
         for (int d = 0; d < 3; ++d) a.omega[3 * p + d] = (a.omega[3 * p + d] + cr * a.fluidRotation[3 * p + d]) / (1 + cr);
       PetscReal Fn = 0;
       const PetscReal *plane = &a.fluidSurfacePlane[4 * p];
-      if (sigma > 0 && (plane[0] != 0 || plane[1] != 0 || plane[2] != 0)) {
+      if (surface.law && (plane[0] != 0 || plane[1] != 0 || plane[2] != 0)) {
         const PetscReal s = plane[0] * a.x[3 * p] + plane[1] * a.x[3 * p + 1] + plane[2] * a.x[3 * p + 2] + plane[3];
-        Fn                = capillary::PrincenForce(a.radius[p], sigma, theta, s);
+        Fn                = surface.law(a.radius[p], s, surface.params);
       }
       const PetscReal c = h * a.fluidDrag[p];
       for (int d = 0; d < 3; ++d) {
@@ -338,9 +337,9 @@ static void HalfKick(const ParticleArrays &a, PetscReal dt, PetscReal sigma, Pet
   }
 }
 
-static void HalfKick(const ParticleArrays &a, PetscReal dt, bool fluid, PetscReal sigma, PetscReal theta) {
-  if (fluid) HalfKick<true>(a, dt, sigma, theta);
-  else HalfKick<false>(a, dt, sigma, theta);
+static void HalfKick(const ParticleArrays &a, PetscReal dt, bool fluid, const SurfaceForce &surface) {
+  if (fluid) HalfKick<true>(a, dt, surface);
+  else HalfKick<false>(a, dt, surface);
 }
 
 // Velocity Verlet for translation and rotation. Forces are evaluated with the half-step
@@ -353,7 +352,7 @@ PetscErrorCode Dem::Step(PetscReal dt) {
   record_.on = out_.NeedsContacts(++steps_);
   PetscCall(PetscLogEventBegin(evIntegrate_, 0, 0, 0, 0));
   PetscCall(swarm_.GetArrays(&a));
-  HalfKick(a, dt, fluidCoupled_, capSigma_, capTheta_);
+  HalfKick(a, dt, fluidCoupled_, surfaceForce_);
   for (PetscInt p = 0; p < a.n; ++p)
     if (a.clump[p] < 0)
       for (int d = 0; d < 3; ++d) a.x[3 * p + d] += dt * a.v[3 * p + d];
@@ -382,7 +381,7 @@ PetscErrorCode Dem::Step(PetscReal dt) {
   PetscCall(PetscLogEventEnd(evForces_, 0, 0, 0, 0));
   PetscCall(PetscLogEventBegin(evIntegrate_, 0, 0, 0, 0));
   PetscCall(swarm_.GetArrays(&a));
-  HalfKick(a, dt, fluidCoupled_, capSigma_, capTheta_);
+  HalfKick(a, dt, fluidCoupled_, surfaceForce_);
   clumps_.Kick(a, dt, false);
   PetscCall(swarm_.RestoreArrays(&a));
   PetscCall(PetscLogEventEnd(evIntegrate_, 0, 0, 0, 0));

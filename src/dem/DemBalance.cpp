@@ -9,8 +9,8 @@
 // Coupled scenes must not do this: there the fluid cells decide the decomposition (ARCHITECTURE.md).
 #include "vofdem/dem/Dem.hpp"
 
-#include "vofdem/core/Options.hpp"
-#include "vofdem/core/Runtime.hpp"
+#include "vofdem/base/Options.hpp"
+#include "vofdem/base/Runtime.hpp"
 
 // DMSwarmSetMigrateType is not public in PETSc 3.18: the swarm's migration type is switched to
 // "basic" (send each point to the rank in its DMSwarm_rank field) through the private header.

@@ -1,8 +1,8 @@
 #include "vofdem/dem/Dem.hpp"
 
-#include "vofdem/core/MemoryBudget.hpp"
-#include "vofdem/core/Random.hpp"
-#include "vofdem/core/Runtime.hpp"
+#include "vofdem/base/MemoryBudget.hpp"
+#include "vofdem/base/Random.hpp"
+#include "vofdem/base/Runtime.hpp"
 #include "vofdem/dem/RandomFill.hpp"
 #include "vofdem/io/TextFile.hpp"
 #include "vofdem/io/InputPath.hpp"

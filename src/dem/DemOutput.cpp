@@ -6,8 +6,8 @@
 // removed), else in rank order; contacts in rank order. Values do not depend on the rank count.
 #include "vofdem/dem/Dem.hpp"
 
-#include "vofdem/core/Options.hpp"
-#include "vofdem/core/Runtime.hpp"
+#include "vofdem/base/Options.hpp"
+#include "vofdem/base/Runtime.hpp"
 #include "vofdem/io/TextFile.hpp"
 
 #include <petscviewerhdf5.h>

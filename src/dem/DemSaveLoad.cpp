@@ -10,7 +10,7 @@
 // trajectories then agree to round-off over short horizons.
 #include "vofdem/dem/Dem.hpp"
 
-#include "vofdem/core/Runtime.hpp"
+#include "vofdem/base/Runtime.hpp"
 #include "vofdem/io/RankArchive.hpp"
 
 #include <petscviewerhdf5.h>

@@ -4,8 +4,8 @@
 // as MaterialTable says, unless -dem_pair_<a>_<b>_<property> gives the pair's value.
 #include "vofdem/dem/Dem.hpp"
 
-#include "vofdem/core/Options.hpp"
-#include "vofdem/core/Runtime.hpp"
+#include "vofdem/base/Options.hpp"
+#include "vofdem/base/Runtime.hpp"
 
 #include <cctype>
 

@@ -1,6 +1,6 @@
 #include "vofdem/dem/Materials.hpp"
 
-#include "vofdem/core/Options.hpp"
+#include "vofdem/base/Options.hpp"
 
 #include <yaml.h>
 

@@ -1,7 +1,7 @@
 #include "vofdem/dem/ParticleSources.hpp"
 
-#include "vofdem/core/Random.hpp"
-#include "vofdem/core/Runtime.hpp"
+#include "vofdem/base/Random.hpp"
+#include "vofdem/base/Runtime.hpp"
 #include "vofdem/dem/SphereHash.hpp"
 
 #include <algorithm>

@@ -1,6 +1,6 @@
 #include "vofdem/dem/PeriodicImages.hpp"
 
-#include "vofdem/core/Runtime.hpp"
+#include "vofdem/base/Runtime.hpp"
 
 namespace vofdem {
 

@@ -1,6 +1,6 @@
 #include "vofdem/dem/RandomFill.hpp"
 
-#include "vofdem/core/Random.hpp"
+#include "vofdem/base/Random.hpp"
 #include "vofdem/dem/SphereHash.hpp"
 
 #include <algorithm>

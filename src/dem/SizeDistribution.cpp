@@ -1,6 +1,6 @@
 #include "vofdem/dem/SizeDistribution.hpp"
 
-#include "vofdem/core/Runtime.hpp"
+#include "vofdem/base/Runtime.hpp"
 
 #include <algorithm>
 #include <cmath>

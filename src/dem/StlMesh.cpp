@@ -1,7 +1,7 @@
 // STL reading (ASCII and binary) and vertex welding for mesh walls.
 #include "vofdem/dem/StlMesh.hpp"
 
-#include "vofdem/core/Runtime.hpp"
+#include "vofdem/base/Runtime.hpp"
 #include "vofdem/io/InputPath.hpp"
 
 #include <array>

@@ -2,8 +2,8 @@
 // contact loop is in WallContacts.hpp).
 #include "vofdem/dem/Walls.hpp"
 
-#include "vofdem/core/Options.hpp"
-#include "vofdem/core/Runtime.hpp"
+#include "vofdem/base/Options.hpp"
+#include "vofdem/base/Runtime.hpp"
 
 #include <algorithm>
 #include <cctype>

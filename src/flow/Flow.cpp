@@ -1,8 +1,8 @@
 #include "vofdem/flow/Flow.hpp"
 #include "vofdem/grid/FaceProperties.hpp"
 
-#include "vofdem/core/Options.hpp"
-#include "vofdem/core/Runtime.hpp"
+#include "vofdem/base/Options.hpp"
+#include "vofdem/base/Runtime.hpp"
 
 #include <petscviewerhdf5.h>
 

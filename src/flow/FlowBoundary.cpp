@@ -1,7 +1,7 @@
 #include "vofdem/flow/FlowBoundary.hpp"
 
-#include "vofdem/core/Options.hpp"
-#include "vofdem/core/Runtime.hpp"
+#include "vofdem/base/Options.hpp"
+#include "vofdem/base/Runtime.hpp"
 
 #include <cmath>
 #include <string>

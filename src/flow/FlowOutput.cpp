@@ -5,7 +5,7 @@
 // atomically at each output, Xdmf.hpp).
 #include "vofdem/flow/Flow.hpp"
 
-#include "vofdem/core/Runtime.hpp"
+#include "vofdem/base/Runtime.hpp"
 #include "vofdem/io/TextFile.hpp"
 
 #include <petscviewerhdf5.h>

@@ -4,7 +4,7 @@
 // that a point on a wall gets the wall's velocity.
 #include "vofdem/flow/Flow.hpp"
 
-#include "vofdem/core/Runtime.hpp"
+#include "vofdem/base/Runtime.hpp"
 
 #include <cmath>
 #include <cstdio>

@@ -3,8 +3,8 @@
 
 #include <petscviewerhdf5.h>
 
-#include "vofdem/core/Options.hpp"
-#include "vofdem/core/Runtime.hpp"
+#include "vofdem/base/Options.hpp"
+#include "vofdem/base/Runtime.hpp"
 
 #include <string>
 #include <vector>

@@ -1,7 +1,7 @@
 #include "vofdem/flow/ViscousSolver.hpp"
 #include "vofdem/grid/FaceProperties.hpp"
 
-#include "vofdem/core/Runtime.hpp"
+#include "vofdem/base/Runtime.hpp"
 
 namespace vofdem {
 

@@ -1,7 +1,7 @@
 #include "vofdem/grid/Grid.hpp"
 
-#include "vofdem/core/Options.hpp"
-#include "vofdem/core/Runtime.hpp"
+#include "vofdem/base/Options.hpp"
+#include "vofdem/base/Runtime.hpp"
 
 #include <algorithm>
 #include <string>

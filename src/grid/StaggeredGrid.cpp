@@ -1,6 +1,6 @@
 #include "vofdem/grid/StaggeredGrid.hpp"
 
-#include "vofdem/core/Runtime.hpp"
+#include "vofdem/base/Runtime.hpp"
 
 #include <vector>
 

@@ -2,7 +2,7 @@
 
 #include "vofdem/io/ReadAll.hpp"
 
-#include "vofdem/core/Runtime.hpp"
+#include "vofdem/base/Runtime.hpp"
 
 #include <petscvec.h>
 #include <petscviewerhdf5.h>

@@ -1,6 +1,6 @@
 #include "vofdem/io/TextFile.hpp"
 
-#include "vofdem/core/Runtime.hpp"
+#include "vofdem/base/Runtime.hpp"
 
 #include <cstdio>
 

@@ -2,8 +2,8 @@
 #include "vofdem/vof/Vof.hpp"
 #include "vofdem/vof/GhostSlab.hpp"
 
-#include "vofdem/core/Options.hpp"
-#include "vofdem/core/Runtime.hpp"
+#include "vofdem/base/Options.hpp"
+#include "vofdem/base/Runtime.hpp"
 #include "vofdem/flow/FlowBoundary.hpp"
 
 #include <algorithm>

@@ -34,8 +34,8 @@
 #include "vofdem/vof/Vof.hpp"
 #include "vofdem/vof/GhostSlab.hpp"
 
-#include "vofdem/core/Options.hpp"
-#include "vofdem/core/Runtime.hpp"
+#include "vofdem/base/Options.hpp"
+#include "vofdem/base/Runtime.hpp"
 #include "vofdem/flow/Flow.hpp"
 #include "vofdem/flow/FlowBoundary.hpp"
 

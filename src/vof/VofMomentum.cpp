@@ -38,7 +38,7 @@
 // advanced (their rows are set by the boundary conditions).
 #include "vofdem/vof/Vof.hpp"
 
-#include "vofdem/core/Runtime.hpp"
+#include "vofdem/base/Runtime.hpp"
 #include "vofdem/flow/Flow.hpp"
 
 #include <algorithm>

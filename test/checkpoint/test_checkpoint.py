@@ -174,7 +174,8 @@ def case_bitwise(exe, scene, ranks):
     check(ia == ib and ia.count("<Grid Name=") >= 9, "%s after the restart equals the uninterrupted run's (%d entries)" % (index, ia.count("<Grid Name=") - 1))
     # monitor.csv without its wall-time column, and without the row of step N (the last line of the
     # first part, not a line of the uninterrupted run): the restart appends, continuing the table.
-    mon = [[l.split(",")[:13] + l.split(",")[14:] for l in open(os.path.join(x + "-out", "monitor.csv")) if l.split(",")[0] != str(n)] for x in (a, b)]
+    wall = open(os.path.join(a + "-out", "monitor.csv")).readline().rstrip("\n").split(",").index("wall_time_s")
+    mon = [[l.split(",")[:wall] + l.split(",")[wall + 1:] for l in open(os.path.join(x + "-out", "monitor.csv")) if l.split(",")[0] != str(n)] for x in (a, b)]
     check(mon[0] == mon[1] and len(mon[0]) > 2, "monitor.csv of the restarted run (appended) equals the uninterrupted run's but for wall time (%d rows)" % len(mon[0]))
     run(exe, ranks, scene, ["-max_steps", str(2 * n), "-checkpoint_dir", c, "-checkpoint_every", "5", "-checkpoint_keep", "3", "-output_dir", c + "-out"] + out)
     d = bitwise_diff(ckpt(a, 2 * n), ckpt(b, 2 * n))

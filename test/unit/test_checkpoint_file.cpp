@@ -1,6 +1,6 @@
 // The checkpoint's scene comparison (CheckpointFile.hpp, FirstDifference): option lists as
 // RunDefiningOptions writes them (sorted "-name value" lines).
-#include "vofdem/core/CheckpointFile.hpp"
+#include "vofdem/sim/CheckpointFile.hpp"
 
 #include <gtest/gtest.h>
 

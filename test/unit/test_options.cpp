@@ -1,4 +1,4 @@
-#include "vofdem/core/Options.hpp"
+#include "vofdem/base/Options.hpp"
 
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-#include "vofdem/core/Random.hpp"
+#include "vofdem/base/Random.hpp"
 
 #include <gtest/gtest.h>
 

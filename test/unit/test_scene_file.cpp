@@ -1,4 +1,4 @@
-#include "vofdem/core/SceneFile.hpp"
+#include "vofdem/base/SceneFile.hpp"
 
 #include <gtest/gtest.h>
 

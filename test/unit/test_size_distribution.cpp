@@ -1,6 +1,6 @@
 // Size distributions (SizeDistribution.hpp): samples against the truncated laws' analytic moments,
 // the analytic moments against a numerical integral of the truncated density, cut-offs respected.
-#include "vofdem/core/Random.hpp"
+#include "vofdem/base/Random.hpp"
 #include "vofdem/dem/RandomFill.hpp"
 #include "vofdem/dem/SphereHash.hpp"
 #include "vofdem/dem/SizeDistribution.hpp"

@@ -10,7 +10,7 @@
 // name without being declared.
 #pragma once
 
-#include "vofdem/core/Options.hpp"
+#include "vofdem/base/Options.hpp"
 #include "vofdem/dem/ClumpTemplate.hpp"
 
 #include <string>

@@ -18,6 +18,7 @@
 #include "vofdem/dem/NeighbourList.hpp"
 #include "vofdem/dem/ParticleSources.hpp"
 #include "vofdem/dem/ParticleSwarm.hpp"
+#include "vofdem/dem/SurfaceForce.hpp"
 #include "vofdem/dem/Walls.hpp"
 #include "vofdem/grid/Grid.hpp"
 
@@ -116,9 +117,9 @@ public:
   // This rank's load as -dem_balance weighs it: its particles plus -dem_balance_contact_weight x their
   // contacts at the last force evaluation (DemBalance.cpp).
   PetscErrorCode BalanceLoad(PetscReal *load) const;
-  // The particles' wettability (-coupling_contact_angle): every kick adds Princen's capillary force at the
-  // particle's current height above its fluid_surface_plane (Capillary.hpp), sigma in N/m, theta in rad.
-  void               SetCapillary(PetscReal sigma, PetscReal theta) { capSigma_ = sigma, capTheta_ = theta; }
+  // A free surface's force on the particles (SurfaceForce.hpp; the coupling's capillary force): every kick adds
+  // F_n(R, s) n at the particle's current height s above its fluid_surface_plane.
+  void               SetSurfaceForce(const SurfaceForce &force) { surfaceForce_ = force; }
   // -coupling_lubrication: the lubrication (P8) takes the fluid's viscosity instead of -dem_lubrication_viscosity (an
   // input error with both). uniform > 0: the flow's single viscosity; 0: each particle's fluid_viscosity (the mixture it
   // reads with a free surface), the mean of the two for a pair, carried to the ghosts by the halo. Before SetUp.
@@ -264,7 +265,7 @@ private:
   std::string saveHistoryPath_;  // -dem_save_contact_history: the same at the end of the run
   PetscInt  inserted_     = 0;
   bool      fluidCoupled_ = false;
-  PetscReal capSigma_ = 0, capTheta_ = 0;  // SetCapillary; sigma 0: no capillary force
+  SurfaceForce surfaceForce_;  // SetSurfaceForce; no law: no surface force
   MPI_Comm  comm_         = MPI_COMM_NULL;
 };
 

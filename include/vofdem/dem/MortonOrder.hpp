@@ -16,7 +16,7 @@
 // Sorting changes the summation order against an unsorted run: results agree to round-off.
 #pragma once
 
-#include "vofdem/core/Options.hpp"
+#include "vofdem/base/Options.hpp"
 #include "vofdem/grid/Grid.hpp"
 
 #include <petscdmswarm.h>

@@ -8,7 +8,7 @@
 // carried by the particles' global ids (ContactHistory).
 #pragma once
 
-#include "vofdem/core/Random.hpp"
+#include "vofdem/base/Random.hpp"
 
 #include <petscsys.h>
 

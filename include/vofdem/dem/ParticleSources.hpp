@@ -14,7 +14,7 @@
 // spheres: its rate counts clumps, its size distribution gives each clump's volume-equivalent radius.
 #pragma once
 
-#include "vofdem/core/Options.hpp"
+#include "vofdem/base/Options.hpp"
 #include "vofdem/dem/ClumpLibrary.hpp"
 #include "vofdem/dem/NeighbourList.hpp"
 #include "vofdem/dem/ParticleSwarm.hpp"

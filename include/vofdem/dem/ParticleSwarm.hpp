@@ -36,7 +36,7 @@ inline constexpr const char *fluidExplicitImpulse = "fluid_explicit_impulse";
 inline constexpr const char *fluidCapillaryImpulse = "fluid_capillary_impulse";  // N s, the capillary force's, likewise (its own deposit)
 // The local free surface seen by the particle's kernel, as a plane: unit normal n (liquid to gas) and offset c,
 // so that the centre's height above it is s = n.x + c (4 reals; n = 0: no interface). The DEM sub-steps
-// evaluate the capillary force at the current s (Dem::SetCapillary).
+// evaluate the capillary force at the current s (Dem::SetSurfaceForce).
 inline constexpr const char *fluidSurfacePlane = "fluid_surface_plane";
 // Rotation (-coupling_rotational_drag): the torque -K_r (omega - Omega_f), taken implicitly by every kick like the
 // drag, with K_r (N m s) and half the fluid's vorticity Omega_f = curl(u)/2 at the particle (rad/s, 3 reals).

@@ -5,7 +5,7 @@
 // generator it depends only on (seed, particle id), never on the rank count.
 #pragma once
 
-#include "vofdem/core/Options.hpp"
+#include "vofdem/base/Options.hpp"
 
 #include <petscsys.h>
 

@@ -5,7 +5,7 @@
 //   if (help) PetscFunctionReturn(0);
 #pragma once
 
-#include "vofdem/core/Simulation.hpp"
+#include "vofdem/sim/Simulation.hpp"
 
 namespace vofdem::example {
 

@@ -1,9 +1,9 @@
-#include "vofdem/core/Runtime.hpp"
+#include "vofdem/base/Runtime.hpp"
 
-#include "vofdem/core/Options.hpp"
+#include "vofdem/base/Options.hpp"
 
-#include "vofdem/core/MpiStartupDefaults.hpp"
-#include "vofdem/core/SceneFile.hpp"
+#include "vofdem/base/MpiStartupDefaults.hpp"
+#include "vofdem/base/SceneFile.hpp"
 
 #include <mpi.h>
 

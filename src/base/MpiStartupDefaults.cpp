@@ -1,4 +1,4 @@
-#include "vofdem/core/MpiStartupDefaults.hpp"
+#include "vofdem/base/MpiStartupDefaults.hpp"
 
 #include <cstdlib>
 #include <cstring>

@@ -1,6 +1,6 @@
-#include "vofdem/core/MemoryBudget.hpp"
+#include "vofdem/base/MemoryBudget.hpp"
 
-#include "vofdem/core/Runtime.hpp"
+#include "vofdem/base/Runtime.hpp"
 
 #include <cstdio>
 #include <cstring>

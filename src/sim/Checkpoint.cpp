@@ -1,9 +1,9 @@
-#include "vofdem/core/Checkpoint.hpp"
+#include "vofdem/sim/Checkpoint.hpp"
 
-#include "vofdem/core/CheckpointFile.hpp"
-#include "vofdem/core/Options.hpp"
-#include "vofdem/core/Runtime.hpp"
-#include "vofdem/core/Simulation.hpp"
+#include "vofdem/sim/CheckpointFile.hpp"
+#include "vofdem/base/Options.hpp"
+#include "vofdem/base/Runtime.hpp"
+#include "vofdem/sim/Simulation.hpp"
 
 #include <petsctime.h>
 #include <petscviewerhdf5.h>
@@ -216,7 +216,7 @@ PetscErrorCode Checkpoint::Restore(Simulation &sim) {
     std::error_code ec;
     if (!fs::is_regular_file(path, ec)) ok = false, why = "no such file";
     else ok = ReadCheckpointHeader(path, &h, &why);
-    if (ok && h.physics != sim.Physics().Describe()) ok = false, why = "it is of physics " + h.physics + ", this run " + sim.Physics().Describe();
+    if (ok && h.physics != sim.PhysicsDescription()) ok = false, why = "it is of physics " + h.physics + ", this run " + sim.PhysicsDescription();
     if (ok && !FirstDifference(h.options, options).empty()) ok = false, why = "another scene: " + FirstDifference(h.options, options);
     if (ok) why = std::to_string(h.ranks);
   }
@@ -279,7 +279,7 @@ PetscErrorCode Checkpoint::Write(Simulation &sim) {
   const std::string kept = lastStep_ < 0 ? "no checkpoint written yet" : Name(lastStep_, false) + " is kept";
   if (!ok) VofdemRunError(comm_, "checkpoint: cannot write '%s' (-checkpoint_dir): %s; %s", tmp.c_str(), why.c_str(), kept.c_str());
   PetscCall(RunDefiningOptions(&options));
-  const std::string physics = sim.Physics().Describe();
+  const std::string physics = sim.PhysicsDescription();
   const PetscInt    ranks   = size;
   g_writing = tmp, g_kept = kept;
   PetscCall(PetscLogEventBegin(evWrite_, 0, 0, 0, 0));

@@ -1,6 +1,6 @@
-#include "vofdem/core/Options.hpp"
+#include "vofdem/base/Options.hpp"
 
-#include "vofdem/core/Runtime.hpp"
+#include "vofdem/base/Runtime.hpp"
 
 #include <cerrno>
 #include <cmath>

@@ -1,4 +1,4 @@
-#include "vofdem/core/CheckpointFile.hpp"
+#include "vofdem/sim/CheckpointFile.hpp"
 
 #include <hdf5.h>
 

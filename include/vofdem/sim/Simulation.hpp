@@ -1,22 +1,20 @@
-// The simulation: clock, time-step control, the coupled step, monitors. It owns the modules the
-// scene switched on (-physics) and calls them in the order of ARCHITECTURE.md ("The coupled step"),
-// each inside its own PETSc log stage so -log_view breaks the time down per module.
+// The simulation: clock, time-step control, the coupled step, monitors. It names no module: it creates the
+// modules the scene switched on (-physics) from the registry (base/ModuleRegistry.hpp) and runs each in the
+// stages it subscribes to, in the one fixed order of Stage (base/Module.hpp; docs/architecture.md, "The
+// coupled step"), each module inside its own PETSc log stage so -log_view breaks the time down per module.
+// Drivers reach a module's object through sim/ModuleAccess.hpp.
 #pragma once
 
-#include "vofdem/core/Checkpoint.hpp"
-#include "vofdem/core/Physics.hpp"
-#include "vofdem/coupling/Coupling.hpp"
-#include "vofdem/dem/Dem.hpp"
-#include "vofdem/flow/Flow.hpp"
+#include "vofdem/base/Module.hpp"
 #include "vofdem/grid/Grid.hpp"
-#include "vofdem/vof/Vof.hpp"
+#include "vofdem/sim/Checkpoint.hpp"
 
 #include <petsclog.h>
 
 #include <cstdio>
 #include <memory>
 #include <string>
-
+#include <vector>
 namespace vofdem {
 
 class Simulation {
@@ -34,7 +32,7 @@ public:
   PetscErrorCode View(PetscViewer viewer) const;  // the start-up banner
   PetscErrorCode Destroy();
   // Collective, HDF5 viewer: the clock and the time-step controller's state (root attributes
-  // "simulation_*"), then every module's Save/Load (groups "dem", "flow", "vof"). LoadState after SetUp()
+  // "simulation_*"), then every module's Save/Load (its own group, "dem", "flow", "vof"). LoadState after SetUp()
   // with the saving run's options (Checkpoint::Restore checks them).
   PetscErrorCode SaveState(PetscViewer viewer);
   PetscErrorCode LoadState(PetscViewer viewer);
@@ -44,27 +42,26 @@ public:
   PetscReal Time() const { return time_; }
   PetscReal Dt() const { return dt_; }
   PetscInt  StepNumber() const { return step_; }
-  const PhysicsSet &Physics() const { return physics_; }
-  Dem       *Particles() { return dem_.get(); }
-  Flow      *Fluid() { return flow_.get(); }
-  Vof       *Interface() { return vof_.get(); }
-  Coupling  *Coupled() { return coupling_.get(); }
-  const Grid &GetGrid() const { return grid_; }
+  // The modules on (with the implied ones, e.g. the coupling), in the registry's order, and the -physics
+  // words among them ("dem,flow"; the checkpoint's "physics").
+  const std::vector<std::string> &ModuleNames() const { return on_; }
+  std::string                     PhysicsDescription() const;
+  const ModuleSet                &Modules() const { return modules_; }
+  const Grid                     &GetGrid() const { return grid_; }
 
 private:
-  // The VOF sweeps move the momentum (mass-consistent transport, not with particles): Step, ChooseTimeStep.
-  bool ConsistentVofMomentum() const { return physics_.vof && !coupling_ && vof_->ConsistentMomentum(); }
   PetscErrorCode Monitor();
+  PetscErrorCode PushStage(std::size_t module) const;  // the module's PETSc log stage
+  PetscErrorCode ViewStages(PetscViewer viewer) const;  // the stage table of the banner
 
   MPI_Comm   comm_ = MPI_COMM_NULL;
-  PhysicsSet physics_;
+  std::vector<std::string> on_;
   Grid       grid_;
-  std::unique_ptr<Dem> dem_;
-  std::unique_ptr<Flow> flow_;
-  std::unique_ptr<Vof>  vof_;
-  PetscReal  vofVolume0_ = 0;  // phase-1 volume at the start (monitor: volume error)
-  PetscReal  vofOtherVolume0_ = 0;  // phase-0 volume at the start, with particles (eps (1 - alpha) V)
-  std::unique_ptr<Coupling> coupling_;  // -physics dem,flow
+  RunContext context_;
+  ModuleSet  modules_;
+  std::vector<PetscLogStage>        logStages_;           // per module, in modules_' order
+  std::vector<std::vector<std::size_t>> stageModules_;  // per Stage: the modules (indices) that run in it
+  bool       adaptsEveryStep_ = false;  // a module's limit moves with its state: choose the step every step
   Checkpoint checkpoint_;
 
   PetscReal time_ = 0, dt_ = 0, dtUser_ = 0, dtInitial_ = 0, dtMax_ = 0, finalTime_ = PETSC_MAX_REAL;
@@ -83,7 +80,6 @@ private:
   PetscLogDouble wallStart_ = 0;
   PetscInt       runStartStep_ = 0;  // step and time at Run() (a restart's ETA counts from here)
   PetscReal      runStartTime_ = 0;
-  PetscLogStage  demStage_  = -1, flowStage_ = -1, vofStage_ = -1, couplingStage_ = -1;
 };
 
 }  // namespace vofdem
