@@ -1,4 +1,4 @@
-static const char help[] = "Verification V5 (VERIFICATION.md): the dam break of Martin & Moyce (1952), n^2 = 2, through the program's own step\n"
+static const char help[] = "Verification V5 (docs/verification.md): the dam break of Martin & Moyce (1952), n^2 = 2, through the program's own step\n"
                            "(Simulation with -physics flow,vof; scene config/scenes/dam-break.yaml, density ratio 1000). The front position\n"
                            "Z = x_front / a, x_front = sum of alpha h along the floor row of cells, against T = t sqrt(2 g / a) is compared with the\n"
                            "measured front at the measured times up to the end of the run (linear interpolation in the run's history). Must reach:\n"

@@ -1,4 +1,4 @@
-static const char help[] = "Verification V3 (VERIFICATION.md): Popinet's (2009) static drop through the program's step (-physics flow,vof). A drop\n"
+static const char help[] = "Verification V3 (docs/verification.md): Popinet's (2009) static drop through the program's step (-physics flow,vof). A drop\n"
                            "(a cylinder: 2-D, one cell across z between slip walls) of diameter D = 0.4, sigma = 1, Laplace number La = rho sigma D / mu^2 = 12000\n"
                            "(-laplace), -resolution N cells across a unit box (25.6 cells per D at 64), -ratio rho_drop / rho_gas (mu the same in\n"
                            "both). -setup quarter (default, Popinet's): the quarter of the drop in [0, 0.5]^2 (N/2 cells a side), centred on the\n"
@@ -231,7 +231,7 @@ PetscErrorCode Run() {
   vofdem::VofSummary vs;
   PetscCall(Interface(sim)->Summarize(&vs));
   const PetscReal exact = sigma / R, jerr = std::fabs(jump - exact) / exact;
-  // VERIFICATION.md V3 judges Ca after one viscous time; a shorter run (the quick tier) must show it
+  // docs/verification.md V3 judges Ca after one viscous time; a shorter run (the quick tier) must show it
   // falling (end below half time) and says that the threshold was not judged.
   const bool full = times >= 1, jumpOk = jerr <= 0.01, caOk = !full || ca < caMax, falling = (full && ratio == 1) || ca < caHalf;
   // At rest to round-off: |u| below 1e-12 of the capillary velocity sqrt(sigma / (rho D)) (V2's "to

@@ -1,5 +1,5 @@
-static const char help[] = "Verification C1 (VERIFICATION.md): a single sphere settling to its terminal velocity through a fluid at rest,\n"
-                           "coupled by the semi-resolved kernel (-physics dem,flow; PHYSICS.md K1-K3, K1b). Sphere d = 1 mm, 2500 kg/m^3, fluid\n"
+static const char help[] = "Verification C1 (docs/verification.md): a single sphere settling to its terminal velocity through a fluid at rest,\n"
+                           "coupled by the semi-resolved kernel (-physics dem,flow; docs/physics.md K1-K3, K1b). Sphere d = 1 mm, 2500 kg/m^3, fluid\n"
                            "1000 kg/m^3 and 0.01 Pa s, Schiller-Naumann drag: the drag law's terminal velocity 0.05508 m/s (Re 5.5), from the force\n"
                            "balance solved here. For each cell/diameter ratio of -ratios (default 0.5,1,2,4,10) a closed box of max(16 d, 8 cells)\n"
                            "across and max(30 d, 6 cells) high, the sphere released at rest on the axis, max(5 d, 1.5 cells) below the lid,\n"

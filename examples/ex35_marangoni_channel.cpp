@@ -1,4 +1,4 @@
-static const char help[] = "Marangoni force (PHYSICS.md F2) with a prescribed temperature, through the program's step (-physics flow,vof): a channel\n"
+static const char help[] = "Marangoni force (docs/physics.md F2) with a prescribed temperature, through the program's step (-physics flow,vof): a channel\n"
                            "0 < y < H = 1 between no-slip walls, periodic in x, slip in z, phase 1 below the flat interface\n"
                            "y = a = 0.5 and phase 0 above (both 1 kg/m^3, 1 Pa s: the flow's div(mu grad U^T) is explicit, and with unequal\n"
                            "viscosities it limits dt to about h^2 rho / mu, which Flow does not report yet), T = T0 + G x with G = 1 K/m, sigma(T0) = 0.01 N/m and dsigma/dT = -1e-3 N/(m K):\nthe interface"

@@ -1,4 +1,4 @@
-static const char help[] = "Mass-consistent momentum at large density ratios (PHYSICS.md F2; issue 8): a dense drop (a cylinder, quasi-2-D, 2 cells in z) of\n"
+static const char help[] = "Mass-consistent momentum at large density ratios (docs/physics.md F2; issue 8): a dense drop (a cylinder, quasi-2-D, 2 cells in z) of\n"
                            "diameter D = 0.4 in the unit box (periodic in x and y, free-slip in z), density -ratio times the surrounding phase's\n"
                            "(1 kg/m^3), no gravity, through the program's step (-physics flow,vof) for -periods crossings of the box (t = periods / U_x:\n"
                            "the drop is back where it started), -resolution N cells across the box, -vof_surface_tension sigma (default 0).\n"

@@ -1,4 +1,4 @@
-static const char help[] = "Verification V4 (VERIFICATION.md): the damped capillary wave, Prosperetti's (1981, Phys. Fluids 24, 1217) initial-value\n"
+static const char help[] = "Verification V4 (docs/verification.md): the damped capillary wave, Prosperetti's (1981, Phys. Fluids 24, 1217) initial-value\n"
                            "problem as Popinet (2009, J. Comput. Phys. 228, 5838; Basilisk's test capwave) sets it up, through the program's step\n"
                            "(-physics flow,vof). Two fluids of equal density 1 and equal viscosity 0.0182571749236 (La = sigma lambda / (rho nu^2) =\n"
                            "3000), sigma = 1, wavelength lambda = 1, interface y = a0 cos(2 pi x), a0 = 0.01, at rest at t = 0, no gravity. One\n"
@@ -10,7 +10,7 @@ static const char help[] = "Verification V4 (VERIFICATION.md): the damped capill
                            "position instead. Error: the RMS over time (every step, weighted by its dt) of a(t) - a_exact(t), relative to a0.\n"
                            "a_exact: Prosperetti's closed form for equal kinematic viscosities (roots of a quartic, erfc of complex argument via a\n"
                            "Faddeeva function written here, Weideman 1994), checked first against its small-viscosity limits. Must reach\n"
-                           "(-tolerance, percent): 1 at 32 points (VERIFICATION.md V4); Basilisk's own figure elsewhere (2.4 at 16, 0.23 at 64).\n"
+                           "(-tolerance, percent): 1 at 32 points (docs/verification.md V4); Basilisk's own figure elsewhere (2.4 at 16, 0.23 at 64).\n"
                            "-exact_only: print the exact amplitude and the checks, run nothing. -error_check 0: an RMS error above the tolerance is\n"
                            "printed (FAIL) but does not fail the run (the quick tier's regression test at 16 points, compared with its reference output).\n"
                            "-dt: a fixed time step (default: the capillary limit, adapted every step).\n\n";

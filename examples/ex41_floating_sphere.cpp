@@ -1,5 +1,5 @@
 static const char help[] = "A glass sphere at a still water surface, with the particles' wettability (-coupling_contact_angle; issue 9,\n"
-                           "PHYSICS.md P1, Capillary.hpp). The sphere (d 1 mm, 2500 kg/m^3) starts at rest, centred on the surface of\n"
+                           "docs/physics.md P1, Capillary.hpp). The sphere (d 1 mm, 2500 kg/m^3) starts at rest, centred on the surface of\n"
                            "water (1000 kg/m^3, 1e-3 Pa s, surface tension 0.072 N/m) under air (1.2 kg/m^3, 1.8e-5 Pa s), gravity on, in a\n"
                            "closed box of 10 x 10 x 16 cells of 0.6 d, kernel width H = d, fluid step -dt (default 2.5e-4 s), -steps steps\n"
                            "(default 400); it starts -start R (default 0.3) above the surface. -angle (deg, default 120) is the contact angle; -angle -1 leaves the option out.\n"

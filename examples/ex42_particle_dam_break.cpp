@@ -1,4 +1,4 @@
-static const char help[] = "Verification V7 (VERIFICATION.md): seed 000's particle-laden dam break (Sun & Sakai 2015) with -physics dem,flow,vof.\n"
+static const char help[] = "Verification V7 (docs/verification.md): seed 000's particle-laden dam break (Sun & Sakai 2015) with -physics dem,flow,vof.\n"
                            "A closed tank 0.2 x 0.1 x 0.3 m (x, y, z; gravity -z), a water column 0.05 x 0.1 x 0.1 m at x = 0 under air, and glass\n"
                            "beads (d 2.7 mm, 2500 kg/m^3; config/materials/glass.yaml) settled at the column's base (-bed FILE, a CSV written by\n"
                            "config/scenes/particle-dam-break-bed.yaml; without it -bed_count beads are poured at random into the base,\n"

@@ -1,4 +1,4 @@
-static const char help[] = "Particles crossing a free surface (-physics dem,flow,vof; PHYSICS.md F1, F1b): 60 glass spheres (d 1 mm,\n"
+static const char help[] = "Particles crossing a free surface (-physics dem,flow,vof; docs/physics.md F1, F1b): 60 glass spheres (d 1 mm,\n"
                            "2500 kg/m^3) released at random in the air (1.2 kg/m^3) of a closed 8 x 8 x 16 mm box over water (1000 kg/m^3)\n"
                            "filling its lower half, 1 mm cells, fall into the water; the fluid side of the drag implicit (a dense cloud in\n"
                            "a light gas: -coupling_fluid_drag implicit). As they move, eps changes: the projection makes\n"

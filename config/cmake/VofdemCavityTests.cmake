@@ -1,4 +1,4 @@
-# F2, the lid-driven cavity (VERIFICATION.md), and the convergence tables of F1, F5, E1: the checking
+# F2, the lid-driven cavity (docs/verification.md), and the convergence tables of F1, F5, E1: the checking
 # scripts of test/flow/ tested on synthetic input (the reference itself passes with zero error, a profile
 # off by 0.02 of the lid speed fails, a mirrored cavity fails, exact error ladders give exact orders).
 # To be included by VofdemTests.cmake next to VofdemFlowTests.

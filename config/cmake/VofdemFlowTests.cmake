@@ -62,7 +62,7 @@ add_test(NAME flow/solver_options_accepted COMMAND mpiexec -n 2 $<TARGET_FILE:vo
 set_tests_properties(flow/solver_options_accepted PROPERTIES LABELS "quick;flow" PROCESSORS 2 TIMEOUT 120
                      ENVIRONMENT "OMPI_ALLOW_RUN_AS_ROOT=1;OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1;OMP_NUM_THREADS=1")
 
-# scripts/work-precision (speed against error, VERIFICATION.md): its parsers and case entries.
+# scripts/work-precision (speed against error, docs/verification.md): its parsers and case entries.
 add_test(NAME unit/work_precision COMMAND ${VOFDEM_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/test/unit/test_work_precision.py)
 set_tests_properties(unit/work_precision PROPERTIES LABELS "quick;unit" TIMEOUT 60)
 

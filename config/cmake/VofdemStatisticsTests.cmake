@@ -1,4 +1,4 @@
-# D6, long horizon (VERIFICATION.md; included by VofdemTests.cmake): a chaotic scene on 2 and 4 ranks
+# D6, long horizon (docs/verification.md; included by VofdemTests.cmake): a chaotic scene on 2 and 4 ranks
 # must give bulk statistics within 3 sigma of a 1-rank ensemble of 8 seeds, with exact particle counts
 # and final positions shown to have decorrelated. The short horizon of ex20 is an example test.
 add_test(NAME statistics/d6_rank_statistics

@@ -4,7 +4,7 @@ and reads its log and its cell-centred velocity field.
 The case: unit cube, blockMesh N^3, lid (1 0 0) on the y = 1 face, nu = 0.01 (Re 100), central
 differences in space and Euler in time as in the tutorial cavity, PISO with 2 correctors, dt = 0.5/N
 (CFL 0.5 at the lid speed). Pressure: GAMG with a Gauss-Seidel smoother (the tutorial's PCG + DIC needs
-~200 iterations per step at 64^3, GAMG ~10; see /work/shared/notes/peer-codes.md), same tolerances as
+~200 iterations per step at 64^3, GAMG ~10; see docs/petsc-notes.md, "OpenFOAM's pressure solver"), same tolerances as
 the tutorial (1e-6 absolute, 0.05 relative in the first corrector, 0 in the final one). Smoother:
 GaussSeidel was the fastest on 1 rank at 64^3 (1.7-1.8 us per cell-step against 2.0 for DIC and
 symGaussSeidel and 2.3-2.5 for DICGaussSeidel; results/bench-flow-vs-openfoam.md).

@@ -143,7 +143,7 @@ def main():
                 continue
             say("| %d^2 | OpenFOAM interIsoFoam, Co %g | %d | %.4f | %.4f | %.2f | %.2f |" % (n, co, steps // 2, f1, f2, v1 / f1, v2 / f2))
     say("")
-    say("(VERIFICATION.md's OpenFOAM figures, 3.0 % at 100^2 and 1.35 % at 200^2, came from another set-up of the tutorial.)")
+    say("(docs/verification.md's OpenFOAM figures, 3.0 % at 100^2 and 1.35 % at 200^2, came from another set-up of the tutorial.)")
     if not a.no_record:
         record.prepend_block(RESULTS, "# zalesak-vs-openfoam (scripts/bench/zalesak-vs-openfoam), newest first", OUT, ROOT)
 

@@ -3,7 +3,7 @@
 #include "vofdem/base/Runtime.hpp"
 #include "vofdem/sim/ModuleAccess.hpp"
 
-static const char help[] = "vofdem: particle-laden flows with free surfaces, heat transfer and melting.\n"
+static const char help[] = "vofdem: particles (DEM) in incompressible flow with a free surface (VOF), coupled semi-resolved.\n"
                            "Usage: mpiexec -n N vofdem -options_file_yaml scene.yaml [-option value ...]\n\n";
 
 static PetscErrorCode Run() {

@@ -15,7 +15,7 @@ const char *StageReason(Stage s) {
     "the particles' volume fraction and forces reach the fluid's cells before it steps (F1, F5)",
     "forces of the current interface (surface tension, Marangoni) for the fluid's predictor (F2)",
     "the fluid's predictor and projection with the particles' eps and sources (F1, F2)",
-    "the interface moves with the projected, divergence-free velocity of the step just taken",
+    "what the fluid carries (the interface, a scalar) moves with the projected velocity of the step just taken",
     "density and viscosity of the moved interface, for the particles' read and the next step",
     "the particles read kernel averages of the new fluid: drag, buoyancy, added mass, capillarity (K1, P1)",
     "the particles' sub-steps in the fluid they read (the DEM's own stable step)",

@@ -1,5 +1,5 @@
 // The particles' wettability at the free surface (Coupling.hpp, -coupling_contact_angle; issue 9,
-// PHYSICS.md P1): Princen's capillary force (Capillary.hpp) from the kernel averages of the liquid
+// docs/physics.md P1): Princen's capillary force (Capillary.hpp) from the kernel averages of the liquid
 // fraction alpha and of its gradient at each particle. The fluid receives -F with the other explicit
 // forces (F5, Coupling::Project).
 #include "vofdem/coupling/Coupling.hpp"

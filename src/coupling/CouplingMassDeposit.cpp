@@ -1,4 +1,4 @@
-// The fluid's reaction to explicit particle forces, shared by face mass (Coupling.hpp, PHYSICS.md F5).
+// The fluid's reaction to explicit particle forces, shared by face mass (Coupling.hpp, docs/physics.md F5).
 #include "vofdem/coupling/Coupling.hpp"
 #include "vofdem/grid/FaceProperties.hpp"
 

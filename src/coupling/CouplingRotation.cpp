@@ -1,5 +1,5 @@
 // The fluid's rotation at the particles and the forces that come from it (Coupling.hpp step 3; RotationLaws.hpp,
-// PHYSICS.md P1, K2): the velocity derivatives on the grid, and per particle the Magnus lift and the rotational drag.
+// docs/physics.md P1, K2): the velocity derivatives on the grid, and per particle the Magnus lift and the rotational drag.
 #include "vofdem/coupling/Coupling.hpp"
 
 #include <cmath>

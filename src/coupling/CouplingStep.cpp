@@ -68,7 +68,7 @@ PetscErrorCode Coupling::Project(PetscReal dt) {
   last_.particleVolume = all[0];
   for (int d = 0; d < 3; ++d) last_.dragSum[d] = all[1 + d];
   PetscCall(VecSum(volume_, &last_.projectedVolume));
-  // eps = 1 - particle volume / cell volume, floored (PHYSICS.md F: eps is the cell's fluid fraction).
+  // eps = 1 - particle volume / cell volume, floored (docs/physics.md F: eps is the cell's fluid fraction).
   {
     Vec                e = flow_->FluidFraction();
     PetscScalar       *ea, *ca = nullptr;
@@ -314,7 +314,7 @@ PetscErrorCode Coupling::Average(PetscReal dt) {
   // eps at the particle: by default the plain kernel average, so that eps times the (eps-weighted) velocity
   // read is the kernel average of the superficial velocity eps u, as the drag laws assume; the eps-weighted
   // average of K1 reads eps high by var(eps)/eps and at a bed's edges by more (ex34, -coupling_fraction_average).
-  // The local mixture's density and viscosity are eps-weighted (K1; PHYSICS.md F: with a free surface rho
+  // The local mixture's density and viscosity are eps-weighted (K1; docs/physics.md F: with a free surface rho
   // and mu follow alpha). One pass for the three.
   {
     // With the capillary force, also the liquid fraction alpha, unweighted: F of Capillary.hpp is the

@@ -58,7 +58,7 @@ void SumShiftedRows(PetscScalar *out, const PetscScalar *const *rows, const Pets
 std::vector<PetscReal> GaussianFilter::Taps(PetscReal h, PetscReal spread) {
   if (!(spread > 0)) return {1.0};
   // Taps to 3 b: with the tent's h the deposit reaches about as far as the smooth kernel itself, whose weight ends at
-  // its cut-off rc = sqrt(13) sigma = 3.6 sigma (PHYSICS.md K1); 4 b (as before 2026-11-26) kept tails beyond that,
+  // its cut-off rc = sqrt(13) sigma = 3.6 sigma (docs/physics.md K1); 4 b (as before 2026-11-26) kept tails beyond that,
   // at a third more taps. The variance is matched exactly either way.
   const PetscInt         R = std::max((PetscInt)1, (PetscInt)std::ceil(3 * std::sqrt(spread) / h));
   std::vector<PetscReal> g(2 * R + 1);

@@ -1,4 +1,4 @@
-// Magnus lift and rotational drag of one particle (RotationLaws.hpp; PHYSICS.md P1).
+// Magnus lift and rotational drag of one particle (RotationLaws.hpp; docs/physics.md P1).
 #include "vofdem/coupling/RotationLaws.hpp"
 
 #include <cmath>

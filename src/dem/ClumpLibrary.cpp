@@ -1,4 +1,4 @@
-// Clump shapes for insertion (ClumpLibrary.hpp, PHYSICS.md P10).
+// Clump shapes for insertion (ClumpLibrary.hpp, docs/physics.md P10).
 #include "vofdem/dem/ClumpLibrary.hpp"
 
 #include "vofdem/base/Runtime.hpp"

@@ -1,4 +1,4 @@
-// Rigid multi-sphere clumps (Clumps.hpp, PHYSICS.md P10).
+// Rigid multi-sphere clumps (Clumps.hpp, docs/physics.md P10).
 #include "vofdem/dem/Clumps.hpp"
 
 #include "vofdem/base/Runtime.hpp"

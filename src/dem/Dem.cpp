@@ -285,7 +285,7 @@ PetscErrorCode Dem::SetFluidLubrication(PetscReal uniform) {
 // members move with their clump, Clumps::Kick). Coupled to
 // a fluid (Coupling.hpp), the other fluid forces join F and the drag K (u - v) is taken implicitly,
 // v' = (v + (h K/m) u)/(1 + h K/m) (stable for any response time m/K); its impulse is summed for the
-// fluid's reaction (PHYSICS.md F5), so the fluid gets exactly what the particles got.
+// fluid's reaction (docs/physics.md F5), so the fluid gets exactly what the particles got.
 // The added mass m_a = C_vm rho_f V (P1, f_vm = m_a (Du/Dt - dv/dt)) is taken implicitly: its -m_a dv/dt
 // part moves to the left, (m + m_a) dv/dt = F + ..., and the coupling puts m_a Du/Dt into the fluid
 // force; the fluid gets -f_vm as well (F5). Without it (m_a = 0) the kick is the one above.

@@ -6,7 +6,7 @@
 // force evaluation: a settling pile's touching particles cost several times a falling one's (D7's
 // tungsten pile on 2 ranks, by counts alone: 6.0 s of forces on the pile's rank, 0.5 s on the other). The grid then rebuilds its DMDAs, the swarm takes the new
 // vertex DMDA, the halo the new rank boxes, and every particle goes straight to its new owner.
-// Coupled scenes must not do this: there the fluid cells decide the decomposition (ARCHITECTURE.md).
+// Coupled scenes must not do this: there the fluid cells decide the decomposition (docs/architecture.md).
 #include "vofdem/dem/Dem.hpp"
 
 #include "vofdem/base/Options.hpp"

@@ -4,7 +4,7 @@
 // On the rank count that saved, Load puts back each rank's particles in memory order, the neighbour
 // pairs in their order with springs and touching flags, the wall candidates, the halo's neighbour
 // ranks and send lists (so ghosts return in the same order), the per-rank contact statistics and the
-// counters: the continued run is bitwise the uninterrupted one (notes/petsc-3.18.md, "Determinism
+// counters: the continued run is bitwise the uninterrupted one (docs/petsc-notes.md, "Determinism
 // and restart"). On another rank count each rank keeps the saved particles it owns, the springs of
 // touching contacts are carried by id pair, and one rebuild makes the lists and ghosts anew;
 // trajectories then agree to round-off over short horizons.

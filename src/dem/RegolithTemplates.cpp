@@ -1,4 +1,4 @@
-// The four lunar-regolith simulant shapes of seed 002 (PHYSICS.md S, P10) as built-in clump templates.
+// The four lunar-regolith simulant shapes of seed 002 (docs/physics.md S, P10) as built-in clump templates.
 //
 // A reading: seed 002 fig. 2 is an image only; its text says each simulant grain is "one base sphere
 // plus several satellite spheres", four shapes in equal shares. Here the four shapes are the base

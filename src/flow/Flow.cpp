@@ -25,7 +25,7 @@ PetscErrorCode Flow::SetFromOptions(const Grid &grid) {
   PetscFunctionBeginUser;
   grid_         = &grid;
   MPI_Comm comm = grid.Comm();
-  PetscOptionsBegin(comm, "flow_", "Flow: incompressible volume-averaged Navier-Stokes (PHYSICS.md F1, F2)", "Flow");
+  PetscOptionsBegin(comm, "flow_", "Flow: incompressible volume-averaged Navier-Stokes (docs/physics.md F1, F2)", "Flow");
   {
     OptionReader opt(PetscOptionsObject);
     PetscCall(opt.Real("-density", "Fluid density (uniform; the VOF module makes it a field)", "kg/m^3", &density_, RealRange::Positive()));
@@ -67,7 +67,7 @@ PetscErrorCode Flow::SetFromOptions(const Grid &grid) {
     const FlowBoundaryType t = bc_.Face(f).type;
     if (t != FlowBoundaryType::Periodic) PetscCall(pressure_.SetBoundary(f, t == FlowBoundaryType::Outflow ? PressureBoundary::Dirichlet : PressureBoundary::Neumann, 0));
   }
-  // hypre's structured PFMG was 6x faster than tuned BoomerAMG on these grids (notes/petsc-3.18.md)
+  // hypre's structured PFMG was 6x faster than tuned BoomerAMG on these grids (docs/petsc-notes.md)
   // but wants even cell counts: it is the default where every count is even, or one across z (a 2-D case:
   // 1.3x faster on the rising bubble at h = 1/80, the same digits; not one across x or y, which the
   // hyprestruct matrix cannot take, PressureSolver.cpp).

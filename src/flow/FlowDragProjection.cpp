@@ -1,5 +1,5 @@
 // The projection's coefficient when the predictor takes a linear drag implicitly (Flow::SetFaceRelaxation,
-// PHYSICS.md F5): the velocity correction of a face that relaxes at rate c is
+// docs/physics.md F5): the velocity correction of a face that relaxes at rate c is
 // u = u* - dt/(1 + dt c) (1/rho)_f G phi, since the drag acts on the correction as on the rest of the
 // velocity. A projection that ignores the 1/(1 + dt c) asks the pressure for only a 1/(1 + dt c) share
 // of the gradient that balances the drag each step, so a dense bed (dt c ~ 100) builds its pressure

@@ -1,5 +1,5 @@
 // The momentum predictor of Flow (Flow.hpp): explicit terms at time level n and the provisional
-// velocity u*. PHYSICS.md (F2); discretisation on the MAC grid described in Flow.hpp.
+// velocity u*. docs/physics.md (F2); discretisation on the MAC grid described in Flow.hpp.
 #include "vofdem/flow/Flow.hpp"
 #include "vofdem/grid/FaceProperties.hpp"
 

@@ -1,5 +1,5 @@
 // The projection of Flow (Flow.hpp): -div((eps/rho) G phi) = -div(eps u*)/dt with PressureSolver,
-// then u = u* - dt (1/rho)_f G phi and p += phi. PHYSICS.md (F1): div(eps U) = -d(eps)/dt, the rate
+// then u = u* - dt (1/rho)_f G phi and p += phi. docs/physics.md (F1): div(eps U) = -d(eps)/dt, the rate
 // from the coupling's change of eps over the step (SetFluidFractionChange; 0 without particles).
 #include "vofdem/flow/Flow.hpp"
 #include "vofdem/grid/FaceProperties.hpp"

@@ -1,5 +1,5 @@
 // -flow_viscous_transpose implicit (and auto while mu varies): the whole viscous stress div(eps mu (grad U + grad U^T)) in the Crank-Nicolson
-// solve (Flow.hpp, PHYSICS.md F2). The transpose part couples the three velocity components, so they are solved
+// solve (Flow.hpp, docs/physics.md F2). The transpose part couples the three velocity components, so they are solved
 // together: per component d the rows of ViscousSolver's matrix A_d = (eps rho)_f/dt - 1/2 div(eps mu grad u_d) (its
 // boundary and blocked rows included), less 1/2 T_d(U), T_d = div(eps mu grad U^T)_d at the interior faces, applied
 // without a matrix. Why: explicit, T limits the step by its Gershgorin bound (FlowViscousLimit.cpp), which for metal in

@@ -146,7 +146,7 @@ PetscErrorCode PressureSolver::SetFromOptions() {
   PetscFunctionReturn(0);
 }
 
-// notes/petsc-3.18.md: tuned BoomerAMG (2-3x faster than hypre's defaults, 12-17 CG iterations for
+// docs/petsc-notes.md: tuned BoomerAMG (2-3x faster than hypre's defaults, 12-17 CG iterations for
 // a 1e-8 reduction at density ratios 1 to 8000); only where the user chose BoomerAMG and gave none.
 PetscErrorCode PressureSolver::InsertBoomerAMGDefaults() {
   char      type[64] = "";
@@ -248,7 +248,7 @@ PetscErrorCode PressureSolver::SetUp() {
 }
 
 // -div(beta grad p) by finite volumes, divided by the cell volume: per face the flux
-// beta_f (p_C - p_N)/h^2 (PHYSICS.md F1: the projection's div(eps U) = ... with U = -(eps/rho) grad p dt).
+// beta_f (p_C - p_N)/h^2 (docs/physics.md F1: the projection's div(eps U) = ... with U = -(eps/rho) grad p dt).
 PetscErrorCode PressureSolver::Assemble(Vec beta) {
   const PetscScalar ***b, ***bOld;
   PetscScalar       ***bd;

@@ -15,7 +15,7 @@ namespace vofdem {
 PetscErrorCode Vof::SetFromOptions(const Grid &grid) {
   PetscFunctionBeginUser;
   grid_ = &grid;
-  PetscOptionsBegin(grid.Comm(), "vof_", "VOF: volume fraction alpha of the heavy phase, PLIC, split geometric advection (PHYSICS.md F1b, F4)", "Vof");
+  PetscOptionsBegin(grid.Comm(), "vof_", "VOF: volume fraction alpha of the heavy phase, PLIC, split geometric advection (docs/physics.md F1b, F4)", "Vof");
   {
     OptionReader             opt(PetscOptionsObject);
     auto name = [](VofNormals v) { return std::string(v == VofNormals::Height ? "height" : v == VofNormals::Elvira ? "elvira" : "youngs"); };
@@ -33,7 +33,7 @@ PetscErrorCode Vof::SetFromOptions(const Grid &grid) {
     PetscCall(opt.Real("-density", "Density of phase 1 (alpha = 1, the heavy phase); phase 0 has -flow_density", "kg/m^3", &density_, RealRange::Positive()));
     PetscCall(opt.Real("-viscosity", "Dynamic viscosity of phase 1; phase 0 has -flow_viscosity", "Pa s", &viscosity_, RealRange::Positive()));
     PetscCall(opt.Real("-surface_tension", "Surface tension coefficient sigma (0: none); height-function curvature, balanced-force face force", "N/m", &sigma_, RealRange::NonNegative()));
-    PetscCall(opt.Real("-dsigma_dT", "Temperature coefficient of the surface tension (Marangoni force, PHYSICS.md F2)", "N/(m K)", &dsigmadT_));
+    PetscCall(opt.Real("-dsigma_dT", "Temperature coefficient of the surface tension (Marangoni force, docs/physics.md F2)", "N/(m K)", &dsigmadT_));
     PetscCall(opt.RealVector("-temperature_gradient", "Prescribed uniform temperature gradient (T = T0 + G.(x - lower corner)) for the Marangoni force until the energy module exists", "K/m", gradT_, 3));
     std::vector<std::string> mom = {momentum_ == VofMomentum::Consistent ? "consistent" : "advective"};
     PetscCall(opt.NameList("-momentum",

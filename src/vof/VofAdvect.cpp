@@ -1,4 +1,4 @@
-// Reconstruction and split geometric advection of the VOF module (Vof.hpp; PHYSICS.md F1b, F4).
+// Reconstruction and split geometric advection of the VOF module (Vof.hpp; docs/physics.md F1b, F4).
 #include "vofdem/vof/Vof.hpp"
 
 #include "vofdem/vof/Plic.hpp"
@@ -39,7 +39,7 @@ const double kFull = 1 - 1e-8;
 const int kHalf = 3;  // height-function columns of 2 kHalf + 1 = 7 cells
 
 // Sum of alpha over the 7-cell column along d through q + o (o a transverse offset); false unless the
-// column is a clean transition: its fluid end (side -sign) full and its other end empty (PHYSICS.md F4:
+// column is a clean transition: its fluid end (side -sign) full and its other end empty (docs/physics.md F4:
 // heights only where the interface is resolved).
 bool ColumnSum(const CellArray &a, const PetscInt q[3], int d, int sign, const PetscInt o[3], double *H) {
   PetscInt p[3] = {q[0] + o[0], q[1] + o[1], q[2] + o[2]};

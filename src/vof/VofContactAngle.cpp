@@ -1,4 +1,4 @@
-// Static contact angles of the VOF module on the box faces (Vof.hpp; PHYSICS.md F4: normals and
+// Static contact angles of the VOF module on the box faces (Vof.hpp; docs/physics.md F4: normals and
 // height-function curvature).
 //
 // Method (Afkhami & Bussmann 2008, Int. J. Numer. Meth. Fluids 57: 453-472, in 2-D; 2009, 61: 827-847,

@@ -1,4 +1,4 @@
-// Particles in the VOF module's fluid (Vof.hpp SetFluidFraction; PHYSICS.md F1b): the ghosted copies of
+// Particles in the VOF module's fluid (Vof.hpp SetFluidFraction; docs/physics.md F1b): the ghosted copies of
 // eps and of its change over the step that the sweeps read.
 #include "vofdem/vof/Vof.hpp"
 

@@ -1,4 +1,4 @@
-// Mass-consistent momentum transport of the VOF module (Vof.hpp AdvectWithMomentum; PHYSICS.md F2).
+// Mass-consistent momentum transport of the VOF module (Vof.hpp AdvectWithMomentum; docs/physics.md F2).
 //
 // Why: at density ratios of 1000-8000 a velocity advected on its own (the flow's -(U.grad)U) and a
 // density moved by the geometric VOF fluxes disagree where the interface crosses a face: the heavy

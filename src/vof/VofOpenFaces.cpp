@@ -1,5 +1,5 @@
 // Open faces of the VOF module (Vof.hpp): phase 1 entering through inflow faces and either phase
-// leaving (or coming back) through outflow faces (issue 8; PHYSICS.md F4).
+// leaving (or coming back) through outflow faces (issue 8; docs/physics.md F4).
 //
 // What enters: -vof_bc_<face>_alpha A on an inflow face is the fraction of phase 1 in the fluid that
 // the flow's inflow velocity brings in (default 0: phase 0 enters); with -vof_bc_<face>_alpha_band

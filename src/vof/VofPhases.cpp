@@ -1,5 +1,5 @@
 // The two phases of the VOF module (Vof.hpp): the initial fraction from -vof_boxes/-vof_spheres, and
-// the mixture properties the flow reads (PHYSICS.md F: rho = alpha rho_1 + (1 - alpha) rho_0, likewise mu).
+// the mixture properties the flow reads (docs/physics.md F: rho = alpha rho_1 + (1 - alpha) rho_0, likewise mu).
 #include "vofdem/vof/Vof.hpp"
 
 #include "vofdem/flow/Flow.hpp"

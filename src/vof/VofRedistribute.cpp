@@ -1,4 +1,4 @@
-// Boundedness of alpha with particles (Vof.hpp; PHYSICS.md F1b). With eps varying in space and time the
+// Boundedness of alpha with particles (Vof.hpp; docs/physics.md F1b). With eps varying in space and time the
 // split sweeps on m = eps alpha can leave a cell slightly over-full (alpha > 1) or over-drained (alpha < 0):
 // the Weymouth-Yue term keeps only the cells that were full at the step's start exactly full. Clipping would
 // lose that liquid; instead each cell's excess (or deficit) is handed to its 26 neighbours in proportion to

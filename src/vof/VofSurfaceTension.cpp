@@ -1,9 +1,9 @@
-// Curvature and balanced-force surface tension of the VOF module (Vof.hpp; PHYSICS.md F2, F4).
+// Curvature and balanced-force surface tension of the VOF module (Vof.hpp; docs/physics.md F2, F4).
 //
 // Curvature from height functions (Popinet 2009, J. Comput. Phys. 228): in a cell near the interface,
 // 3 x 3 (in 3-D; 3 in 2-D) columns along the direction d most nearly normal to the interface, each from
 // a full cell to an empty one within 4 cells, give heights H; kappa = -[H_aa (1 + H_b^2) + H_bb (1 + H_a^2) - 2 H_ab H_a H_b] / (1 + H_a^2 + H_b^2)^(3/2)
-// with centred differences, positive for a drop of phase 1 (PHYSICS.md F4: kappa = -div n, n = grad
+// with centred differences, positive for a drop of phase 1 (docs/physics.md F4: kappa = -div n, n = grad
 // alpha / |grad alpha|). Directions are tried in order of |n_d|; every column must have its ends and the central column's interface must lie
 // within a cell of this one. Where none is, the mean of the neighbours'
 // height-function curvatures (3 x 3 x 3 block) stands in; where there is none either, the cell has no
@@ -168,7 +168,7 @@ PetscErrorCode Vof::SurfaceTension(Flow &flow) {
   }
   PetscCall(DMGlobalToLocal(da_, kappa_, INSERT_VALUES, kappaLocal_));
   // 3. Face forces sigma(T_f) kappa_f (alpha_R - alpha_L) / h_d on the owned faces, and the Marangoni
-  // force dsigma/dT (I - n n).grad T |grad alpha| (PHYSICS.md F2) with the prescribed temperature
+  // force dsigma/dT (I - n n).grad T |grad alpha| (docs/physics.md F2) with the prescribed temperature
   // T = T0 + G.(x - lower corner) (-vof_temperature, -vof_temperature_gradient): grad alpha at the face
   // from the jump across it and, across, the mean of the two cells' centred differences.
   const PetscReal *lower = grid_->Lower();

@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""F2 (VERIFICATION.md): centreline velocity profiles of the quasi-2-D lid-driven cavity against the
+"""F2 (docs/verification.md): centreline velocity profiles of the quasi-2-D lid-driven cavity against the
 published tables in test/flow/data/: u on the vertical centreline and v on the horizontal centreline,
 at the 17 stations of Ghia, Ghia & Shin 1982. Re 100 is checked against Ghia et al.; Re 1000 against
 Botella & Peyret 1998 (Ghia's Re 1000 columns with --reference ghia, for comparison only).

@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Observed order of convergence from errors on a ladder of grids (F1, F5, E1 ... in VERIFICATION.md).
+"""Observed order of convergence from errors on a ladder of grids (F1, F5, E1 ... in docs/verification.md).
 
 Input (a file, or standard input when the file is '-' or left out), either
   - lines containing `grid N error E` anywhere (other text on the line and other lines are ignored),

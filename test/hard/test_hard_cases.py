@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Hard cases of VERIFICATION.md ('numerical stability'): each must run its full length without NaN, negative
+"""Hard cases of docs/verification.md ('numerical stability'): each must run its full length without NaN, negative
 fractions or particle loss, and report the binding time-step limit. Two of them here, each on 1 and 2 ranks:
 
   metal-gas: two molten-metal cylinders (rho 8000 against a gas of 1 kg/m^3, mu 6e-3 / 2e-5 Pa s, sigma 1.8 N/m)

@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""D6, long horizon (VERIFICATION.md): the same scene on 1, 2 and 4 ranks, run long enough that the
+"""D6, long horizon (docs/verification.md): the same scene on 1, 2 and 4 ranks, run long enough that the
 trajectories have decorrelated, must give the same bulk statistics within 3 sigma of a 1-rank
 ensemble of seeds.
 

@@ -25,10 +25,26 @@ ALLOWED = {
     "examples": {"base", "io", "grid", "dem", "flow", "vof", "coupling", "analysis", "sim"},
 }
 INCLUDE = re.compile(r'^\s*#\s*include\s*"vofdem/([A-Za-z0-9_]+)/')
+# A module added later (a vofdem_add_module line of CMakeLists.txt naming a folder not above) is a physics
+# module: it may build on base, io, grid and the other physics modules, never on coupling or the floors above;
+# sim, app and the examples may include it.
+NEW_MODULE = {"base", "io", "grid", "dem", "flow", "vof"}
+
+
+def floors(root):
+    allowed = {k: set(v) for k, v in ALLOWED.items()}
+    cmake = os.path.join(root, "CMakeLists.txt")
+    names = re.findall(r"^\s*vofdem_add_module\((\w+)\)", open(cmake).read(), re.M) if os.path.exists(cmake) else []
+    for name in names:
+        if name not in allowed:
+            allowed[name] = set(NEW_MODULE)
+            for top in ("sim", "app", "examples"):
+                allowed[top].add(name)
+    return allowed
 
 
 def check(root):
-    problems = []
+    problems, ALLOWED = [], floors(root)
     for top in ("src", os.path.join("include", "vofdem")):
         base = os.path.join(root, top)
         if not os.path.isdir(base):

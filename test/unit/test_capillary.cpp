@@ -1,4 +1,4 @@
-// The pieces of the capillary force (Capillary.hpp; PHYSICS.md P1, -coupling_contact_angle): the kernel's
+// The pieces of the capillary force (Capillary.hpp; docs/physics.md P1, -coupling_contact_angle): the kernel's
 // interface marginal F against closed forms written from the kernels' definitions (Kernel.hpp), its
 // symmetry and inversion, and Princen's force at the checks of Capillary.hpp.
 #include "vofdem/coupling/Capillary.hpp"

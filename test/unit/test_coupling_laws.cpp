@@ -1,4 +1,4 @@
-// Drag and heat-transfer laws of the coupling (DragLaws.hpp; PHYSICS.md F6, F9, F10) against values
+// Drag and heat-transfer laws of the coupling (DragLaws.hpp; docs/physics.md F6, F9, F10) against values
 // computed separately from the published formulas (a few lines of Python written from the papers'
 // equations, not from this code: d = 1 mm, water rho 1000 kg/m^3, mu 1e-3 Pa s, slip 0.05 m/s), their
 // limits (Stokes drag as the slip vanishes, the single sphere as eps -> 1), and the kernels

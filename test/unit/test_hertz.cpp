@@ -1,4 +1,4 @@
-// Hertz normal contact (PHYSICS.md P3) checked against a direct integration of the impact ODE:
+// Hertz normal contact (docs/physics.md P3) checked against a direct integration of the impact ODE:
 // the formulas must give the elastic contact time of Hertz theory and the input restitution.
 #include "vofdem/dem/HertzMindlin.hpp"
 

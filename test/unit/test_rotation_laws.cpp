@@ -1,4 +1,4 @@
-// Magnus lift and rotational drag (RotationLaws.hpp; PHYSICS.md P1) against values computed separately from the
+// Magnus lift and rotational drag (RotationLaws.hpp; docs/physics.md P1) against values computed separately from the
 // papers' formulas (Python, written from the equations as Loth & Dorgan 2009 quote them, not from this code):
 // Oesterle & Bui Dinh (1998) C_L = 0.45 + (Re_r/Re_p - 0.45) exp(-0.05684 Re_r^0.4 Re_p^0.3), Rubinow & Keller (1961)
 // C_L = Re_r/Re_p, i.e. F = pi a^3 rho Omega x (v - u); torque -pi mu d^3 Omega (Rubinow & Keller), times

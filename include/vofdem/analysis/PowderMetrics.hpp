@@ -1,4 +1,4 @@
-// Powder-bed metrics of a set of spheres (seeds 001 and 002, PHYSICS.md section S), serial and free
+// Powder-bed metrics of a set of spheres (seeds 001 and 002, docs/physics.md section S), serial and free
 // of PETSc objects so that unit tests can build packings with known answers:
 //  - packing density of a box window and of vertical sample rings (seed 002's "cutting rings"), with
 //    the part of every sphere inside the region (Geometry.hpp), periodic images included, and the

@@ -1,4 +1,4 @@
-// The capillary force of a wetted sphere at a free surface (issue 9; PHYSICS.md P1, the particle's
+// The capillary force of a wetted sphere at a free surface (issue 9; docs/physics.md P1, the particle's
 // wettability, -coupling_contact_angle): pure functions, unit-tested on their own (test_capillary.cpp);
 // the coupling applies them at each particle (CouplingCapillary.cpp).
 //

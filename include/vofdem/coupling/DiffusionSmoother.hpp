@@ -1,4 +1,4 @@
-// Diffusion-based smoothing between particles and the MAC grid (PHYSICS.md K1, K3; Sun & Xiao 2015,
+// Diffusion-based smoothing between particles and the MAC grid (docs/physics.md K1, K3; Sun & Xiao 2015,
 // J. Comput. Phys. 299, "Diffusion-based coarse graining in hybrid continuum-discrete solvers"): the
 // alternative to kernel sums where a kernel's support spans many cells.
 //  - Deposit (K3): each particle's value goes to the 2x2x2 nearest points of the location with the

@@ -1,5 +1,5 @@
 // A separable discrete Gaussian on one staggered location of the grid: the explicit alternative to the
-// diffusion in DiffusionSmoother (PHYSICS.md K1, K3). v <- G_z G_y G_x v, each G_e a 1-D convolution
+// diffusion in DiffusionSmoother (docs/physics.md K1, K3). v <- G_z G_y G_x v, each G_e a 1-D convolution
 // with 2 R_e + 1 taps g_t ~ exp(-(t h_e)^2 / (2 b^2)), normalised to sum 1, b chosen so that the taps'
 // discrete variance sum_t (t h_e)^2 g_t is exactly the spread asked for (variances add under
 // convolution, so tent deposit + filter has the kernel's variance to round-off, not only on average

@@ -1,4 +1,4 @@
-// The kernels of the semi-resolved coupling (PHYSICS.md K1-K3): the weight a grid point at distance
+// The kernels of the semi-resolved coupling (docs/physics.md K1-K3): the weight a grid point at distance
 // r from a particle gets, for averaging the fluid at the particle (K1, K2) and for projecting the
 // particle's volume, force and heat to the grid (K3). Pure functions, unit-tested on their own.
 //  - Smooth (default): k(r) = (1 - r^2/rc^2)^4 for r < rc, rc = sqrt(8) H. It reaches zero at rc with
@@ -11,11 +11,11 @@
 //  - Divided: no kernel; the particle's volume divided among the cells it overlaps: 32 cubes of side R/2 and
 //    equal volume (centres inside the sphere), each split among the cells by its overlap with them, so eps is
 //    continuous in the particle's position (KernelAverager handles it; CFDEM's "divided" void fraction, whose
-//    sample points go whole to a cell, PHYSICS.md K3).
+//    sample points go whole to a cell, docs/physics.md K3).
 //    Its width H is the particle's radius: the farthest the volume reaches.
 //  - Linear: no kernel; the tent (cloud-in-cell) weight prod_e (1 - |x_e - x_J,e|/h_e) to the 2x2x2
 //    nearest points (KernelAverager handles it): the compact weight of the diffusion smoothing
-//    (DiffusionSmoother.hpp, PHYSICS.md K1).
+//    (DiffusionSmoother.hpp, docs/physics.md K1).
 #pragma once
 
 #include <cmath>
@@ -58,12 +58,12 @@ inline double Weight(Shape s, double r2, double H, double rc) {
 }
 
 // The velocity a particle reads from its own force, per unit force and viscosity (m^-1), when the
-// force is projected with a kernel and the fluid averaged with the same kernel (PHYSICS.md K1b):
+// force is projected with a kernel and the fluid averaged with the same kernel (docs/physics.md K1b):
 // u_self = C F / mu along F. From the steady Oseen equations for a fluid streaming past at the slip
 // speed W (the Stokes limit at W = 0), with g^ the kernel's Fourier transform (normalised to 1):
 //   C = 1/(4 pi^2) int_0^inf |g^(k)|^2 J(W/(nu k)) dk,  J(a) = int_-1^1 (1 - c^2)/(1 + a^2 c^2) dc,
 // J(0) = 4/3. In Stokes flow and for a Gaussian of width H, C = 1/(6 pi^(3/2) H): with Stokes drag
-// 3 pi mu d W, u_self/W = 0.282 d/H (PHYSICS.md's 0.28 d/H). The Oseen factor J matters as soon as
+// 3 pi mu d W, u_self/W = 0.282 d/H (docs/physics.md's 0.28 d/H). The Oseen factor J matters as soon as
 // Re_H = W H/nu is of order one: at Re_H = 8 (a 1 mm sphere settling at Re 5.5 with H = 1.5 d) the
 // Stokes value overestimates the disturbance several times over.
 // C scales as 1/H at fixed Re_H: the table holds H C at the given Re_H values (quadrature).

@@ -1,4 +1,4 @@
-// Kernel averaging and projection between particles and the MAC grid (PHYSICS.md K1-K3).
+// Kernel averaging and projection between particles and the MAC grid (docs/physics.md K1-K3).
 //  - Deposit (K3): a particle's value (volume, a force component, heat) is shared among the grid
 //    points of one staggered location (cells, or the faces of one velocity component) within the
 //    kernel's cut-off, with weights normalised over the points that take part, so the grid total
@@ -11,7 +11,7 @@
 // index box around (x - lower)/h. The local vectors come from DMDAs with the staggered locations'
 // ownership ranges and a BOX ghost layer wide enough for the cut-off plus the distance a particle
 // may stray outside its rank's box between migrations; these wide DMDAs carry vectors only, never
-// matrices (notes/petsc-3.18.md). Unresolved mode: the cell that contains the particle (for faces,
+// matrices (docs/petsc-notes.md). Unresolved mode: the cell that contains the particle (for faces,
 // the two faces of that cell along the component), CFD-DEM's "centre" limit.
 #pragma once
 

@@ -1,4 +1,4 @@
-// The fluid forces that come from rotation (PHYSICS.md P1 f_Magnus; -coupling_lift, -coupling_rotational_drag), as plain
+// The fluid forces that come from rotation (docs/physics.md P1 f_Magnus; -coupling_lift, -coupling_rotational_drag), as plain
 // functions of one particle. Omega = omega_p - curl(u)/2 is the particle's rotation relative to the local fluid's
 // (u the kernel-averaged velocity, K1; its curl the kernel average of the grid's velocity gradient, K2), and
 // w = v - u its velocity relative to the fluid. Reynolds numbers (Loth & Dorgan 2009, Environ. Fluid Mech. 9:187):

@@ -1,4 +1,4 @@
-// The particle-grid maps of the coupling (PHYSICS.md K1-K3) by one of three methods
+// The particle-grid maps of the coupling (docs/physics.md K1-K3) by one of three methods
 // (-coupling_smoothing): kernel sums over the cells of each particle's support (KernelAverager.hpp), or
 // a compact deposit followed by a grid smoothing with the kernel's variance (DiffusionSmoother.hpp):
 // diffusion in pseudo-time, or a separable discrete Gaussian (GaussianFilter.hpp). The kernel's cost per particle grows as (cut-off/cell)^3, the diffusion's is per cell and

@@ -1,4 +1,4 @@
-// Clump shapes for insertion (PHYSICS.md P10): templates given in units of the base sphere's radius
+// Clump shapes for insertion (docs/physics.md P10): templates given in units of the base sphere's radius
 // (the base sphere first, at the origin, radius 1), their mass properties computed ONCE per template
 // by ClumpTemplate::Compute at unit size, and scaled for each inserted clump: a clump of
 // volume-equivalent radius r_eq (the radius of the sphere of equal volume) is the template scaled by

@@ -1,4 +1,4 @@
-// Multi-sphere clumps (PHYSICS.md P10): a rigid body made of overlapping spheres. A template is the
+// Multi-sphere clumps (docs/physics.md P10): a rigid body made of overlapping spheres. A template is the
 // list of its spheres in a body frame; its mass properties are those of the union of the spheres
 // (overlaps counted once), computed once per template by ClumpTemplate::Compute:
 //   x: Gauss-Legendre on the pieces between the spheres' x extents x_k +- r_k;

@@ -1,4 +1,4 @@
-// Rigid multi-sphere clumps (PHYSICS.md P10): the member spheres of a clump (same clump id, all on
+// Rigid multi-sphere clumps (docs/physics.md P10): the member spheres of a clump (same clump id, all on
 // one rank: ParticleSwarm::Migrate moves a clump whole) move as one rigid body.
 //
 // Each member carries the body's state in the swarm field "rigid" (kRigidWidth reals): the

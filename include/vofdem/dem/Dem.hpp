@@ -1,5 +1,5 @@
 // The particle module (-physics dem): spheres of several types (Materials.hpp) on a DMSwarm, gravity,
-// Hertz-Mindlin or linear contacts with damping, tangential springs and Coulomb friction (PHYSICS.md
+// Hertz-Mindlin or linear contacts with damping, tangential springs and Coulomb friction (docs/physics.md
 // P3, P4), rolling resistance (P5), JKR, SJKR or van der Waals adhesion (P6, P7), lubrication (P8),
 // against each other, the box faces and the walls of -dem_walls (Walls.hpp); velocity Verlet with a
 // Rayleigh-time step (P9); Verlet lists with a skin, ghost particles across ranks (Halo.hpp),

@@ -1,5 +1,5 @@
 // Ghost particles: copies of other ranks' particles that lie within a cut-off of this rank's box,
-// kept in our own arrays (not swarm points: notes/petsc-3.18.md). Build() chooses what to send to
+// kept in our own arrays (not swarm points: docs/petsc-notes.md). Build() chooses what to send to
 // whom (at neighbour-list rebuilds, after migration) and sends everything a contact needs;
 // Refresh() sends the moving state of the same particles in the same order on the other steps.
 // In periodic directions (-grid_periodic) a rank also receives the periodic images of particles

@@ -1,5 +1,5 @@
-// Hertz-Mindlin normal contact (PHYSICS.md P3), the Rayleigh time step (P9) and the elastic Hertz
-// contact duration used to verify them (VERIFICATION.md D1). Pure inline functions: they run inside
+// Hertz-Mindlin normal contact (docs/physics.md P3), the Rayleigh time step (P9) and the elastic Hertz
+// contact duration used to verify them (docs/verification.md D1). Pure inline functions: they run inside
 // the per-contact loops and are unit-tested on their own.
 #pragma once
 
@@ -220,7 +220,7 @@ inline void ProjectKeepingLength(PetscReal s[3], const PetscReal n[3]) {
 // v_t dt. Coulomb's law holds for the whole tangential force, spring plus damping: when
 // |F_t| > mu max(F_n, 0) the force is scaled down to that limit and the spring reset to carry all of it,
 // xi = -F_t / S_t. Two common alternatives failed the oblique impact in gross sliding
-// (VERIFICATION.md D2): resetting the spring to -(F_t + gamma_t v_t)/S_t (LAMMPS) leaves it pointing
+// (docs/verification.md D2): resetting the spring to -(F_t + gamma_t v_t)/S_t (LAMMPS) leaves it pointing
 // backwards early in a contact, where gamma_t v_t alone exceeds the cap, and the friction impulse
 // fell 7 % short of mu times the normal impulse; capping only the spring part and adding damping
 // while sticking (LIGGGHTS) let |F_t| exceed mu |F_n| and the impulse came out 16 % too large.
@@ -260,7 +260,7 @@ namespace vofdem::hertz {
 
 // Energy stored in the normal Hertz spring: the integral of (4/3) E* sqrt(R*) delta^1.5, i.e.
 // (8/15) E* sqrt(R*) delta^2.5 = (4/15) S_n delta^2 with S_n = 2 E* sqrt(R* delta) (P3; counted in
-// the energy balance of VERIFICATION.md D4).
+// the energy balance of docs/verification.md D4).
 inline PetscReal ElasticEnergy(PetscReal Sn, PetscReal delta) { return 4.0 / 15.0 * Sn * delta * delta; }
 
 }  // namespace vofdem::hertz

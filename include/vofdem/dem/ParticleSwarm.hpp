@@ -1,6 +1,6 @@
 // The particles' DMSwarm (PIC type) on the grid's vertex DMDA, with its structure-of-arrays fields,
 // and migration that never loses a particle silently: DMSwarmMigrate deletes particles that jump
-// more than one subdomain or leave the box (notes/petsc-3.18.md), so the global count is checked.
+// more than one subdomain or leave the box (docs/petsc-notes.md), so the global count is checked.
 #pragma once
 
 #include "vofdem/grid/Grid.hpp"

@@ -4,7 +4,7 @@
 //
 // Particles are wrapped back into the box only at neighbour-list rebuilds, right before migration
 // (DMSwarmMigrate deletes particles outside the box, and the swarm's vertex DMDA must stay
-// non-periodic: notes/petsc-3.18.md); the reference positions of the rebuild rule are reset by that
+// non-periodic: docs/petsc-notes.md); the reference positions of the rebuild rule are reset by that
 // migration, so a wrap never looks like a jump of one box length. Between rebuilds a particle may
 // stand up to half the skin outside the box in a periodic direction.
 //

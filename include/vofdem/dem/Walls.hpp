@@ -1,6 +1,6 @@
 // Walls beyond the six box faces (-dem_walls): infinite planes, cylinders and triangle meshes from
 // STL, each fixed, translating, rotating about an axis, or both. Walls are spheres of infinite
-// radius and mass (PHYSICS.md P3): R* = R, m* = m, and the wall's surface velocity at the contact
+// radius and mass (docs/physics.md P3): R* = R, m* = m, and the wall's surface velocity at the contact
 // enters the relative velocity. The material is the -dem_wall_* one of the box faces.
 //
 // Candidates: at each neighbour-list rebuild, every local particle within r + skin (+ adhesion

@@ -1,4 +1,4 @@
-// The flow module: volume-averaged incompressible Navier-Stokes on the MAC grid (PHYSICS.md F1, F2),
+// The flow module: volume-averaged incompressible Navier-Stokes on the MAC grid (docs/physics.md F1, F2),
 // switched on by -physics flow; options under -flow_.
 //
 // Momentum, divided by eps*rho (non-conservative form; with continuity F1 it equals F2):
@@ -72,18 +72,18 @@ public:
   Vec FluidFraction() const { return eps_; }
   PetscErrorCode PropertiesChanged();
   void SetForcing(Forcing f, void *ctx) { forcing_ = f; forcingCtx_ = ctx; }
-  // A force per unit volume at the faces (N/m^3; for surface tension, PHYSICS.md F2), global vectors of
+  // A force per unit volume at the faces (N/m^3; for surface tension, docs/physics.md F2), global vectors of
   // Staggered().Face(d), created on the first call (zero) and kept by Flow. Predict adds it divided by
   // the same face density as the pressure gradient, (1/rho)_f f_d, so that a force that is a discrete
   // gradient on the pressure's stencil (a balanced-force surface tension) is cancelled exactly by the
   // pressure. The caller fills it before each Step; it is not part of Save (recomputed from the state).
   PetscErrorCode FaceForce(int d, Vec *f);
   // An extra acceleration (m/s^2) per face, added in Predict like gravity: the particles' reaction
-  // -F_p/(eps rho)_f of PHYSICS.md (F5), set by the coupling. a[d]: a global vector of Staggered().Face(d),
+  // -F_p/(eps rho)_f of docs/physics.md (F5), set by the coupling. a[d]: a global vector of Staggered().Face(d),
   // owned by the caller; nullptr: none.
   void SetFaceAcceleration(Vec a[3]) { for (int d = 0; d < 3; ++d) faceAcceleration_[d] = a ? a[d] : nullptr; }
   // Momentum transport supplied by another module, replacing the flow's own -(U.grad)U: the VOF
-  // module's mass-consistent transport of rho u (PHYSICS.md F2; VofMomentum.cpp). a[d] (m/s^2, global
+  // module's mass-consistent transport of rho u (docs/physics.md F2; VofMomentum.cpp). a[d] (m/s^2, global
   // vectors of Staggered().Face(d), owned by the caller) is added in Predict once (forward Euler, not
   // in the AB2 history, which then holds only the transpose viscous term); nullptr: the flow's own.
   void SetAdvectionAcceleration(Vec a[3]) { for (int d = 0; d < 3; ++d) advectionAcceleration_[d] = a ? a[d] : nullptr; }
@@ -102,7 +102,7 @@ public:
     for (int d = 0; d < 3; ++d) relaxRate_[d] = c ? c[d] : nullptr, relaxTarget_[d] = c ? w[d] : nullptr;
   }
   // The change of eps over the coming step (a global cell vector, owned by the caller, set by the
-  // coupling; nullptr: none): the projection then makes div(eps U) = -(change)/dt (PHYSICS.md F1), the
+  // coupling; nullptr: none): the projection then makes div(eps U) = -(change)/dt (docs/physics.md F1), the
   // fluid the particles displace. The summary's divergence is div(eps U) + change/dt of the last step.
   void SetFluidFractionChange(Vec change) { epsChange_ = change; }
   // Makes the velocity field satisfy the boundary conditions and div(eps U) = 0 (an initial projection).

@@ -48,7 +48,7 @@ public:
   PetscErrorCode FillCellGhosts(const StaggeredGrid &sg, Vec local) const;
   // Sets the boundary faces of velocity component d in a global vector: the prescribed normal
   // velocity on wall/slip/inflow faces, the neighbour's value (zero gradient) on outflow faces.
-  // An inflow's velocity is superficial (volume flux per area, PHYSICS.md F1): with particles next
+  // An inflow's velocity is superficial (volume flux per area, docs/physics.md F1): with particles next
   // to the face the interstitial face velocity is U/eps of the cell there, so that eps_f u_f = U
   // (eps_f is that cell's eps: FillCellGhosts mirrors it). Without particles eps = 1: unchanged.
   PetscErrorCode ApplyNormal(const StaggeredGrid &sg, int d, Vec global) const;

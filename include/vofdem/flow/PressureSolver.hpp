@@ -1,4 +1,4 @@
-// The pressure Poisson solve of the projection (PHYSICS.md F1, F2):  -div(beta grad p) = rhs
+// The pressure Poisson solve of the projection (docs/physics.md F1, F2):  -div(beta grad p) = rhs
 // on the cell-centred DMDA of Grid (STAR, width 1), beta = eps/rho in the volume-averaged form.
 //
 // Discretisation: second-order 7-point finite volumes on the uniform grid. beta is given at CELL
@@ -12,7 +12,7 @@
 // constant null space is attached to the matrix and removed from (a copy of) the rhs.
 //
 // Solver: KSP with options prefix flow_pressure_; defaults CG + hypre BoomerAMG with the tuned
-// settings of notes/petsc-3.18.md (inserted only where the user gave none), or hypre's structured
+// settings of docs/petsc-notes.md (inserted only where the user gave none), or hypre's structured
 // PFMG (-flow_pressure_pc pfmg; matrix type hyprestruct). The preconditioner is kept while the
 // coefficient has changed by less than -flow_pressure_reuse_threshold (relative, per cell) since
 // it was built. The initial guess is the p passed to Solve (the previous pressure).

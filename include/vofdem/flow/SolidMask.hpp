@@ -1,4 +1,4 @@
-// Cells inside solid walls and obstacles, seen by the flow as a staircase (ARCHITECTURE.md: the mask
+// Cells inside solid walls and obstacles, seen by the flow as a staircase (docs/architecture.md: the mask
 // the DEM walls will share). A cell is solid when its centre is inside a solid; options
 //   -flow_solid_boxes x0,y0,z0,x1,y1,z1[,...]   axis-aligned boxes (m)
 //   -flow_solid_spheres cx,cy,cz,r[,...]         spheres (m)

@@ -1,4 +1,4 @@
-// The fluid's properties at a cell face, from the two cells it separates (docs/physics.md, F1 and P1):
+// The fluid's properties at a cell face, from the two cells it separates (docs/physics.md, F2):
 // the fluid fraction eps_f is their mean; b = eps/rho is averaged harmonically, so that a face between
 // two phases carries the balanced-force density (eps rho)_f = eps_f^2 / b_f. Flow (predictor, viscous
 // matrix, projection, pressure operator, step limits) and coupling (added mass, deposits, the drag's face share) all

@@ -1,7 +1,7 @@
 // The Eulerian grid: a uniform box of cells on a cell-centred DMDA (STAR, width 1: the one matrices
 // are assembled on), and, for particles, a vertex DMDA with one more node per direction whose
 // ownership is chosen so that the swarm's elements on a rank are exactly that rank's fluid cells
-// (see Grid::SetUp; notes/petsc-3.18.md, DMSwarm).
+// (see Grid::SetUp; docs/petsc-notes.md, DMSwarm).
 #pragma once
 
 #include <petscdmda.h>
@@ -29,7 +29,7 @@ public:
   const PetscInt  *Cells() const { return cells_; }
   MPI_Comm         Comm() const { return comm_; }
   // -grid_periodic: the two faces normal to direction d are one (the cell DMDA is periodic there;
-  // the particles' vertex DMDA is not: particles are wrapped by the DEM module, notes/petsc-3.18.md).
+  // the particles' vertex DMDA is not: particles are wrapped by the DEM module, docs/petsc-notes.md).
   bool Periodic(int d) const { return periodic_[d]; }
 
   // The part of the box whose cells this rank owns: [lo, hi) (closed at the domain's upper end).

@@ -1,4 +1,4 @@
-// PLIC geometry of one cell (PHYSICS.md F1b, F4): the fluid in a cell is the part of the unit cube
+// PLIC geometry of one cell (docs/physics.md F1b, F4): the fluid in a cell is the part of the unit cube
 // [0,1]^3 (the cell in cell units) where n.x <= alpha, n pointing out of the fluid. These functions
 // relate the plane constant alpha to the volume fraction the plane cuts off, exactly (piecewise cubic,
 // written in a form without cancellation when components of n are tiny or zero), and give the fluid

@@ -1,6 +1,6 @@
 // The interface module (VOF), switched on by -physics flow,vof; options under -vof_.
 //
-// alpha, the volume fraction of the heavy phase (metal), is a cell field (PHYSICS.md F1b) on a DMDA
+// alpha, the volume fraction of the heavy phase (metal), is a cell field (docs/physics.md F1b) on a DMDA
 // with the cell grid's ownership ranges and a 4-wide ghost layer: a flux at a rank's first face needs
 // the reconstruction of the neighbour's cell, whose height-function normal reaches 3 cells further.
 //
@@ -26,11 +26,11 @@ namespace vofdem {
 class Flow;
 class OptionReader;
 
-// Interface normals of the PLIC reconstruction (PHYSICS.md F4; VofAdvect.cpp): Height from height
+// Interface normals of the PLIC reconstruction (docs/physics.md F4; VofAdvect.cpp): Height from height
 // functions where a 7-cell column is a clean transition, with a fallback elsewhere (-vof_height_fallback:
 // Elvira or Youngs); Elvira everywhere; Youngs (gradient of alpha) everywhere.
 enum class VofNormals { Youngs, Height, Elvira };
-// How momentum moves with the interface (PHYSICS.md F2; VofMomentum.cpp): Consistent transports
+// How momentum moves with the interface (docs/physics.md F2; VofMomentum.cpp): Consistent transports
 // rho u on the faces with the mass fluxes of the geometric VOF sweeps; Advective leaves the flow's
 // non-conservative -(U.grad)U (kept to show what consistency buys, ex36).
 enum class VofMomentum { Consistent, Advective };
@@ -82,7 +82,7 @@ public:
   // The flow's density and viscosity from alpha (phase 1: -vof_density, -vof_viscosity; phase 0: the
   // flow's -flow_density, -flow_viscosity), then flow.PropertiesChanged().
   PetscErrorCode UpdateProperties(Flow &flow) const;
-  // Advect with mass-consistent momentum transport (VofMomentum.cpp; PHYSICS.md F2): call instead of
+  // Advect with mass-consistent momentum transport (VofMomentum.cpp; docs/physics.md F2): call instead of
   // Advect, before UpdateProperties, with the flow at u^n. After each split sweep of alpha, every
   // velocity component is moved along that sweep's direction by the sweep's own mass fluxes; the
   // result goes to the flow through SetAdvectionAcceleration, so that its predictor starts from the
@@ -94,7 +94,7 @@ public:
   // True when AdvectWithMomentum is to be used this step (-vof_momentum consistent, interface moving).
   bool ConsistentMomentum() const { return momentum_ == VofMomentum::Consistent && advect_; }
   PetscReal Density() const { return density_; }
-  // Particles in the fluid (-physics dem,flow,vof; PHYSICS.md F1b, VofFluidFraction.cpp): eps, the flow's
+  // Particles in the fluid (-physics dem,flow,vof; docs/physics.md F1b, VofFluidFraction.cpp): eps, the flow's
   // fluid fraction (global cell vector), and its change over the coming step (the coupling's, which the
   // flow's projection also reads: dt div(eps u) = -change). alpha is then the fraction of the fluid
   // volume eps V of a cell, and Advect transports eps alpha: each sweep moves eps_f u_f times the PLIC
