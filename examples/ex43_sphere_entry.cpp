@@ -1,4 +1,4 @@
-static const char help[] = "Verification V6 (VERIFICATION.md): seed 000's sphere entering water (-physics dem,flow,vof; PHYSICS.md F1, F1b, P1,\n"
+static const char help[] = "Verification V6 (docs/verification.md): seed 000's sphere entering water (-physics dem,flow,vof; docs/physics.md F1, F1b, P1,\n"
                            "K1-K3). A glass sphere (d 2.7 mm, 2500 kg/m^3) released at rest with its lowest point -drop (default 0.02 m) above\n"
                            "a pool -depth deep (default 0.03 m, the quick tier; seed 000: 0.11 m, scripts/validate) of water (1000 kg/m^3,\n"
                            "1e-3 Pa s) under air (1.2 kg/m^3, 1.8e-5 Pa s), in a closed box -width_cells (default 8) cells of 0.8 d wide\n"
@@ -6,7 +6,7 @@ static const char help[] = "Verification V6 (VERIFICATION.md): seed 000's sphere
                            "(m + C_vm rho_f V) dv/dt = -m g + rho_f V g + drag(rho_f, mu_f), RK4 with a 1e-6 s step, with the medium's rho_f\n"
                            "and mu_f mixed by the submerged volume fraction of the sphere (the exact spherical cap below the undisturbed\n"
                            "surface) and the same drag function. The run ends when the ODE's sphere is 3 d above the floor. Checked: the\n"
-                           "trajectory (VERIFICATION.md V6), max |z - z_ode| over the run within 2 %% of the distance the ODE's sphere fell;\n"
+                           "trajectory (docs/verification.md V6), max |z - z_ode| over the run within 2 %% of the distance the ODE's sphere fell;\n"
                            "the volumes of both phases (eps alpha V and eps (1 - alpha) V) within 1e-10 of their start. Reported, not\n"
                            "checked: max |v - v_ode| relative to the ODE's largest speed (largest at the entry, where the kernel, H = 1.5 d,\n"
                            "mixes the water's density into what the sphere reads about a kernel width early). Exits non-zero on failure.\n\n";
@@ -38,7 +38,7 @@ PetscReal Submerged(PetscReal z, PetscReal zs) {
 PetscReal Acceleration(PetscReal z, PetscReal v, PetscReal zs) {
   const PetscReal phi = Submerged(z, zs), rho = phi * kRhoW + (1 - phi) * kRhoA, mu = phi * kMuW + (1 - phi) * kMuA;
   const PetscReal V = PETSC_PI * kD * kD * kD / 6, m = kRhoP * V;
-  const PetscReal K = vofdem::drag::Coefficient(vofdem::drag::Law::SchillerNaumann, kD, 1, std::fabs(v), rho, mu, 0.8);
+  const PetscReal K = vofdem::drag::Coefficient(vofdem::drag::Find("schillernaumann"), kD, 1, std::fabs(v), rho, mu, 0.8);
   return (-m * kG + rho * V * kG - K * v) / (m + kCvm * rho * V);
 }
 

@@ -16,7 +16,7 @@ namespace vofdem {
 PetscErrorCode Coupling::SetFromOptions(MPI_Comm comm) {
   PetscFunctionBeginUser;
   comm_ = comm;
-  PetscOptionsBegin(comm, "coupling_", "Coupling: semi-resolved CFD-DEM (PHYSICS.md K1-K3, F5, F6, P1)", "Coupling");
+  PetscOptionsBegin(comm, "coupling_", "Coupling: semi-resolved CFD-DEM (docs/physics.md K1-K3, F5, F6, P1)", "Coupling");
   {
     OptionReader             opt(PetscOptionsObject);
     std::vector<std::string> k = {kernelName_};
@@ -35,7 +35,7 @@ PetscErrorCode Coupling::SetFromOptions(MPI_Comm comm) {
       VofdemInputError(comm, "option -coupling_kernel_min_width: %g cells is below the cell size; a kernel narrower than half a cell cannot be sampled by the grid (use 0.5 or more, or -coupling_kernel unresolved)",
                        (double)minWidthCells_);
     std::vector<std::string> sm = {Smoothing::Name(smoothing_.method)};
-    PetscCall(opt.NameList("-smoothing", "How the kernel is applied (PHYSICS.md K1, K3): kernel (sums over each particle's support), diffusion (tent deposit, then backward-Euler diffusion in pseudo-time to the kernel's variance, Sun & Xiao 2015; KSP options -coupling_smoothing_ksp_*), gaussian (tent deposit, then a separable discrete Gaussian of the same variance, GaussianFilter.hpp) or auto (kernel or gaussian, the one measured faster for the grid and particle count, Smoothing.cpp)",
+    PetscCall(opt.NameList("-smoothing", "How the kernel is applied (docs/physics.md K1, K3): kernel (sums over each particle's support), diffusion (tent deposit, then backward-Euler diffusion in pseudo-time to the kernel's variance, Sun & Xiao 2015; KSP options -coupling_smoothing_ksp_*), gaussian (tent deposit, then a separable discrete Gaussian of the same variance, GaussianFilter.hpp) or auto (kernel or gaussian, the one measured faster for the grid and particle count, Smoothing.cpp)",
                            {"kernel", "diffusion", "gaussian", "auto"}, &sm));
     if (sm.size() != 1) VofdemInputError(comm, "option -coupling_smoothing: give one of kernel, diffusion, gaussian, auto");
     smoothing_.method = sm[0] == "kernel" ? Smoothing::Method::Kernel : sm[0] == "diffusion" ? Smoothing::Method::Diffusion : sm[0] == "gaussian" ? Smoothing::Method::Gaussian : Smoothing::Method::Auto;
@@ -44,7 +44,8 @@ PetscErrorCode Coupling::SetFromOptions(MPI_Comm comm) {
                        RealRange::Positive()));
     PetscCall(opt.Real("-kernel_truncation", "Cut-off of the truncated Gaussian kernel, in widths H (seed 000: 1.2-1.5)", "-", &kernel_.truncation, RealRange::LeftOpen(0, 10)));
     std::vector<std::string> d = {drag::Name(law_)};
-    PetscCall(opt.NameList("-drag", "Drag law (DragLaws.hpp): gidaspow, difelice, wenyu, ergun, schillernaumann, kochhill, beetstra", drag::Names(), &d));
+    const std::string dragHelp = "Drag law (docs/physics.md F6): " + drag::Help();
+    PetscCall(opt.NameList("-drag", dragHelp.c_str(), drag::Names(), &d));
     if (d.size() != 1) VofdemInputError(comm, "option -coupling_drag: give one drag law");
     drag::Parse(d[0], &law_);
     PetscCall(opt.Real("-drag_switch", "Fluid fraction at which Gidaspow's law switches from Ergun (below) to Wen-Yu (F6; seed 000: 0.74)", "-", &dragSwitch_, RealRange::LeftOpen(0, 1)));
@@ -201,7 +202,7 @@ PetscErrorCode Coupling::View(PetscViewer viewer, PetscReal dt) const {
   PetscCall(PetscViewerASCIIPrintf(viewer, "coupling: kernel %s, %s%s, drag %s%s (fluid side %s), pressure-gradient force %s, self-disturbance correction (K1b) %s, added mass C_vm %g (Du/Dt: %s), d(eps)/dt in continuity %s, ghost width %d cells\n",
                                    kernelName_.c_str(), width,
                                    kernel_.shape == kernel::Shape::Truncated ? (", cut at " + std::to_string((double)kernel_.truncation) + " H").c_str() : "",
-                                   drag::Name(law_), law_ == drag::Law::Gidaspow ? (" (switch at eps " + std::to_string((double)dragSwitch_) + ")").c_str() : "", implicitFluid_ ? "implicit" : "explicit",
+                                   drag::Name(law_), std::string(drag::Name(law_)) == "gidaspow" ? (" (switch at eps " + std::to_string((double)dragSwitch_) + ")").c_str() : "", implicitFluid_ ? "implicit" : "explicit",
                                    pressureForce_ ? "on" : "off", k1b, (double)addedMass_, addedMassAccel_ == FluidAcceleration::Pressure ? "pressure balance" : addedMassAccel_ == FluidAcceleration::None ? "none: fluid at rest" : "velocity read", epsRate_ ? "on" : "off", (int)avg_.GhostWidth()));
   PetscCall(PetscViewerASCIIPrintf(viewer, "coupling: Magnus lift %s, rotational drag torque %s, lubrication (P8) with the fluid's viscosity %s\n", rotation::LiftName(lift_),
                                    !rotationalDrag_ ? "off" : rotationalDragDennis_ ? "on (pi mu d^3, Dennis et al. Re_r factor; no reaction torque on the fluid)" : "on (pi mu d^3; no reaction torque on the fluid)",

@@ -1,6 +1,5 @@
 #include "vofdem/coupling/DragLaws.hpp"
 
-#include <algorithm>
 #include <cmath>
 
 namespace vofdem {
@@ -10,21 +9,6 @@ namespace {
 constexpr double kPi = 3.14159265358979323846;
 double Volume(double d) { return kPi * d * d * d / 6; }
 }  // namespace
-
-const std::vector<std::string> &Names() {
-  static const std::vector<std::string> names = {"gidaspow", "difelice", "wenyu", "ergun", "schillernaumann", "kochhill", "beetstra"};
-  return names;
-}
-
-bool Parse(const std::string &name, Law *law) {
-  const auto &n = Names();
-  const auto  it = std::find(n.begin(), n.end(), name);
-  if (it == n.end()) return false;
-  *law = (Law)(it - n.begin());
-  return true;
-}
-
-const char *Name(Law law) { return Names()[(size_t)law].c_str(); }
 
 double Reynolds(double d, double eps, double slip, double rho, double mu) { return eps * rho * d * slip / mu; }
 
@@ -95,19 +79,6 @@ double Beetstra(double d, double eps, double slip, double rho, double mu) {
   // eps): the force on the particle is 3 pi mu d (eps |u - v|) F, without a further eps (MFIX's BVK:
   // 18 mu eps F/d^2 per solid volume, "/= Koch-Hill's by a factor of eps").
   return 3 * kPi * mu * d * eps * F;
-}
-
-double Coefficient(Law law, double d, double eps, double slip, double rho, double mu, double eSwitch) {
-  switch (law) {
-  case Law::Gidaspow: return Gidaspow(d, eps, slip, rho, mu, eSwitch);
-  case Law::DiFelice: return DiFelice(d, eps, slip, rho, mu);
-  case Law::WenYu: return WenYu(d, eps, slip, rho, mu);
-  case Law::Ergun: return Ergun(d, eps, slip, rho, mu);
-  case Law::SchillerNaumann: return SchillerNaumann(d, slip, rho, mu);
-  case Law::KochHill: return KochHill(d, eps, slip, rho, mu);
-  case Law::Beetstra: return Beetstra(d, eps, slip, rho, mu);
-  }
-  return 0;
 }
 
 }  // namespace drag

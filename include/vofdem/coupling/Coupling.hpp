@@ -1,5 +1,5 @@
 // The particle-fluid coupling (-physics dem,flow; options -coupling_*): semi-resolved CFD-DEM of
-// PHYSICS.md K1-K3, F5, P1. One fluid step of size dt (Simulation::Step calls the parts in order):
+// docs/physics.md K1-K3, F5, P1. One fluid step of size dt (Simulation::Step calls the parts in order):
 //  1. projection (K3): the particles' volume gives the fluid fraction eps = 1 - (volume/V_cell), and
 //     the fluid's momentum source -F_p (F5) on the faces of each velocity component is either
 //     (-coupling_fluid_drag explicit, the default) the drag impulse the particles received over the previous step,
@@ -134,7 +134,7 @@ private:
   std::string              kernelName_ = "smooth";
   Smoothing::Settings      smoothing_;
   PetscReal                kappa_ = 1.5, minWidthCells_ = 1.0;
-  drag::Law                law_ = drag::Law::SchillerNaumann;
+  drag::Law                law_ = drag::Find("schillernaumann");  // -coupling_drag (DragLawTable.cpp)
   PetscReal                dragSwitch_ = 0.8;
   PetscBool                pressureForce_ = PETSC_TRUE, selfCorrection_ = PETSC_TRUE;
   PetscReal                minEps_ = 0.1, selfMinEps_ = 0.9;

@@ -1,5 +1,6 @@
-// Fluid-particle drag laws (PHYSICS.md F6, P1; seed 004 table 4) and heat-transfer laws (F9, F10) as
-// plain functions, chosen once per scene by name (-coupling_drag). Every drag law returns the
+// Fluid-particle drag laws (docs/physics.md F6, P1; seed 004 table 4) and heat-transfer laws (F9, F10) as
+// plain functions, chosen once per scene by name (-coupling_drag) from the table of laws
+// (DragLawTable.cpp: one row per law, which also builds the option's help). Every drag law returns the
 // coefficient K (kg/s) of the force on one particle, f_drag = K (u - v), with u the kernel-averaged
 // fluid velocity at the particle (K1), v the particle's velocity, d its diameter, eps the averaged
 // fluid fraction, slip = |u - v|. The pressure-gradient force -V grad p is a separate term (P1,
@@ -14,11 +15,24 @@
 namespace vofdem {
 namespace drag {
 
-enum class Law { Gidaspow, DiFelice, WenYu, Ergun, SchillerNaumann, KochHill, Beetstra };
+// The table of laws (DragLawTable.cpp). A new law: its function in a file of its own, and one row there.
+struct Input {
+  double d, eps, slip, rho, mu;  // diameter (m), fluid fraction, |u - v| (m/s), fluid density (kg/m^3), viscosity (Pa s)
+  double eSwitch;                // Gidaspow's switch (-coupling_drag_switch)
+};
+struct Entry {
+  const char *name;                        // -coupling_drag
+  const char *summary;                     // one line for -help
+  double (*coefficient)(const Input &in);  // K (kg/s)
+};
+const std::vector<Entry> &Table();
+using Law = const Entry *;  // chosen once per scene: the row of the table
 
-const std::vector<std::string> &Names();  // in the order of Law
-bool Parse(const std::string &name, Law *law);
+const std::vector<std::string> &Names();  // in the table's order
+bool        Parse(const std::string &name, Law *law);
+Law         Find(const std::string &name);  // nullptr if no law has that name
 const char *Name(Law law);
+std::string Help();  // "name (summary), ...", for -coupling_drag
 
 // Particle Reynolds number on the interstitial slip, Re = eps rho d |u - v| / mu (F6).
 double Reynolds(double d, double eps, double slip, double rho, double mu);
@@ -43,8 +57,10 @@ double KochHill(double d, double eps, double slip, double rho, double mu);
 // F is normalised as the drag already (F -> 10 phi/eps^2 = eps x Carman-Kozeny's total force at Re -> 0).
 double Beetstra(double d, double eps, double slip, double rho, double mu);
 
-// The law by name (eSwitch: Gidaspow's switch).
-double Coefficient(Law law, double d, double eps, double slip, double rho, double mu, double eSwitch);
+// K of the chosen law (eSwitch: Gidaspow's switch).
+inline double Coefficient(Law law, double d, double eps, double slip, double rho, double mu, double eSwitch) {
+  return law->coefficient(Input{d, eps, slip, rho, mu, eSwitch});
+}
 
 }  // namespace drag
 
