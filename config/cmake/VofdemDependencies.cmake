@@ -19,7 +19,7 @@ vofdem_pkg(petsc petsc petsc-dev)
 if(_petsc_VERSION VERSION_LESS 3.18)
   message(FATAL_ERROR "PETSc ${_petsc_VERSION} is too old: vofdem needs 3.18 (Debian package 'petsc-dev')")
 endif()
-# PETSc's .pc file lacks the HDF5 include directory (notes/petsc-3.18.md): add the parallel flavour.
+# PETSc's .pc file lacks the HDF5 include directory (docs/petsc-notes.md): add the parallel flavour.
 vofdem_pkg(hdf5 hdf5-openmpi libhdf5-openmpi-dev)
 vofdem_pkg(yaml yaml-0.1 libyaml-dev)
 
@@ -27,15 +27,6 @@ find_package(MPI QUIET COMPONENTS C CXX)
 if(NOT MPI_FOUND)
   message(FATAL_ERROR "MPI not found: install the Debian packages 'libopenmpi-dev openmpi-bin' (scripts/install-deps)")
 endif()
-
-find_path(METIS_INCLUDE_DIR metis.h)
-find_library(METIS_LIBRARY metis)
-if(NOT METIS_INCLUDE_DIR OR NOT METIS_LIBRARY)
-  message(FATAL_ERROR "METIS not found: install the Debian package 'libmetis-dev' (scripts/install-deps)")
-endif()
-add_library(vofdem::metis INTERFACE IMPORTED)
-target_include_directories(vofdem::metis INTERFACE ${METIS_INCLUDE_DIR})
-target_link_libraries(vofdem::metis INTERFACE ${METIS_LIBRARY})
 
 # CGAL (header-only since 5.0; its target brings GMP and MPFR): only the analysis library uses it.
 # Its imported include directories are SYSTEM, so -Wall -Wextra stay quiet about its headers.
