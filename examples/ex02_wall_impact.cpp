@@ -2,12 +2,13 @@ static const char help[] = "Verification D1 (sphere-wall variant): normal impact
                            "Measures the coefficient of restitution for e = 0.3, 0.6, 0.9 (within 2 %) and the elastic contact time\n"
                            "for e = 1 against Hertz' t_c = 2.87 (m*^2/(R* E*^2 v))^(1/5) (within 1 %). Exits non-zero on failure.\n\n";
 
-// A wall is a sphere of infinite radius and mass (PHYSICS.md P3): R* = R, m* = m. The contact
+// A wall is a sphere of infinite radius and mass (docs/physics.md P3): R* = R, m* = m. The contact
 // starts and ends where the gap crosses zero, found by linear interpolation between steps.
 
 #include "vofdem/base/Runtime.hpp"
 #include "vofdem/sim/ModuleAccess.hpp"
 #include "vofdem/examples/Help.hpp"
+#include "vofdem/examples/ExampleTools.hpp"
 
 #include <cstdio>
 #include <string>
@@ -18,17 +19,9 @@ struct Impact {
 };
 
 // Full precision: std::to_string would print 5.4e-8 as "0.000000".
-static std::string Num(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.17g", v);
-  return buf;
-}
+using vofdem::example::Num;
 
-static PetscErrorCode SetOption(const char *name, const std::string &value) {
-  PetscFunctionBeginUser;
-  PetscCall(PetscOptionsSetValue(nullptr, name, value.c_str()));
-  PetscFunctionReturn(0);
-}
+using vofdem::example::SetOption;
 
 // One impact: radius R, falling onto the floor at speed v0, no gravity, time step t_c / stepsPerContact.
 static PetscErrorCode RunImpact(PetscReal e, PetscReal v0, PetscReal tc, PetscInt stepsPerContact, Impact *out) {

@@ -10,17 +10,14 @@ static const char help[] = "Verification D1 (two spheres) and D2 (oblique impact
 #include "vofdem/sim/ModuleAccess.hpp"
 #include "vofdem/io/TextFile.hpp"
 #include "vofdem/examples/Help.hpp"
+#include "vofdem/examples/ExampleTools.hpp"
 
 #include <cstdio>
 #include <string>
 
 static const PetscReal R = 1e-3, rho = 2500, E = 1e8, nu = 0.28;
 
-static std::string Num(double v) {  // full precision (std::to_string prints 5.4e-8 as 0.000000)
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.17g", v);
-  return buf;
-}
+using vofdem::example::Num;
 
 // Writes the particles (x,y,z,vx,vy,vz per row) and points -dem_particles_file at them.
 static PetscErrorCode UseParticles(const char *path, const std::string &rows) {

@@ -9,6 +9,7 @@ static const char help[] = "Particle types with their own materials (config/mate
 #include "vofdem/sim/ModuleAccess.hpp"
 #include "vofdem/io/TextFile.hpp"
 #include "vofdem/examples/Help.hpp"
+#include "vofdem/examples/ExampleTools.hpp"
 
 #include <cstdio>
 #include <string>
@@ -23,11 +24,7 @@ struct Material {
 static const Material       glass{2500, 1e8, 0.25, 0.9}, steel{7900, 2e8, 0.3, 0.6};
 static const PetscReal Ra = 1e-3, Rb = 5e-4;
 
-static std::string Num(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.17g", v);
-  return buf;
-}
+using vofdem::example::Num;
 
 static PetscErrorCode UseParticles(const char *path, const std::string &rows) {
   PetscFunctionBeginUser;

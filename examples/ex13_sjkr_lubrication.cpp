@@ -9,6 +9,7 @@ static const char help[] = "SJKR cohesion (P6, LIGGGHTS' definition) and lubrica
 #include "vofdem/sim/ModuleAccess.hpp"
 #include "vofdem/io/TextFile.hpp"
 #include "vofdem/examples/Help.hpp"
+#include "vofdem/examples/ExampleTools.hpp"
 
 #include <cmath>
 #include <cstdio>
@@ -17,11 +18,7 @@ static const char help[] = "SJKR cohesion (P6, LIGGGHTS' definition) and lubrica
 
 static const PetscReal R = 1e-3, rho = 2500, E = 1e8, nu = 0.28;
 
-static std::string Num(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.17g", v);
-  return buf;
-}
+using vofdem::example::Num;
 
 static PetscErrorCode UseParticles(const std::string &rows) {
   PetscFunctionBeginUser;

@@ -8,6 +8,7 @@ static const char help[] = "Verification D1 on the walls of -dem_walls: a sphere
 #include "vofdem/dem/StlMesh.hpp"
 #include "vofdem/io/TextFile.hpp"
 #include "vofdem/examples/Help.hpp"
+#include "vofdem/examples/ExampleTools.hpp"
 
 #include <cmath>
 #include <cstdio>
@@ -18,11 +19,7 @@ static const char help[] = "Verification D1 on the walls of -dem_walls: a sphere
 
 static const PetscReal R = 1e-3, v0 = 0.5, e = 0.6;
 
-static std::string Num(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.17g", v);
-  return buf;
-}
+using vofdem::example::Num;
 
 // One impact: the particle starts at x moving at -v0 along the wall's normal n (towards it);
 // gap(x) is its distance from the wall minus R. Returns the restitution (normal speed after / before).

@@ -15,16 +15,13 @@ static const char help[] = "Love-Weber stress of a region (-dem_stress_lower/-de
 #include "vofdem/sim/ModuleAccess.hpp"
 #include "vofdem/io/TextFile.hpp"
 #include "vofdem/examples/Help.hpp"
+#include "vofdem/examples/ExampleTools.hpp"
 
 #include <cmath>
 #include <cstdio>
 #include <string>
 
-static std::string Num(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.17g", v);
-  return buf;
-}
+using vofdem::example::Num;
 
 static PetscErrorCode Set(const char *name, const std::string &value) {
   PetscFunctionBeginUser;

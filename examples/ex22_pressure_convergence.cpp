@@ -1,4 +1,4 @@
-static const char help[] = "Verification of the pressure Poisson solve -div(beta grad p) = f (PHYSICS.md F1, F2; VERIFICATION.md F5 for the\n"
+static const char help[] = "Verification of the pressure Poisson solve -div(beta grad p) = f (docs/physics.md F1, F2; docs/verification.md F5 for the\n"
                            "operator): manufactured solutions with constant and smoothly variable beta and Neumann, Dirichlet and\n"
                            "periodic boundaries on 16^3 and 32^3 (and -fine 1: 64^3) cells of the unit cube. Prints the RMS error of p\n"
                            "per grid and the observed order, which must be >= 1.9. Exits non-zero on failure.\n\n";
@@ -13,6 +13,7 @@ static const char help[] = "Verification of the pressure Poisson solve -div(beta
 #include "vofdem/flow/PressureSolver.hpp"
 #include "vofdem/grid/Grid.hpp"
 #include "vofdem/examples/Help.hpp"
+#include "vofdem/examples/ExampleTools.hpp"
 
 #include <cmath>
 #include <string>
@@ -76,11 +77,7 @@ Exact MakeExact(const Case &c) {
   return e;
 }
 
-PetscErrorCode SetOption(const char *name, const std::string &value) {
-  PetscFunctionBeginUser;
-  PetscCall(PetscOptionsSetValue(nullptr, name, value.c_str()));
-  PetscFunctionReturn(0);
-}
+using vofdem::example::SetOption;
 
 // RMS error of the solve on n^3 cells (mean removed where p is defined up to a constant).
 PetscErrorCode SolveCase(const Case &c, PetscInt n, PetscReal *error, PetscInt *iterations) {

@@ -1,4 +1,4 @@
-static const char help[] = "Verification F4 (VERIFICATION.md): iteration counts of the pressure solve -div((1/rho) grad p) = f for a\n"
+static const char help[] = "Verification F4 (docs/verification.md): iteration counts of the pressure solve -div((1/rho) grad p) = f for a\n"
                            "1e-8 reduction of the unpreconditioned residual from a zero initial guess, closed box (all Neumann,\n"
                            "constant null space), density ratios -ratios (default 1,1000,8000) in a step-density case (heavy lower\n"
                            "half) and a heavy-sphere case (radius 0.25 at the centre), on -cells_list grids (default 32). At most 20\n"
@@ -11,6 +11,7 @@ static const char help[] = "Verification F4 (VERIFICATION.md): iteration counts 
 #include "vofdem/flow/PressureSolver.hpp"
 #include "vofdem/grid/Grid.hpp"
 #include "vofdem/examples/Help.hpp"
+#include "vofdem/examples/ExampleTools.hpp"
 
 #include <cmath>
 #include <cstdlib>
@@ -19,13 +20,9 @@ static const char help[] = "Verification F4 (VERIFICATION.md): iteration counts 
 
 namespace {
 
-const PetscInt maxIterations = 20;  // VERIFICATION.md F4
+const PetscInt maxIterations = 20;  // docs/verification.md F4
 
-PetscErrorCode SetOption(const char *name, const std::string &value) {
-  PetscFunctionBeginUser;
-  PetscCall(PetscOptionsSetValue(nullptr, name, value.c_str()));
-  PetscFunctionReturn(0);
-}
+using vofdem::example::SetOption;
 
 // Where the restart check writes the saved solver state: -output_dir (created if needed, kept), else a new
 // temporary directory (PetscGetTmp: -tmp, $PETSC_TMP or /tmp; removed by the caller), never the current

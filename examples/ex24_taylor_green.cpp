@@ -1,4 +1,4 @@
-static const char help[] = "Verification F1 (VERIFICATION.md): the 2-D Taylor-Green vortex in a periodic box [0, 2 pi]^2 (a few periodic cells in z),\n"
+static const char help[] = "Verification F1 (docs/verification.md): the 2-D Taylor-Green vortex in a periodic box [0, 2 pi]^2 (a few periodic cells in z),\n"
                            "u = sin x cos y F, v = -cos x sin y F, p = rho/4 (cos 2x + cos 2y) F^2, F = exp(-2 nu t), run to -final_time with\n"
                            "dt = -cfl h / U (so that the time error shrinks with h^2 too) on the grids of -cells_list (default 16,32,64). Prints the\n"
                            "RMS and maximum velocity errors and the RMS pressure error per grid, and the observed orders; the velocity RMS\n"
@@ -9,6 +9,7 @@ static const char help[] = "Verification F1 (VERIFICATION.md): the 2-D Taylor-Gr
 #include "vofdem/flow/Flow.hpp"
 #include "vofdem/grid/Grid.hpp"
 #include "vofdem/examples/Help.hpp"
+#include "vofdem/examples/ExampleTools.hpp"
 
 #include <petsctime.h>
 
@@ -20,11 +21,7 @@ namespace {
 
 const PetscReal kPi = PETSC_PI;
 
-PetscErrorCode SetOption(const char *name, const std::string &value) {
-  PetscFunctionBeginUser;
-  PetscCall(PetscOptionsSetValue(nullptr, name, value.c_str()));
-  PetscFunctionReturn(0);
-}
+using vofdem::example::SetOption;
 
 struct Errors {
   PetscReal uRms = 0, uMax = 0, pRms = 0, wall = 0;

@@ -1,4 +1,4 @@
-static const char help[] = "Verification F3 (VERIFICATION.md): plane Poiseuille flow between no-slip walls at y = 0 and y = H = 1 m (rho 1 kg/m^3,\n"
+static const char help[] = "Verification F3 (docs/verification.md): plane Poiseuille flow between no-slip walls at y = 0 and y = H = 1 m (rho 1 kg/m^3,\n"
                            "nu -nu, default 1 m^2/s; centre-line velocity U_c = 1 m/s; 3 periodic cells in z), run to steady state.\n"
                            " (a) periodic in x, driven by gravity g = 8 nu U_c / H^2 along x: u = g/(2 nu) y (H - y); from rest to -final_time_a\n"
                            "     with dt = -dt_a; the maximum velocity error over the channel.\n"
@@ -18,6 +18,7 @@ static const char help[] = "Verification F3 (VERIFICATION.md): plane Poiseuille 
 #include "vofdem/flow/Flow.hpp"
 #include "vofdem/grid/Grid.hpp"
 #include "vofdem/examples/Help.hpp"
+#include "vofdem/examples/ExampleTools.hpp"
 
 #include <cmath>
 #include <cstring>
@@ -34,17 +35,9 @@ const PetscReal kTolerance = 1e-3, kMinOrder = 1.8;
 const PetscReal kSteady = 1e-6;
 PetscInt        gSolidRows = 0;  // -solid: rows of solid cells below and above the channel (ny/4)
 
-PetscErrorCode SetOption(const char *name, const std::string &value) {
-  PetscFunctionBeginUser;
-  PetscCall(PetscOptionsSetValue(nullptr, name, value.c_str()));
-  PetscFunctionReturn(0);
-}
+using vofdem::example::SetOption;
 
-std::string Num(PetscReal v) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, "%.17g", (double)v);
-  return buf;
-}
+using vofdem::example::Num;
 
 PetscReal Exact(PetscReal y) { return 4 * kUc * y * (kH - y) / (kH * kH); }
 
@@ -221,7 +214,7 @@ PetscErrorCode RunChannel(bool inflow, bool pressureDriven, PetscInt ny, PetscRe
   PetscFunctionReturn(0);
 }
 
-const char *Verdict(bool ok) { return ok ? "ok" : "FAIL"; }
+using vofdem::example::Verdict;
 
 PetscErrorCode Run() {
   PetscInt  list[8] = {24, 48}, nlist = 8;

@@ -1,4 +1,4 @@
-static const char help[] = "Verification F5 (VERIFICATION.md): a manufactured solution of the volume-averaged momentum equation (Flow.hpp)\n"
+static const char help[] = "Verification F5 (docs/verification.md): a manufactured solution of the volume-averaged momentum equation (Flow.hpp)\n"
                            "with variable fluid fraction eps, density rho and viscosity mu, in the periodic box [0,1]^2 (4 periodic cells in z):\n"
                            "  eps = 0.775 + 0.175 sin(kx) cos(ky) (0.6 to 0.95), rho = 1 + 0.5 cos(k(x+y)) (ratio 3), mu = -mu (1 + 0.5 sin(k(x-y))),\n"
                            "  eps U = (d psi/dy, -d psi/dx), psi = sin(kx) sin(ky) cos(t) / k (so div(eps U) = 0 exactly), p = 0.5 cos(kx + 1) sin(ky) cos(t)^2,\n"
@@ -12,6 +12,7 @@ static const char help[] = "Verification F5 (VERIFICATION.md): a manufactured so
 #include "vofdem/flow/Flow.hpp"
 #include "vofdem/grid/Grid.hpp"
 #include "vofdem/examples/Help.hpp"
+#include "vofdem/examples/ExampleTools.hpp"
 
 #include <cmath>
 #include <string>
@@ -120,17 +121,9 @@ PetscReal ForcingFn(void *ctx, PetscReal t, const PetscReal x[3], int d) {
   return e.Forcing(d);
 }
 
-PetscErrorCode SetOption(const char *name, const std::string &value) {
-  PetscFunctionBeginUser;
-  PetscCall(PetscOptionsSetValue(nullptr, name, value.c_str()));
-  PetscFunctionReturn(0);
-}
+using vofdem::example::SetOption;
 
-std::string Num(PetscReal v) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, "%.17g", (double)v);
-  return buf;
-}
+using vofdem::example::Num;
 
 struct Errors {
   PetscReal uRms = 0, uMax = 0, pRms = 0;

@@ -1,8 +1,8 @@
-static const char help[] = "Verification V1 (VERIFICATION.md): the single vortex (Rider & Kothe 1998; LeVeque's reversing flow). A disc of radius 0.15 at\n"
+static const char help[] = "Verification V1 (docs/verification.md): the single vortex (Rider & Kothe 1998; LeVeque's reversing flow). A disc of radius 0.15 at\n"
                            "(0.5, 0.75) in the unit square (2 wall-bounded cells in z) is stretched by the stream function\n"
                            "psi = -sin^2(pi x) sin^2(pi y) cos(pi t / T) / pi and returns at t = T (-period, default 8). For each grid of -cells_list\n"
                            "(default 32,64) prints the shape error sum |alpha(T) - alpha(0)| dx dy next to the peers' measured values (OpenFOAM\n"
-                           "isoAdvector and Basilisk, VERIFICATION.md), the relative volume error and the largest bound violation of alpha\n"
+                           "isoAdvector and Basilisk, docs/verification.md), the relative volume error and the largest bound violation of alpha\n"
                            "seen after any sweep. Must reach: volume error <= 1e-12, bound violation <= 1e-12, shape error at or below Basilisk\n"
                            "where a value is known (T = 8 only). Time step dt = -vof_cfl h / max|u(t)| over the step (-adaptive 0: constant, with max|u| = 1).\n-show_time adds the wall time;\n-peer_check 0 prints the comparison with the peers without making a miss fail the run (scripts/work-precision).\n\n";
 
@@ -11,6 +11,7 @@ static const char help[] = "Verification V1 (VERIFICATION.md): the single vortex
 #include "vofdem/vof/StreamFunction.hpp"
 #include "vofdem/vof/Vof.hpp"
 #include "vofdem/examples/Help.hpp"
+#include "vofdem/examples/ExampleTools.hpp"
 
 #include <petsctime.h>
 
@@ -22,11 +23,7 @@ namespace {
 
 const PetscReal kPi = PETSC_PI;
 
-PetscErrorCode SetOption(const char *name, const std::string &value) {
-  PetscFunctionBeginUser;
-  PetscCall(PetscOptionsSetValue(nullptr, name, value.c_str()));
-  PetscFunctionReturn(0);
-}
+using vofdem::example::SetOption;
 
 PetscReal Disc(void *, const PetscReal x[3]) { return std::hypot(x[0] - 0.5, x[1] - 0.75) - 0.15; }
 PetscReal Psi(void *, PetscReal x, PetscReal y) {
@@ -34,7 +31,7 @@ PetscReal Psi(void *, PetscReal x, PetscReal y) {
   return -sx * sx * sy * sy / kPi;
 }
 
-// Peers' shape errors at T = 8 (VERIFICATION.md V1, measured on this machine); 0: not measured.
+// Peers' shape errors at T = 8 (docs/verification.md V1, measured on this machine); 0: not measured.
 struct Peer {
   PetscInt  n;
   PetscReal openfoam, basilisk;

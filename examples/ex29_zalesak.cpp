@@ -1,8 +1,8 @@
-static const char help[] = "Verification V2 (VERIFICATION.md): Zalesak's slotted disc in solid-body rotation. Disc radius 0.15 at (0.5, 0.75) in the\n"
+static const char help[] = "Verification V2 (docs/verification.md): Zalesak's slotted disc in solid-body rotation. Disc radius 0.15 at (0.5, 0.75) in the\n"
                            "unit square (2 wall-bounded cells in z), slot 0.05 wide reaching up to y = 0.85, one revolution per unit time\n"
                            "(psi = -pi ((x - 0.5)^2 + (y - 0.5)^2)); run for -revolutions (default 1) on each grid of -cells_list (default 100,200).\n"
                            "Prints the relative shape error sum |alpha - alpha0| / sum alpha0 next to OpenFOAM's (3.0 % at 100^2, 1.35 % at 200^2,\n"
-                           "VERIFICATION.md), the relative volume error and the largest bound violation. Must reach: below OpenFOAM on the grids\n"
+                           "docs/verification.md), the relative volume error and the largest bound violation. Must reach: below OpenFOAM on the grids\n"
                            "it was measured on, the finer grid never worse, volume error and bound violation <= 1e-12. -show_time adds wall times.\n\n";
 
 #include "vofdem/base/Runtime.hpp"
@@ -10,6 +10,7 @@ static const char help[] = "Verification V2 (VERIFICATION.md): Zalesak's slotted
 #include "vofdem/vof/StreamFunction.hpp"
 #include "vofdem/vof/Vof.hpp"
 #include "vofdem/examples/Help.hpp"
+#include "vofdem/examples/ExampleTools.hpp"
 
 #include <petsctime.h>
 
@@ -21,11 +22,7 @@ namespace {
 
 const PetscReal kPi = PETSC_PI;
 
-PetscErrorCode SetOption(const char *name, const std::string &value) {
-  PetscFunctionBeginUser;
-  PetscCall(PetscOptionsSetValue(nullptr, name, value.c_str()));
-  PetscFunctionReturn(0);
-}
+using vofdem::example::SetOption;
 
 // Inside (negative) the disc and outside the slot |x - 0.5| < 0.025, y < 0.85.
 PetscReal SlottedDisc(void *, const PetscReal x[3]) {

@@ -1,4 +1,4 @@
-static const char help[] = "Verification C3 (VERIFICATION.md) for the kernel projection (KernelAverager.hpp; PHYSICS.md K1-K3): particles\n"
+static const char help[] = "Verification C3 (docs/verification.md) for the kernel projection (KernelAverager.hpp; docs/physics.md K1-K3): particles\n"
                            "scattered over a box of -grid_cells (default 16,12,10) cells, some within a twentieth of a cell of the walls, some\n"
                            "on and a little across the boundaries between ranks (as between migrations), deposit their volume to the cells,\n"
                            "a force to the faces of each velocity component (also with the wall faces taking part, as the coupling's force deposit\n"
@@ -12,6 +12,7 @@ static const char help[] = "Verification C3 (VERIFICATION.md) for the kernel pro
 #include "vofdem/grid/StaggeredGrid.hpp"
 #include "vofdem/grid/Grid.hpp"
 #include "vofdem/examples/Help.hpp"
+#include "vofdem/examples/ExampleTools.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -21,7 +22,7 @@ static const char help[] = "Verification C3 (VERIFICATION.md) for the kernel pro
 namespace {
 
 const PetscReal kConserve = 1e-12, kConstant = 1e-14;
-const char     *Verdict(bool ok) { return ok ? "ok" : "FAIL"; }
+using vofdem::example::Verdict;
 
 struct Lcg {  // the same sequence on every rank
   std::uint64_t s;

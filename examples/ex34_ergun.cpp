@@ -1,4 +1,4 @@
-static const char help[] = "Verification C2 (VERIFICATION.md): a packed bed with fluid rising through it (the CFDEM ErgunTestMPI set-up: spheres\n"
+static const char help[] = "Verification C2 (docs/verification.md): a packed bed with fluid rising through it (the CFDEM ErgunTestMPI set-up: spheres\n"
                            "d = 1 mm, 2000 kg/m^3; fluid 10 kg/m^3, 1.5e-3 Pa s). The bed is poured first (-physics dem: -particles spheres (default\n"
                            "1600) randomly placed in a 10 x 10 mm periodic column, settled for -settle_time s, default 0.3 s, on a grate 5 mm above the\n"
                            "inflow face), or read from -bed_file. Its fluid fraction eps is the solid fraction's complement in the bed's interior (exact\n"
@@ -27,6 +27,7 @@ static const char help[] = "Verification C2 (VERIFICATION.md): a packed bed with
 #include "vofdem/base/Runtime.hpp"
 #include "vofdem/sim/ModuleAccess.hpp"
 #include "vofdem/examples/Help.hpp"
+#include "vofdem/examples/ExampleTools.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -49,11 +50,7 @@ PetscErrorCode Set(const char *name, const std::string &v) {
   PetscCall(PetscOptionsSetValue(nullptr, name, v.c_str()));
   PetscFunctionReturn(0);
 }
-std::string Num(PetscReal v) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, "%.17g", (double)v);
-  return buf;
-}
+using vofdem::example::Num;
 
 PetscErrorCode Common() {
   PetscFunctionBeginUser;
@@ -394,7 +391,7 @@ PetscErrorCode Run() {
     // (f) Ergun's law itself where the bed is uniform: the fluid's pressure gradient over the rows whose centres lie in
     // the bed's middle third (least squares, less the hydrostatic rho_f g) against Ergun's gradient at that third's
     // exact eps; and the whole drop's difference from Ergun's as a length of bed, in diameters (the bed's ends: a
-    // fixed length whatever the bed's height if the difference is theirs, PHYSICS.md K1)
+    // fixed length whatever the bed's height if the difference is theirs, docs/physics.md K1)
     PetscReal sz = 0, sp = 0, szz = 0, szp = 0, nr = 0;
     for (PetscInt k = 0; k < top; ++k) {
       const PetscReal z = (k + 0.5) * h - kGrate;

@@ -1,4 +1,4 @@
-static const char help[] = "Rotation and lubrication in the CFD-DEM coupling (-physics dem,flow; PHYSICS.md P1 f_Magnus, P8, F5; RotationLaws.hpp).\n"
+static const char help[] = "Rotation and lubrication in the CFD-DEM coupling (-physics dem,flow; docs/physics.md P1 f_Magnus, P8, F5; RotationLaws.hpp).\n"
                            "Fluid 1000 kg/m^3, 0.01 Pa s, at rest in a closed box of 1 mm cells; spheres d = 1 mm; no gravity.\n"
                            "(a) Magnus lift: a heavy sphere (1e7 kg/m^3, so that it keeps its speed) moves along +x at 0.05 m/s spinning at\n"
                            "    20 rad/s about +z (Re_p 5, Re_r 2) for 0.2 s, once with -coupling_lift rubinowkeller and once with oesterle\n"
@@ -28,6 +28,7 @@ static const char help[] = "Rotation and lubrication in the CFD-DEM coupling (-p
 #include "vofdem/sim/ModuleAccess.hpp"
 #include "vofdem/grid/StaggeredGrid.hpp"
 #include "vofdem/examples/Help.hpp"
+#include "vofdem/examples/ExampleTools.hpp"
 
 #include <cmath>
 #include <cstdio>
@@ -38,7 +39,7 @@ namespace {
 
 const PetscReal kD = 1e-3, kRhoF = 1000;
 const PetscReal kLiftTol = 0.02, kDirectionTol = 0.01, kConserveTol = 1e-12, kTauTol = 0.01, kLubTol = 1e-6;
-const char     *Verdict(bool ok) { return ok ? "ok" : "FAIL"; }
+using vofdem::example::Verdict;
 
 PetscErrorCode Set(const char *name, const char *value) {
   PetscFunctionBeginUser;

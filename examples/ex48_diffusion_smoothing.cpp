@@ -1,4 +1,4 @@
-static const char help[] = "Verification of the diffusion-based smoothing (DiffusionSmoother.hpp, Smoothing.hpp; PHYSICS.md K1, K3; Sun & Xiao\n"
+static const char help[] = "Verification of the diffusion-based smoothing (DiffusionSmoother.hpp, Smoothing.hpp; docs/physics.md K1, K3; Sun & Xiao\n"
                            "2015), the alternative to kernel sums. (1) Conservation (C3): particles scattered over a 16 x 12 x 10 box, some a\n"
                            "twentieth of a cell from the walls and some straying across rank boundaries, deposit volume and heat to the cells\n"
                            "and a force to the faces; the grid totals must equal the particle totals to a relative 1e-12, with walls and with\n"
@@ -17,6 +17,7 @@ static const char help[] = "Verification of the diffusion-based smoothing (Diffu
 #include "vofdem/grid/StaggeredGrid.hpp"
 #include "vofdem/grid/Grid.hpp"
 #include "vofdem/examples/Help.hpp"
+#include "vofdem/examples/ExampleTools.hpp"
 
 #include <cmath>
 #include <cstdint>
@@ -28,7 +29,7 @@ namespace {
 const PetscReal kConserve = 1e-12, kAdjoint = 1e-12, kConstant = 1e-12, kMoment = 1e-6;
 // -method: the grid smoothing under test.
 vofdem::Smoothing::Method g_method = vofdem::Smoothing::Method::Diffusion;
-const char     *Verdict(bool ok) { return ok ? "ok" : "FAIL"; }
+using vofdem::example::Verdict;
 
 struct Lcg {  // the same sequence on every rank
   std::uint64_t s;
