@@ -13,6 +13,10 @@ add_test(NAME unit/outputcompare COMMAND ${VOFDEM_PYTHON} ${CMAKE_CURRENT_SOURCE
 set_tests_properties(unit/outputcompare PROPERTIES LABELS "quick;unit")
 
 # -stop_kinetic_energy: a DEM run ends once its particles are at rest; a signal-stopped run is not analysed.
+# The walls' own material (-dem_wall_youngs_modulus, _poisson_ratio, _surface_energy): a sphere at rest on the floor
+# has the static Hertz / JKR overlap of the sphere-plane pair's reduced modulus and work of adhesion.
+add_test(NAME dem/wall_material COMMAND ${VOFDEM_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/test/dem/test_wall_material.py $<TARGET_FILE:vofdem_app>)
+set_tests_properties(dem/wall_material PROPERTIES LABELS "quick;dem" PROCESSORS 2 TIMEOUT 300)
 add_test(NAME dem/stop_at_rest COMMAND ${VOFDEM_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/test/dem/test_stop_at_rest.py $<TARGET_FILE:vofdem_app>)
 set_tests_properties(dem/stop_at_rest PROPERTIES LABELS "quick;dem" PROCESSORS 2 TIMEOUT 300)
 # -dem_insert_<name>_every: insertion in batches, fewer rebuilds, nothing lost.
