@@ -63,6 +63,8 @@ vofdem_bad_input(scene_not_mapping  "not-a-mapping\\.yaml:1:1: a scene must be a
 vofdem_bad_input(typo_in_scene      "unknown or unused option -dem_restitusion \\(did you mean -dem_restitution\\?\\)" -options_file_yaml ${_bad}/typo.yaml)
 vofdem_bad_input(unknown_physics    "option -physics: unknown name 'magic'"        -physics dem,magic)
 vofdem_bad_input(physics_not_built  "option -physics: unknown name 'energy' \\(known: dem, flow, vof, scalar\\)" -physics flow,energy)
+# A grid PETSc cannot split over the ranks: one line naming -grid_cells and -grid_ranks, not PETSc's trace.
+vofdem_bad_input(grid_too_few_cells "options -grid_cells 1,1,1 and -grid_ranks: the cells cannot be split over 2 ranks \\(PETSc: Partition in . direction is too fine" -physics dem -grid_upper 0.004,0.004,0.004 -grid_cells 1,1,1 -dem_fill_count 1 -dem_radius 5e-4)
 vofdem_bad_input(vof_without_flow   "option -physics: 'vof' needs 'flow'"           -physics vof)
 vofdem_bad_input(vof_dem_no_eps_rate "option -coupling_eps_rate: particles with a free surface" -physics dem,flow,vof -grid_upper 0.01,0.01,0.01 -coupling_eps_rate 0)
 vofdem_bad_input(contact_angle_range "option -coupling_contact_angle: 200\\.? is out of range" -physics dem,flow,vof -grid_upper 0.01,0.01,0.01 -coupling_contact_angle 200)

@@ -44,6 +44,23 @@ PetscErrorCode Grid::SetFromOptions(MPI_Comm comm) {
   PetscFunctionReturn(0);
 }
 
+PetscErrorCode Grid::SetUpDMDA(DM dm) const {
+  PetscMPIInt size;
+
+  PetscFunctionBeginUser;
+  PetscCallMPI(MPI_Comm_size(comm_, &size));
+  PetscCall(PetscPushErrorHandler(PetscReturnErrorHandler, nullptr));
+  const PetscErrorCode ierr = DMSetUp(dm);
+  PetscCall(PetscPopErrorHandler());
+  if (ierr) {
+    char *why = nullptr;
+    PetscCall(PetscErrorMessage(ierr, nullptr, &why));
+    VofdemInputError(comm_, "options -grid_cells %d,%d,%d and -grid_ranks: the cells cannot be split over %d ranks (PETSc: %s); give more cells per direction, fewer ranks, or a split with -grid_ranks",
+                     (int)cells_[0], (int)cells_[1], (int)cells_[2], (int)size, why && why[0] ? why : "DMSetUp failed");
+  }
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode Grid::SetUp(PetscBool needVertexDM) {
   PetscMPIInt     size;
   const PetscInt *l[3];
@@ -62,7 +79,7 @@ PetscErrorCode Grid::SetUp(PetscBool needVertexDM) {
   PetscCall(DMDACreate3d(comm_, bc[0], bc[1], bc[2], DMDA_STENCIL_STAR, cells_[0], cells_[1], cells_[2], md[0], md[1], md[2], 1, 1, lc[0], lc[1], lc[2],
                          &cellDM_));
   PetscCall(DMSetOptionsPrefix(cellDM_, "grid_"));
-  PetscCall(DMSetUp(cellDM_));
+  PetscCall(SetUpDMDA(cellDM_));
   PetscCall(DMDASetUniformCoordinates(cellDM_, lower_[0] + h_[0] / 2, upper_[0] - h_[0] / 2, lower_[1] + h_[1] / 2, upper_[1] - h_[1] / 2,
                                       lower_[2] + h_[2] / 2, upper_[2] - h_[2] / 2));
   PetscCall(DMDAGetCorners(cellDM_, &start_[0], &start_[1], &start_[2], &count_[0], &count_[1], &count_[2]));
@@ -81,7 +98,7 @@ PetscErrorCode Grid::SetUp(PetscBool needVertexDM) {
     // BOX stencil: DMSwarmInsertPointsUsingCellDM and point location need it (notes).
     PetscCall(DMDACreate3d(comm_, DM_BOUNDARY_NONE, DM_BOUNDARY_NONE, DM_BOUNDARY_NONE, DMDA_STENCIL_BOX, cells_[0] + 1, cells_[1] + 1,
                            cells_[2] + 1, m[0], m[1], m[2], 1, 1, lv[0].data(), lv[1].data(), lv[2].data(), &vertexDM_));
-    PetscCall(DMSetUp(vertexDM_));
+    PetscCall(SetUpDMDA(vertexDM_));
     PetscCall(DMDASetUniformCoordinates(vertexDM_, lower_[0], upper_[0], lower_[1], upper_[1], lower_[2], upper_[2]));
   }
   PetscFunctionReturn(0);

@@ -35,7 +35,7 @@ PetscErrorCode StaggeredGrid::Create(const Grid &grid) {
   const PetscInt *N = grid.Cells();
   PetscCall(DMDACreate3d(grid.Comm(), bt[0], bt[1], bt[2], DMDA_STENCIL_BOX, N[0], N[1], N[2], m[0], m[1], m[2], 1, 2, own[0].data(), own[1].data(),
                          own[2].data(), &cells_));
-  PetscCall(DMSetUp(cells_));
+  PetscCall(grid.SetUpDMDA(cells_));
   for (int d = 0; d < 3; ++d) {
     std::vector<PetscInt> lf[3] = {own[0], own[1], own[2]};
     PetscInt              n[3]  = {N[0], N[1], N[2]};
@@ -45,13 +45,13 @@ PetscErrorCode StaggeredGrid::Create(const Grid &grid) {
     }
     PetscCall(DMDACreate3d(grid.Comm(), bt[0], bt[1], bt[2], DMDA_STENCIL_BOX, n[0], n[1], n[2], m[0], m[1], m[2], 1, 2, lf[0].data(), lf[1].data(),
                            lf[2].data(), &face_[d]));
-    PetscCall(DMSetUp(face_[d]));
+    PetscCall(grid.SetUpDMDA(face_[d]));
     // Matrices only on STAR width 1 (notes: BOX preallocates (2s+1)^3 entries per row).
     DMBoundaryType bs[3];
     for (int e = 0; e < 3; ++e) bs[e] = grid.Periodic(e) ? DM_BOUNDARY_PERIODIC : DM_BOUNDARY_NONE;
     PetscCall(DMDACreate3d(grid.Comm(), bs[0], bs[1], bs[2], DMDA_STENCIL_STAR, n[0], n[1], n[2], m[0], m[1], m[2], 1, 1, lf[0].data(), lf[1].data(),
                            lf[2].data(), &faceStar_[d]));
-    PetscCall(DMSetUp(faceStar_[d]));
+    PetscCall(grid.SetUpDMDA(faceStar_[d]));
   }
   PetscFunctionReturn(0);
 }

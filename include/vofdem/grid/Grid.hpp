@@ -20,6 +20,10 @@ public:
   PetscErrorCode Repartition(const std::vector<PetscInt> cellsPerRank[3]);
   PetscErrorCode View(PetscViewer viewer) const;
   PetscErrorCode Destroy();
+  // DMSetUp of a DMDA on this grid's cells (the cell, vertex and staggered DMDAs): a split PETSc refuses
+  // (more ranks than cells in a direction, fewer cells per rank than the stencil) becomes one line
+  // naming -grid_cells and -grid_ranks instead of PETSc's trace.
+  PetscErrorCode SetUpDMDA(DM dm) const;
 
   DM CellDM() const { return cellDM_; }
   DM VertexDM() const { return vertexDM_; }
