@@ -12,6 +12,7 @@ static const char help[] = "The passive scalar module (-physics flow,scalar; doc
                            "Exits non-zero on failure.\n\n";
 
 #include "vofdem/base/Runtime.hpp"
+#include "vofdem/examples/ExampleTools.hpp"
 #include "vofdem/examples/Help.hpp"
 #include "vofdem/scalar/ScalarModule.hpp"
 #include "vofdem/sim/Simulation.hpp"
@@ -156,7 +157,7 @@ PetscErrorCode Run() {
       PetscCall(PetscPrintf(PETSC_COMM_WORLD, "(a) %3d cells: L1 error %.4e, max error %.4e of the amplitude\n", (int)cells[g], (double)l1, (double)linf));
     }
     if (nCells >= 2) {
-      const PetscReal order = std::log(l1s[nCells - 2] / l1s[nCells - 1]) / std::log((PetscReal)cells[nCells - 1] / cells[nCells - 2]);
+      const PetscReal order = vofdem::example::ObservedOrder(l1s[nCells - 2], l1s[nCells - 1], cells[nCells - 2], cells[nCells - 1]);
       const bool      good  = order >= kMinOrder;
       ok                    = ok && good ? PETSC_TRUE : PETSC_FALSE;
       PetscCall(PetscPrintf(PETSC_COMM_WORLD, "(a) L1 order %.3f (>= %.1f): %s\n", (double)order, (double)kMinOrder, good ? "ok" : "FAIL"));
