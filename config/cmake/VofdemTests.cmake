@@ -63,6 +63,11 @@ vofdem_bad_input(scene_not_mapping  "not-a-mapping\\.yaml:1:1: a scene must be a
 vofdem_bad_input(typo_in_scene      "unknown or unused option -dem_restitusion \\(did you mean -dem_restitution\\?\\)" -options_file_yaml ${_bad}/typo.yaml)
 vofdem_bad_input(unknown_physics    "option -physics: unknown name 'magic'"        -physics dem,magic)
 vofdem_bad_input(physics_not_built  "option -physics: unknown name 'energy' \\(known: dem, flow, vof, scalar\\)" -physics flow,energy)
+# The registry's needs, and the passive scalar's own checks.
+vofdem_bad_input(scalar_needs_flow  "option -physics: 'scalar' needs 'flow' \\(the scalar moves with the fluid\\)" -physics scalar)
+vofdem_bad_input(scalar_with_dem    "option -physics: 'scalar' does not take particles into account yet" -physics dem,flow,scalar -grid_upper 0.01,0.01,0.01)
+vofdem_bad_input(scalar_sine_walls  "option -scalar_sine_periods: a sine along x needs a periodic box in x" -physics flow,scalar -scalar_initial sine)
+vofdem_bad_input(scalar_box_corner  "option -scalar_box_upper: give both corners of the box" -physics flow,scalar -scalar_box_lower 0,0,0)
 # A grid PETSc cannot split over the ranks: one line naming -grid_cells and -grid_ranks, not PETSc's trace.
 vofdem_bad_input(grid_too_few_cells "options -grid_cells 1,1,1 and -grid_ranks: the cells cannot be split over 2 ranks \\(PETSc: Partition in . direction is too fine" -physics dem -grid_upper 0.004,0.004,0.004 -grid_cells 1,1,1 -dem_fill_count 1 -dem_radius 5e-4)
 vofdem_bad_input(vof_without_flow   "option -physics: 'vof' needs 'flow'"           -physics vof)
