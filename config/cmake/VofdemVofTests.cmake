@@ -97,3 +97,6 @@ add_test(NAME vof/liquid_jet_scene
 set_tests_properties(vof/liquid_jet_scene PROPERTIES LABELS "quick;vof" PROCESSORS 1 TIMEOUT 120
                      PASS_REGULAR_EXPRESSION "inflow face xlo brings phase 1 at fraction 1\\.? through the band 0.0875\\.\\.0.1125 m.*step +20 .*in [0-9.e+-]+ out [0-9.e+-]+ m\\^3  balance -?[0-9.]+e-1[3-9].*finished after 20 steps"
                      ENVIRONMENT "OMPI_ALLOW_RUN_AS_ROOT=1;OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1;OMP_NUM_THREADS=1")
+# -vof_advect 0: the interface is frozen bit for bit while the flow steps (the control, advecting, moves it).
+add_test(NAME vof/frozen_interface COMMAND ${VOFDEM_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/test/vof/test_frozen_interface.py $<TARGET_FILE:vofdem_app>)
+set_tests_properties(vof/frozen_interface PROPERTIES LABELS "quick;vof" PROCESSORS 2 TIMEOUT 300)
