@@ -170,3 +170,6 @@ include(VofdemStructureTests)  # the include floors (issue 50)
 # -help lists the options of every named insertion source and wall (and of NAME) instead of stopping at a missing one.
 add_test(NAME dem/help_sources COMMAND ${VOFDEM_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/test/dem/test_help_sources.py $<TARGET_FILE:vofdem_app>)
 set_tests_properties(dem/help_sources PROPERTIES LABELS "quick;dem" PROCESSORS 2 TIMEOUT 300)
+# -coupling_kernel_truncation: exact projection whatever the cut, and the cut has its effect on eps.
+add_test(NAME coupling/kernel_truncation COMMAND ${VOFDEM_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/test/coupling/test_kernel_truncation.py $<TARGET_FILE:vofdem_app>)
+set_tests_properties(coupling/kernel_truncation PROPERTIES LABELS "quick;coupling" PROCESSORS 2 TIMEOUT 300)
