@@ -3,7 +3,7 @@
 
 #include "vofdem/base/ModuleRegistry.hpp"
 
-#include <petscviewerhdf5.h>
+#include "vofdem/base/ViewerGroup.hpp"
 
 #include <cstdio>
 
@@ -62,19 +62,11 @@ PetscErrorCode FlowModule::ViewTimeStep(PetscViewer viewer) const {
 }
 
 PetscErrorCode FlowModule::Save(PetscViewer viewer) {
-  PetscFunctionBeginUser;
-  PetscCall(PetscViewerHDF5PushGroup(viewer, "flow"));
-  PetscCall(flow_.Save(viewer));
-  PetscCall(PetscViewerHDF5PopGroup(viewer));
-  PetscFunctionReturn(0);
+  return InViewerGroup(viewer, "flow", [&] { return flow_.Save(viewer); });
 }
 
 PetscErrorCode FlowModule::Load(PetscViewer viewer) {
-  PetscFunctionBeginUser;
-  PetscCall(PetscViewerHDF5PushGroup(viewer, "flow"));
-  PetscCall(flow_.Load(viewer));
-  PetscCall(PetscViewerHDF5PopGroup(viewer));
-  PetscFunctionReturn(0);
+  return InViewerGroup(viewer, "flow", [&] { return flow_.Load(viewer); });
 }
 
 PetscErrorCode FlowModule::Finish() {

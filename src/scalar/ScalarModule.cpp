@@ -4,7 +4,7 @@
 #include "vofdem/base/ModuleRegistry.hpp"
 #include "vofdem/base/Runtime.hpp"
 
-#include <petscviewerhdf5.h>
+#include "vofdem/base/ViewerGroup.hpp"
 
 #include <cmath>
 #include <cstdio>
@@ -66,21 +66,21 @@ PetscErrorCode ScalarModule::Monitor(MonitorPart *part) {
 }
 
 PetscErrorCode ScalarModule::Save(PetscViewer viewer) {
-  PetscFunctionBeginUser;
-  PetscCall(PetscViewerHDF5PushGroup(viewer, "scalar"));
-  PetscCall(scalar_.Save(viewer));
-  PetscCall(PetscViewerHDF5WriteAttribute(viewer, "/scalar", "scalar_initial_total", PETSC_REAL, &total0_));
-  PetscCall(PetscViewerHDF5PopGroup(viewer));
-  PetscFunctionReturn(0);
+  return InViewerGroup(viewer, "scalar", [&]() -> PetscErrorCode {
+    PetscFunctionBeginUser;
+    PetscCall(scalar_.Save(viewer));
+    PetscCall(PetscViewerHDF5WriteAttribute(viewer, "/scalar", "scalar_initial_total", PETSC_REAL, &total0_));
+    PetscFunctionReturn(0);
+  });
 }
 
 PetscErrorCode ScalarModule::Load(PetscViewer viewer) {
-  PetscFunctionBeginUser;
-  PetscCall(PetscViewerHDF5PushGroup(viewer, "scalar"));
-  PetscCall(scalar_.Load(viewer));
-  PetscCall(PetscViewerHDF5ReadAttribute(viewer, "/scalar", "scalar_initial_total", PETSC_REAL, nullptr, &total0_));
-  PetscCall(PetscViewerHDF5PopGroup(viewer));
-  PetscFunctionReturn(0);
+  return InViewerGroup(viewer, "scalar", [&]() -> PetscErrorCode {
+    PetscFunctionBeginUser;
+    PetscCall(scalar_.Load(viewer));
+    PetscCall(PetscViewerHDF5ReadAttribute(viewer, "/scalar", "scalar_initial_total", PETSC_REAL, nullptr, &total0_));
+    PetscFunctionReturn(0);
+  });
 }
 
 PetscErrorCode ScalarModule::SavedBytes(PetscInt64 *bytes) const {

@@ -3,7 +3,7 @@
 
 #include "vofdem/base/ModuleRegistry.hpp"
 
-#include <petscviewerhdf5.h>
+#include "vofdem/base/ViewerGroup.hpp"
 
 #include <algorithm>
 #include <cstdio>
@@ -135,23 +135,23 @@ PetscErrorCode VofModule::ViewTimeStep(PetscViewer viewer) const {
 }
 
 PetscErrorCode VofModule::Save(PetscViewer viewer) {
-  PetscFunctionBeginUser;
-  PetscCall(PetscViewerHDF5PushGroup(viewer, "vof"));
-  PetscCall(vof_.Save(viewer));
-  PetscCall(PetscViewerHDF5WriteAttribute(viewer, "/vof", "vof_initial_volume", PETSC_REAL, &volume0_));
-  if (withParticles_) PetscCall(PetscViewerHDF5WriteAttribute(viewer, "/vof", "vof_initial_phase0_volume", PETSC_REAL, &otherVolume0_));
-  PetscCall(PetscViewerHDF5PopGroup(viewer));
-  PetscFunctionReturn(0);
+  return InViewerGroup(viewer, "vof", [&]() -> PetscErrorCode {
+    PetscFunctionBeginUser;
+    PetscCall(vof_.Save(viewer));
+    PetscCall(PetscViewerHDF5WriteAttribute(viewer, "/vof", "vof_initial_volume", PETSC_REAL, &volume0_));
+    if (withParticles_) PetscCall(PetscViewerHDF5WriteAttribute(viewer, "/vof", "vof_initial_phase0_volume", PETSC_REAL, &otherVolume0_));
+    PetscFunctionReturn(0);
+  });
 }
 
-PetscErrorCode VofModule::Load(PetscViewer viewer) {
-  PetscFunctionBeginUser;  // after the flow: the flow's loaded density and viscosity already match alpha
-  PetscCall(PetscViewerHDF5PushGroup(viewer, "vof"));
-  PetscCall(vof_.Load(viewer));
-  PetscCall(PetscViewerHDF5ReadAttribute(viewer, "/vof", "vof_initial_volume", PETSC_REAL, nullptr, &volume0_));
-  if (withParticles_) PetscCall(PetscViewerHDF5ReadAttribute(viewer, "/vof", "vof_initial_phase0_volume", PETSC_REAL, nullptr, &otherVolume0_));
-  PetscCall(PetscViewerHDF5PopGroup(viewer));
-  PetscFunctionReturn(0);
+PetscErrorCode VofModule::Load(PetscViewer viewer) {  // after the flow: the flow's loaded density and viscosity already match alpha
+  return InViewerGroup(viewer, "vof", [&]() -> PetscErrorCode {
+    PetscFunctionBeginUser;
+    PetscCall(vof_.Load(viewer));
+    PetscCall(PetscViewerHDF5ReadAttribute(viewer, "/vof", "vof_initial_volume", PETSC_REAL, nullptr, &volume0_));
+    if (withParticles_) PetscCall(PetscViewerHDF5ReadAttribute(viewer, "/vof", "vof_initial_phase0_volume", PETSC_REAL, nullptr, &otherVolume0_));
+    PetscFunctionReturn(0);
+  });
 }
 
 void RegisterModule_vof(ModuleRegistry &registry) {
