@@ -31,11 +31,7 @@ namespace {
 const PetscReal kU = 1, kL = 1, kAmplitude = 0.5, kFinal = 1;
 const PetscReal kMinOrder = 1.5, kTolerance = 0.02, kBound = 1e-12, kConservation = 1e-12;
 
-PetscErrorCode SetOption(const char *name, const std::string &value) {
-  PetscFunctionBeginUser;
-  PetscCall(PetscOptionsSetValue(nullptr, name, value.empty() ? nullptr : value.c_str()));
-  PetscFunctionReturn(0);
-}
+using vofdem::example::SetOption;
 
 // The box and the flow of every case: n cells along x, 4 across, periodic, U along x.
 PetscErrorCode SetScene(PetscInt n) {

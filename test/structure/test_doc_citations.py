@@ -10,6 +10,9 @@ import re
 import sys
 import tempfile
 
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import structurecheck  # noqa: E402
+
 TREES = ["src", "include", "examples", "test", "scripts", "config", "CMakeLists.txt"]
 SKIP = {os.path.join("examples", "output")}  # reference outputs: what the programs print, checked elsewhere
 OUTSIDE = re.compile(r"(?<![a-z/])(PHYSICS|VERIFICATION|ARCHITECTURE)\.md|petsc-3\.18\.md|peer-codes\.md|\.\./shared/|/work/shared")
@@ -76,25 +79,11 @@ def self_test():
         found = check(root)
         missed = [rel for rel in planted if not any(p.startswith(rel + ":") for p in found)]
         extra = [p for p in found if p.startswith("src/flow/Fine.cpp")]
-        for rel in missed:
-            print(f"self-test: the broken citation in {rel} was not reported")
-        for p in extra:
-            print(f"self-test: reported a good citation: {p}")
-        print(f"self-test: {len(planted) - len(missed)} of {len(planted)} broken citations caught, {len(extra)} false reports")
-        return 1 if missed or extra else 0
+        return structurecheck.self_test_verdict(list(planted), missed, extra, "broken citation")
 
 
 def main():
-    if sys.argv[1:] == ["--self-test"]:
-        return self_test()
-    if len(sys.argv) != 2:
-        print(__doc__)
-        return 2
-    problems = check(sys.argv[1])
-    for p in problems:
-        print(p)
-    print(f"doc citations: {len(problems)} broken")
-    return 1 if problems else 0
+    return structurecheck.main(__doc__, check, self_test, "doc citations", "broken")
 
 
 if __name__ == "__main__":

@@ -10,6 +10,9 @@ import re
 import sys
 import tempfile
 
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import structurecheck  # noqa: E402
+
 # The folders each floor may include (itself always).
 ALLOWED = {
     "base": set(),
@@ -89,25 +92,11 @@ def self_test():
         found = check(root)
         missed = [rel for rel, _ in offences if not any(p.startswith(rel + ":3:") for p in found)]
         extra = [p for p in found if not any(p.startswith(rel + ":") for rel, _ in offences)]
-        for rel in missed:
-            print(f"self-test: the offence in {rel} was not reported")
-        for p in extra:
-            print(f"self-test: reported an include that is allowed: {p}")
-        print(f"self-test: {len(offences) - len(missed)} of {len(offences)} offences caught, {len(extra)} false reports")
-        return 1 if missed or extra else 0
+        return structurecheck.self_test_verdict([rel for rel, _ in offences], missed, extra, "offence")
 
 
 def main():
-    if sys.argv[1:] == ["--self-test"]:
-        return self_test()
-    if len(sys.argv) != 2:
-        print(__doc__)
-        return 2
-    problems = check(sys.argv[1])
-    for p in problems:
-        print(p)
-    print(f"include floors: {len(problems)} offending includes")
-    return 1 if problems else 0
+    return structurecheck.main(__doc__, check, self_test, "include floors", "offending includes")
 
 
 if __name__ == "__main__":
