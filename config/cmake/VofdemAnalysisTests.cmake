@@ -31,3 +31,7 @@ set_tests_properties(analysis/clumps_run_and_tool PROPERTIES LABELS "quick;analy
 # scripts/calibrate-powder's crossing of the angle and density target curves, on tables of known fields (no run).
 add_test(NAME analysis/calibrate_powder COMMAND ${VOFDEM_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/test/analysis/test_calibrate_powder.py)
 set_tests_properties(analysis/calibrate_powder PROPERTIES LABELS "quick;analysis")
+# Five analysis options (bins, surface grid, reference radius, repose fit, clump resolution) against values they must give.
+add_test(NAME analysis/options COMMAND ${VOFDEM_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/test/analysis/test_analysis_options.py
+         $<TARGET_FILE:vofdem_app> $<TARGET_FILE:vofdem_analyze>)
+set_tests_properties(analysis/options PROPERTIES LABELS "quick;analysis" PROCESSORS 2 TIMEOUT 300)

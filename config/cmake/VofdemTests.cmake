@@ -173,3 +173,10 @@ set_tests_properties(dem/help_sources PROPERTIES LABELS "quick;dem" PROCESSORS 2
 # -coupling_kernel_truncation: exact projection whatever the cut, and the cut has its effect on eps.
 add_test(NAME coupling/kernel_truncation COMMAND ${VOFDEM_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/test/coupling/test_kernel_truncation.py $<TARGET_FILE:vofdem_app>)
 set_tests_properties(coupling/kernel_truncation PROPERTIES LABELS "quick;coupling" PROCESSORS 2 TIMEOUT 300)
+# Four coupling options (drag switch, eps floor, self-correction threshold, smoothing crossover), each against a run it
+# must equal bit for bit and one it must not.
+add_test(NAME coupling/options COMMAND ${VOFDEM_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/test/coupling/test_coupling_options.py $<TARGET_FILE:vofdem_app>)
+set_tests_properties(coupling/options PROPERTIES LABELS "quick;coupling" PROCESSORS 2 TIMEOUT 300)
+# -dem_rolling_damping: 0 is epsd2 bit for bit and leaves the sphere rocking; 0.3 and 1 damp it out (1 and 2 ranks).
+add_test(NAME dem/rolling_damping COMMAND ${VOFDEM_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/test/dem/test_rolling_damping.py $<TARGET_FILE:vofdem_app>)
+set_tests_properties(dem/rolling_damping PROPERTIES LABELS "quick;dem" PROCESSORS 2 TIMEOUT 300)
