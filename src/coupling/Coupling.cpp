@@ -1,6 +1,7 @@
 // Options, set-up, banner and Save/Load of the coupling (Coupling.hpp); the step is CouplingStep.cpp.
 #include "vofdem/coupling/Coupling.hpp"
 
+#include "vofdem/base/NamedTable.hpp"
 #include "vofdem/base/Options.hpp"
 #include "vofdem/base/Runtime.hpp"
 
@@ -19,15 +20,12 @@ PetscErrorCode Coupling::SetFromOptions(MPI_Comm comm) {
   PetscOptionsBegin(comm, "coupling_", "Coupling: semi-resolved CFD-DEM (docs/physics.md K1-K3, F5, F6, P1)", "Coupling");
   {
     OptionReader             opt(PetscOptionsObject);
-    std::vector<std::string> k = {kernelName_};
-    PetscCall(opt.NameList("-kernel", "Kernel of averaging and projection: smooth ((1 - r^2/rc^2)^4, rc = sqrt(8) H), truncated (Gaussian cut at -coupling_kernel_truncation H, seed 000), unresolved (the cell that contains the particle: unresolved CFD-DEM, cells of 3 d or more), divided (the cells the particle's volume overlaps: 32 cubes of side R/2 split among cells by overlap, CFDEM's divided void fraction made continuous in the particle's position; for cells that hold few particles)",
-                           {"smooth", "truncated", "unresolved", "divided"}, &k));
+    std::vector<std::string> k    = {kernelName_};
+    const std::string        help = "Kernel of averaging and projection: " + table::Help(kernel::kKernels);
+    PetscCall(opt.NameList("-kernel", help.c_str(), table::Names(kernel::kKernels), &k));
     if (k.size() != 1) VofdemInputError(comm, "option -coupling_kernel: give one kernel");
     kernelName_   = k[0];
-    kernel_.shape = kernelName_ == "smooth"      ? kernel::Shape::Smooth
-                    : kernelName_ == "truncated" ? kernel::Shape::Truncated
-                    : kernelName_ == "divided"   ? kernel::Shape::Divided
-                                                 : kernel::Shape::Unresolved;
+    kernel_.shape = kernel::kKernels[table::Find(kernel::kKernels, kernelName_)].shape;
     PetscCall(opt.Real("-kernel_width", "Kernel width H in particle diameters (kappa of K1: H = kappa d)", "-", &kappa_, RealRange::Positive()));
     PetscCall(opt.Real("-kernel_min_width", "Smallest kernel width in cells: H = max(kappa d, this x the largest cell spacing), so that coarse cells still see a smooth kernel", "cells",
                        &minWidthCells_, RealRange::Positive()));

@@ -1,4 +1,5 @@
 #include "vofdem/dem/Dem.hpp"
+#include "vofdem/dem/ContactLawTable.hpp"
 
 #include "vofdem/base/Options.hpp"
 #include "vofdem/base/Runtime.hpp"
@@ -24,14 +25,12 @@ PetscErrorCode Dem::SetFromOptions(MPI_Comm comm) {
     PetscCall(opt.Real("-restitution", "Coefficient of restitution e (P3)", "-", &material_.restitution, RealRange::LeftOpen(0, 1)));
     PetscCall(opt.Real("-friction", "Sliding friction coefficient mu_s (P3)", "-", &material_.friction, RealRange::NonNegative()));
     {
-      static const std::vector<std::string> models = {"none", "cdt", "epsd", "epsd2"};
-      std::vector<std::string>              chosen = {"none"};
-      PetscCall(opt.NameList("-rolling", "Rolling resistance (P5): none, cdt (constant torque), epsd (elastic-plastic spring-dashpot, Ai et al.), epsd2 (LIGGGHTS' undamped epsd2)",
-                             models, &chosen));
-      if (chosen.size() != 1) VofdemInputError(comm, "option -dem_rolling: give one model (none, cdt, epsd or epsd2)");
-      rolling_ = chosen[0] == "cdt" ? hertz::Rolling::ConstantTorque
-               : chosen[0] == "epsd" ? hertz::Rolling::Epsd
-               : chosen[0] == "epsd2" ? hertz::Rolling::Epsd2 : hertz::Rolling::None;
+      std::vector<std::string> chosen = {contact::kRollingLaws[rollingRow_].name};
+      const std::string        help   = "Rolling resistance (P5): " + contact::Help(contact::kRollingLaws);
+      PetscCall(opt.NameList("-rolling", help.c_str(), contact::Names(contact::kRollingLaws), &chosen));
+      if (chosen.size() != 1) VofdemInputError(comm, "option -dem_rolling: give one model (%s)", contact::Choices(contact::kRollingLaws).c_str());
+      rollingRow_ = contact::Find(contact::kRollingLaws, chosen[0]);
+      rolling_    = contact::kRollingLaws[rollingRow_].model;
       PetscCall(opt.Real("-rolling_friction", "Rolling friction coefficient mu_r (P5)", "-", &material_.rollingFriction, RealRange::NonNegative()));
       PetscCall(opt.Real("-rolling_damping", "EPSD rolling damping as a fraction of critical", "-", &rollingParams_.eta, RealRange::NonNegative()));
       static const std::vector<std::string> loads = {"compression", "magnitude", "adhesion"};
@@ -43,21 +42,23 @@ PetscErrorCode Dem::SetFromOptions(MPI_Comm comm) {
       rollingParams_.load = load[0] == "magnitude" ? hertz::RollingLoad::Magnitude : load[0] == "adhesion" ? hertz::RollingLoad::Adhesion : hertz::RollingLoad::Compression;
     }
     {
-      static const std::vector<std::string> contacts = {"hertz", "linear"};
-      std::vector<std::string>              chosen   = {"hertz"};
-      PetscCall(opt.NameList("-contact", "Normal contact law: hertz (Hertz-Mindlin, P3) or linear (spring-dashpot, P4)", contacts, &chosen));
-      if (chosen.size() != 1) VofdemInputError(comm, "option -dem_contact: give one law (hertz or linear)");
-      linear_ = (PetscBool)(chosen[0] == "linear");
+      std::vector<std::string> chosen = {contact::kNormalLaws[normalRow_].name};
+      const std::string        help   = "Normal contact law: " + contact::Help(contact::kNormalLaws);
+      PetscCall(opt.NameList("-contact", help.c_str(), contact::Names(contact::kNormalLaws), &chosen));
+      if (chosen.size() != 1) VofdemInputError(comm, "option -dem_contact: give one law (%s)", contact::Choices(contact::kNormalLaws).c_str());
+      normalRow_ = contact::Find(contact::kNormalLaws, chosen[0]);
+      linear_    = (PetscBool)contact::kNormalLaws[normalRow_].linear;
       PetscCall(opt.Real("-linear_stiffness", "Normal stiffness k_n of the linear law (seed 002: 1e5)", "N/m", &linearKn_, RealRange::Positive()));
       PetscCall(opt.Real("-linear_tangential_ratio", "k_t / k_n of the linear law (seed 002: 1)", "-", &linearKtRatio_, RealRange::Positive()));
     }
     {
-      static const std::vector<std::string> models = {"none", "jkr", "sjkr"};
-      std::vector<std::string>              chosen = {"none"};
-      PetscCall(opt.NameList("-cohesion", "Adhesion between touching surfaces: none, jkr (JKR with hysteresis, P6), sjkr (LIGGGHTS' simplified JKR, F = k A)", models, &chosen));
-      if (chosen.size() != 1) VofdemInputError(comm, "option -dem_cohesion: give one model (none, jkr or sjkr)");
-      jkr_  = (PetscBool)(chosen[0] == "jkr");
-      sjkr_ = (PetscBool)(chosen[0] == "sjkr");
+      std::vector<std::string> chosen = {contact::kCohesionLaws[cohesionRow_].name};
+      const std::string        help   = "Adhesion between touching surfaces: " + contact::Help(contact::kCohesionLaws);
+      PetscCall(opt.NameList("-cohesion", help.c_str(), contact::Names(contact::kCohesionLaws), &chosen));
+      if (chosen.size() != 1) VofdemInputError(comm, "option -dem_cohesion: give one model (%s)", contact::Choices(contact::kCohesionLaws).c_str());
+      cohesionRow_ = contact::Find(contact::kCohesionLaws, chosen[0]);
+      jkr_         = (PetscBool)(contact::kCohesionLaws[cohesionRow_].model == kJkr);
+      sjkr_        = (PetscBool)(contact::kCohesionLaws[cohesionRow_].model == kSjkr);
       PetscCall(opt.Real("-cohesion_energy_density", "SJKR cohesion energy density k: F = k A_overlap (P6; LIGGGHTS' cohesionEnergyDensity)", "J/m^3", &sjkrDensity_,
                          RealRange::NonNegative()));
       if (sjkr_ && sjkrDensity_ == 0) VofdemInputError(comm, "option -dem_cohesion sjkr needs -dem_cohesion_energy_density > 0");
@@ -87,7 +88,8 @@ PetscErrorCode Dem::SetFromOptions(MPI_Comm comm) {
       PetscCall(opt.Real("-lubrication_max_gap", "Gap beyond which lubrication is dropped (default 0.2 -dem_radius)", "m", &lubrication_.maxGap, RealRange::Positive()));
       if (lubrication_.viscosity > 0 && !(lubrication_.maxGap > lubrication_.minGap))
         VofdemInputError(comm, "option -dem_lubrication_max_gap: %g m must exceed -dem_lubrication_min_gap %g m", (double)lubrication_.maxGap, (double)lubrication_.minGap);
-      if (linear_ && jkr_) VofdemInputError(comm, "option -dem_cohesion jkr needs -dem_contact hertz (JKR is a Hertzian theory)");
+      if (contact::kNormalLaws[normalRow_].linear && contact::kCohesionLaws[cohesionRow_].hertzOnly)
+        VofdemInputError(comm, "option -dem_cohesion %s needs -dem_contact hertz (a Hertzian theory)", contact::kCohesionLaws[cohesionRow_].name);
     }
     PetscCall(opt.Bool("-limit_force", "Clip the normal contact force at zero: no tension from damping as a contact ends (LIGGGHTS' limitForce); the restitution then differs from -dem_restitution", &limitForce_));
     PetscCall(opt.Real("-wall_youngs_modulus", "Young's modulus of the walls (default -1: each particle type's)", "Pa", &wallYoungs_));
@@ -485,7 +487,6 @@ PetscErrorCode Dem::View(PetscViewer viewer) const {
                                          pairValues_[k].restitution < 0 || pairValues_[k].friction < 0 ? " (unset values: mean of the two types)" : ""));
       }
   }
-  static const char *const rolling[] = {"none", "constant torque", "EPSD", "EPSD2 (LIGGGHTS)"};
   char                     law[128];
   if (linear_) std::snprintf(law, sizeof law, "linear spring-dashpot, k_n %g N/m, k_t/k_n %g (P4)", (double)linearKn_, (double)linearKtRatio_);
   else std::snprintf(law, sizeof law, "Hertz-Mindlin (P3)");
@@ -493,7 +494,7 @@ PetscErrorCode Dem::View(PetscViewer viewer) const {
   if (oneType) std::snprintf(muR, sizeof muR, "mu_r %g", (double)shown.rollingFriction);
   static const char *const loads[] = {"", ", cap mu_r R* |F_n|", ", cap mu_r R* (F_n + 2 F_c)"};
   PetscCall(PetscViewerASCIIPrintf(viewer, "dem: contacts: %s with damping, tangential springs and Coulomb friction between spheres and with the box faces%s; rolling resistance: %s, %s%s (P5)\n",
-                                   law, limitForce_ ? ", normal force clipped at zero" : "", rolling[(int)rolling_], muR,
+                                   law, limitForce_ ? ", normal force clipped at zero" : "", contact::kRollingLaws[rollingRow_].shown, muR,
                                    rolling_ == hertz::Rolling::None ? "" : loads[(int)rollingParams_.load]));
   if (jkr_ && oneType)
     PetscCall(PetscViewerASCIIPrintf(viewer, "dem: adhesion: JKR (P6), surface energy %g J/m^2 (work of adhesion %g J/m^2), walls %g J/m^2; bonds break up to %g m apart; bonds at rest allow steps up to %g s (HertzMindlin.hpp SpinStep)\n",

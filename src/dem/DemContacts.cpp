@@ -2,6 +2,7 @@
 // exchange springs -> new list -> springs back onto pairs) and the force evaluation.
 #include "vofdem/dem/Dem.hpp"
 #include "vofdem/dem/ContactLaw.hpp"
+#include "vofdem/dem/ContactLawTable.hpp"
 #include "vofdem/dem/WallContacts.hpp"
 
 #include <algorithm>
@@ -183,30 +184,26 @@ void Dem::JkrPairConstants() {
 
 PetscErrorCode Dem::ComputeForces(PetscReal dt) {
   PetscFunctionBeginUser;
-  // The rolling and adhesion models are chosen once per scene and bound here, outside the loops.
-  using R         = hertz::Rolling;
-  const bool near = vdw_.hamaker > 0 || lubrication_.viscosity > 0;
-  auto       with = [&](auto rolling, auto multi) {
-    constexpr R    RM = decltype(rolling)::value;
-    constexpr bool MU = decltype(multi)::value;
-    if (jkr_) return near ? ComputeForcesWith<RM, kJkr, true, false, MU>(dt) : ComputeForcesWith<RM, kJkr, false, false, MU>(dt);  // JKR only with Hertz
-    if (sjkr_) {
-      if (linear_) return near ? ComputeForcesWith<RM, kSjkr, true, true, MU>(dt) : ComputeForcesWith<RM, kSjkr, false, true, MU>(dt);
-      return near ? ComputeForcesWith<RM, kSjkr, true, false, MU>(dt) : ComputeForcesWith<RM, kSjkr, false, false, MU>(dt);
-    }
-    if (linear_) return near ? ComputeForcesWith<RM, kNoCohesion, true, true, MU>(dt) : ComputeForcesWith<RM, kNoCohesion, false, true, MU>(dt);
-    return near ? ComputeForcesWith<RM, kNoCohesion, true, false, MU>(dt) : ComputeForcesWith<RM, kNoCohesion, false, false, MU>(dt);
-  };
-  // Several types: each pair's constants from the table; one type keeps them fixed for the loop.
-  auto withRolling = [&](auto rolling) {
-    return table_.Count() > 1 ? with(rolling, std::true_type{}) : with(rolling, std::false_type{});
-  };
-  switch (rolling_) {
-  case R::None: PetscCall(withRolling(std::integral_constant<R, R::None>{})); break;
-  case R::ConstantTorque: PetscCall(withRolling(std::integral_constant<R, R::ConstantTorque>{})); break;
-  case R::Epsd: PetscCall(withRolling(std::integral_constant<R, R::Epsd>{})); break;
-  case R::Epsd2: PetscCall(withRolling(std::integral_constant<R, R::Epsd2>{})); break;
-  }
+  // The scene's laws (ContactLawTable.hpp: one row each) are bound here, once, as template arguments of the
+  // loops; so are whether a near-field force acts (van der Waals or lubrication) and whether the pair
+  // constants vary by type (several types: each pair's from the table; one type keeps them fixed).
+  const bool near = vdw_.hamaker > 0 || lubrication_.viscosity > 0, multi = table_.Count() > 1;
+  PetscCall(contact::AtRow<std::size(contact::kRollingLaws)>(rollingRow_, [&](auto rolling) {
+    constexpr hertz::Rolling RM = contact::kRollingLaws[decltype(rolling)::value].model;
+    return contact::AtRow<std::size(contact::kCohesionLaws)>(cohesionRow_, [&](auto cohesion) {
+      constexpr auto cohesionRow = contact::kCohesionLaws[decltype(cohesion)::value];
+      return contact::AtRow<std::size(contact::kNormalLaws)>(normalRow_, [&](auto normal) -> PetscErrorCode {
+        constexpr int  COH = cohesionRow.model;
+        constexpr bool LIN = contact::kNormalLaws[decltype(normal)::value].linear;
+        if constexpr (LIN && cohesionRow.hertzOnly) {
+          return PETSC_ERR_PLIB;  // refused in SetFromOptions
+        } else {
+          if (near) return multi ? ComputeForcesWith<RM, COH, true, LIN, true>(dt) : ComputeForcesWith<RM, COH, true, LIN, false>(dt);
+          return multi ? ComputeForcesWith<RM, COH, false, LIN, true>(dt) : ComputeForcesWith<RM, COH, false, LIN, false>(dt);
+        }
+      });
+    });
+  }));
   PetscFunctionReturn(0);
 }
 

@@ -26,6 +26,21 @@ namespace kernel {
 
 enum class Shape { Smooth, Truncated, Unresolved, Linear, Divided };
 
+// The kernels a scene chooses by name (-coupling_kernel; base/NamedTable.hpp): the option's names and help
+// come from these rows. A new kernel function is a Shape, its branches in Cutoff and Weight below, and a row.
+struct Row {
+  const char *name, *summary;
+  Shape       shape;
+};
+inline constexpr Row kKernels[] = {
+    {"smooth", "(1 - r^2/rc^2)^4, rc = sqrt(8) H", Shape::Smooth},
+    {"truncated", "Gaussian cut at -coupling_kernel_truncation H, seed 000", Shape::Truncated},
+    {"unresolved", "the cell that contains the particle: unresolved CFD-DEM, cells of 3 d or more", Shape::Unresolved},
+    {"divided", "the cells the particle's volume overlaps: 32 cubes of side R/2 split among cells by overlap, CFDEM's divided void fraction made "
+                "continuous in the particle's position; for cells that hold few particles",
+     Shape::Divided},
+};
+
 // Shapes without a kernel function: the particle's own cell (Unresolved) or the cells its volume overlaps (Divided).
 inline bool CellBased(Shape s) { return s == Shape::Unresolved || s == Shape::Divided; }
 

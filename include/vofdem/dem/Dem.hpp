@@ -206,6 +206,7 @@ private:
   PetscReal     wallYoungs_ = -1, wallPoisson_ = -1, wallFriction_ = -1;  // default: the particles'
   PetscBool     limitForce_ = PETSC_FALSE;
   hertz::Rolling       rolling_ = hertz::Rolling::None;
+  int                  normalRow_ = 0, cohesionRow_ = 0, rollingRow_ = 0;  // rows of ContactLawTable.hpp (hertz, none, none)
   PetscBool            jkr_ = PETSC_FALSE;                    // -dem_cohesion jkr (P6)
   PetscReal            surfaceEnergy_ = 0, wallSurfaceEnergy_ = -1;  // J/m^2, one surface
   PetscReal            adhesionRange_ = 0;                    // m, JKR break distance or vdW range: widens the cut-offs
