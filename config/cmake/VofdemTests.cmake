@@ -28,6 +28,9 @@ set_tests_properties(dem/contact_history_file PROPERTIES LABELS "quick;dem" PROC
 # JKR bonds at rest set the DEM step where they are stiffer than the Rayleigh time covers; a pile then comes to rest.
 add_test(NAME dem/jkr_step COMMAND ${VOFDEM_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/test/dem/test_jkr_step.py $<TARGET_FILE:vofdem_app>)
 set_tests_properties(dem/jkr_step PROPERTIES LABELS "quick;dem" PROCESSORS 2 TIMEOUT 300)
+# EPSD rolling resistance resists the twist about the contact normal too: a 100-sphere JKR pile comes to rest (1e-20 J by t = 0.4 s) on 1 and 2 ranks.
+add_test(NAME dem/epsd_rest COMMAND ${VOFDEM_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/test/dem/test_epsd_rest.py $<TARGET_FILE:vofdem_app>)
+set_tests_properties(dem/epsd_rest PROPERTIES LABELS "quick;dem;rolling" PROCESSORS 2 TIMEOUT 300)
 # Loaded, damped contacts set the DEM step where they are stiffer than the Rayleigh time covers; a deep soft bed then comes to rest.
 add_test(NAME dem/contact_step COMMAND ${VOFDEM_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/test/dem/test_contact_step.py $<TARGET_FILE:vofdem_app>)
 set_tests_properties(dem/contact_step PROPERTIES LABELS "quick;dem" PROCESSORS 2 TIMEOUT 300)

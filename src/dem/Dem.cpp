@@ -33,6 +33,9 @@ PetscErrorCode Dem::SetFromOptions(MPI_Comm comm) {
       rolling_    = contact::kRollingLaws[rollingRow_].model;
       PetscCall(opt.Real("-rolling_friction", "Rolling friction coefficient mu_r (P5)", "-", &material_.rollingFriction, RealRange::NonNegative()));
       PetscCall(opt.Real("-rolling_damping", "EPSD rolling damping as a fraction of critical", "-", &rollingParams_.eta, RealRange::NonNegative()));
+      PetscBool twist = rollingParams_.twist ? PETSC_TRUE : PETSC_FALSE;
+      PetscCall(opt.Bool("-rolling_twist", "EPSD: the spring-dashpot resists the twist about the contact normal as well as rolling (P5; 0: rolling only)", &twist));
+      rollingParams_.twist = twist == PETSC_TRUE;
       static const std::vector<std::string> loads = {"compression", "magnitude", "adhesion"};
       std::vector<std::string>              load  = {"compression"};
       PetscCall(opt.NameList("-rolling_load",
@@ -493,9 +496,9 @@ PetscErrorCode Dem::View(PetscViewer viewer) const {
   char muR[48] = "mu_r per type";
   if (oneType) std::snprintf(muR, sizeof muR, "mu_r %g", (double)shown.rollingFriction);
   static const char *const loads[] = {"", ", cap mu_r R* |F_n|", ", cap mu_r R* (F_n + 2 F_c)"};
-  PetscCall(PetscViewerASCIIPrintf(viewer, "dem: contacts: %s with damping, tangential springs and Coulomb friction between spheres and with the box faces%s; rolling resistance: %s, %s%s (P5)\n",
+  PetscCall(PetscViewerASCIIPrintf(viewer, "dem: contacts: %s with damping, tangential springs and Coulomb friction between spheres and with the box faces%s; rolling resistance: %s, %s%s%s (P5)\n",
                                    law, limitForce_ ? ", normal force clipped at zero" : "", contact::kRollingLaws[rollingRow_].shown, muR,
-                                   rolling_ == hertz::Rolling::None ? "" : loads[(int)rollingParams_.load]));
+                                   rolling_ == hertz::Rolling::None ? "" : loads[(int)rollingParams_.load], rolling_ == hertz::Rolling::Epsd && !rollingParams_.twist ? ", twist free" : ""));
   if (jkr_ && oneType)
     PetscCall(PetscViewerASCIIPrintf(viewer, "dem: adhesion: JKR (P6), surface energy %g J/m^2 (work of adhesion %g J/m^2), walls %g J/m^2; bonds break up to %g m apart; bonds at rest allow steps up to %g s (HertzMindlin.hpp SpinStep)\n",
                                      (double)shown.surfaceEnergy, (double)pair_.w, (double)wall_.w, (double)adhesionRange_, (double)jkrStepLimit_));

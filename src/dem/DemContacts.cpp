@@ -343,7 +343,15 @@ PetscErrorCode Dem::ComputeForcesWith(PetscReal dt) {
     Cross(nrm, Ft, nxF);
     if constexpr (RM != hertz::Rolling::None) {
       const PetscReal Ia = 1.4 * A.m * A.r * A.r, Ib = 1.4 * B.m * B.r * B.r;  // about the contact point
-      hertz::RollingTorque<RM>(MULTI ? table_.Rolling(list_.material[k]) : rollingParams_, Fn, law.frictionOffset, 2.0 / 3.0 * Sn, Rstar, Ia * Ib / (Ia + Ib), nrm, wrel, dt, xi + 3, M);
+      // How far n turned over the step: the centres drifted by dt v (Step), so dn = dt (v_a - v_b)_t / dist
+      // and the turn is n x dn (EPSD's spring turns with it; HertzMindlin.hpp RollingTorque).
+      PetscReal turn[3];
+      if constexpr (RM == hertz::Rolling::Epsd) {
+        const PetscReal vc[3] = {(A.v[0] - B.v[0]) * dt * inv, (A.v[1] - B.v[1]) * dt * inv, (A.v[2] - B.v[2]) * dt * inv};
+        Cross(nrm, vc, turn);
+      }
+      hertz::RollingTorque<RM>(MULTI ? table_.Rolling(list_.material[k]) : rollingParams_, Fn, law.frictionOffset, 2.0 / 3.0 * Sn, Rstar, Ia * Ib / (Ia + Ib), nrm, wrel, dt, xi + 3, M,
+                               RM == hertz::Rolling::Epsd ? turn : nullptr);
     } else {
       M[0] = M[1] = M[2] = 0;
     }

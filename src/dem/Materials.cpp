@@ -152,7 +152,7 @@ void MaterialTable::Build(const std::vector<DemMaterial> &types, const std::vect
       const PetscReal    w = jkr ? (v.workOfAdhesion >= 0 ? v.workOfAdhesion : a.surfaceEnergy + b.surfaceEnergy) : 0;
       pair_[i * nt_ + j]   = linear ? hertz::MakeLinearMaterial(e, mu, linearKtRatio, limitForce)
                                     : hertz::MakePairMaterial(a.youngs, a.poisson, b.youngs, b.poisson, e, mu, limitForce, w);
-      rolling_[i * nt_ + j]     = {pick(v.rollingFriction, a.rollingFriction, b.rollingFriction), rollingModel.eta, rollingModel.load};
+      rolling_[i * nt_ + j]     = {pick(v.rollingFriction, a.rollingFriction, b.rollingFriction), rollingModel.eta, rollingModel.load, rollingModel.twist};
       restitution_[i * nt_ + j] = e;
     }
   for (PetscInt t = 0; t < nt_; ++t) {
@@ -162,7 +162,7 @@ void MaterialTable::Build(const std::vector<DemMaterial> &types, const std::vect
     const PetscReal    w  = jkr ? a.surfaceEnergy + (wall.surfaceEnergy >= 0 ? wall.surfaceEnergy : a.surfaceEnergy) : 0;
     wall_[t]        = linear ? hertz::MakeLinearMaterial(a.restitution, mu, linearKtRatio, limitForce)
                              : hertz::MakePairMaterial(a.youngs, a.poisson, E, nu, a.restitution, mu, limitForce, w);
-    wallRolling_[t] = {a.rollingFriction, rollingModel.eta, rollingModel.load};
+    wallRolling_[t] = {a.rollingFriction, rollingModel.eta, rollingModel.load, rollingModel.twist};
   }
 }
 

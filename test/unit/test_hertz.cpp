@@ -117,7 +117,7 @@ TEST(Rolling, CapLoadOfABondedContact) {
   const double n[3] = {0, 0, 1}, wrel[3] = {1.0, 0, 0}, Fc2 = law.frictionOffset;
   for (double Fn : {0.0, -0.4 * Fc2, 0.7 * Fc2}) {
     for (auto load : {h::RollingLoad::Compression, h::RollingLoad::Magnitude, h::RollingLoad::Adhesion}) {
-      const h::RollingParams p{mu, 0.3, load};
+      const h::RollingParams p{mu, 0.3, load, true};
       double                 spring[3] = {0, 0, 0}, M[3];
       h::RollingTorque<h::Rolling::ConstantTorque>(p, Fn, Fc2, 1.0, R, 1.0, n, wrel, 1e-8, spring, M);
       const double N = load == h::RollingLoad::Magnitude ? std::fabs(Fn) : load == h::RollingLoad::Adhesion ? Fn + Fc2 : std::max(Fn, 0.0);
@@ -128,6 +128,37 @@ TEST(Rolling, CapLoadOfABondedContact) {
   }
   // Without adhesion (offset 0) adhesion and compression agree.
   EXPECT_EQ(h::RollingNormalLoad(h::RollingLoad::Adhesion, -1.0, 0.0), h::RollingNormalLoad(h::RollingLoad::Compression, -1.0, 0.0));
+}
+
+// EPSD's spring-dashpot (P5) on a relative spin about n, the twist: with p.twist it winds up against it
+// (dM = -k_r w dt, plus the damping) and stays along n; rolling only (twist 0, as epsd2) it sees nothing.
+// And the spring turns with the normal: a rolling moment across a contact whose n turns by 1e-3 rad
+// stays across it and keeps its length.
+TEST(Rolling, EpsdResistsTheTwistAndTurnsWithTheNormal) {
+  const double R = 1e-4, kn = 30, Ir = 1e-16, dt = 1e-6, mu = 0.1, kr = 2.25 * kn * mu * mu * R * R;
+  const double n[3] = {0, 0, 1}, wrel[3] = {0, 0, 2.0}, N = 1e-5;  // a load far from the cap
+  for (bool twist : {true, false}) {
+    const h::RollingParams p{mu, 0.3, h::RollingLoad::Compression, twist};
+    double                 spring[3] = {0, 0, 0}, M[3];
+    h::RollingTorque<h::Rolling::Epsd>(p, N, 0, kn, R, Ir, n, wrel, dt, spring, M);
+    EXPECT_EQ(M[0], 0.0);
+    EXPECT_EQ(M[1], 0.0);
+    if (twist) {
+      EXPECT_DOUBLE_EQ(spring[2], -kr * 2.0 * dt);
+      EXPECT_DOUBLE_EQ(M[2], -kr * 2.0 * dt - 0.3 * 2 * std::sqrt(Ir * kr) * 2.0);
+    } else {
+      EXPECT_EQ(M[2], 0.0);
+    }
+    h::RollingTorque<h::Rolling::Epsd2>(p, N, 0, kn, R, Ir, n, wrel, dt, spring, M);
+    EXPECT_EQ(M[2], spring[2]);  // epsd2: the projection drops what was along n, and the twist is not seen
+    EXPECT_EQ(M[2], 0.0);
+  }
+  const double th = 1e-3, turned[3] = {std::sin(th), 0, std::cos(th)}, turn[3] = {0, th, 0}, still[3] = {0, 0, 0};
+  const h::RollingParams p{mu, 0.3, h::RollingLoad::Compression, true};
+  double                 spring[3] = {1e-12, 0, 0}, M[3];
+  h::RollingTorque<h::Rolling::Epsd>(p, N, 0, kn, R, Ir, turned, still, dt, spring, M, turn);
+  EXPECT_NEAR(spring[0] * turned[0] + spring[2] * turned[2], 0.0, 1e-18);  // across the new n to O(th^2)
+  EXPECT_NEAR(std::hypot(spring[0], spring[2]), 1e-12, 1e-24);
 }
 
 // SpinStep is the stability bound of the leapfrog recurrence of a damped oscillator with the damping

@@ -280,9 +280,10 @@ enum class Rolling { None, ConstantTorque, Epsd, Epsd2 };
 enum class RollingLoad { Compression, Magnitude, Adhesion };
 
 struct RollingParams {
-  PetscReal   mu   = 0;    // rolling friction coefficient mu_r
-  PetscReal   eta  = 0.3;  // EPSD: viscous damping as a fraction of critical (Ai et al. 2011)
-  RollingLoad load = RollingLoad::Compression;
+  PetscReal   mu    = 0;    // rolling friction coefficient mu_r
+  PetscReal   eta   = 0.3;  // EPSD: viscous damping as a fraction of critical (Ai et al. 2011)
+  RollingLoad load  = RollingLoad::Compression;
+  bool        twist = true;  // EPSD: the spring-dashpot resists the twist about n too (RollingTorque)
 };
 
 // N of RollingLoad from the net normal force and the law's friction offset 2 F_c (NormalLaw).
@@ -291,20 +292,32 @@ inline PetscReal RollingNormalLoad(RollingLoad load, PetscReal Fn, PetscReal off
 }
 
 // Rolling torque on this particle (the partner gets minus it) from the relative angular velocity
-// wrel = w_this - w_partner, with twisting about n removed. Fn: the net normal force and offset: the
-// law's friction offset (2 F_c with JKR), which p.load turns into the bounding load N; kn: the secant
-// normal stiffness F_n,elastic/delta (as in LIGGGHTS), Ir: the equivalent moment of inertia about the
-// contact, spring: the rolling spring (history, N m), updated.
-//  - ConstantTorque: M = -mu_r R* N w/|w|, the classic model; it chatters around w = 0.
+// wrel = w_this - w_partner. Fn: the net normal force and offset: the law's friction offset (2 F_c with
+// JKR), which p.load turns into the bounding load N; kn: the secant normal stiffness F_n,elastic/delta
+// (as in LIGGGHTS), Ir: the equivalent moment of inertia about the contact, spring: the rolling spring
+// (history, N m), updated; turn: the rotation of n since the last step (axis times angle; nullptr: n
+// has not turned, as at a box face).
+//  - ConstantTorque: M = -mu_r R* N w/|w|, the classic model, w without the twist about n; it chatters
+//    around w = 0.
 //  - Epsd (Ai et al. 2011, model C): spring k_r = 2.25 k_n mu_r^2 R*^2 with dM = -k_r w dt, capped at
-//    mu_r R* N, plus damping -eta 2 sqrt(I_r k_r) w while not at the cap; holds a pile at rest.
-//  - Epsd2 (LIGGGHTS' epsd2): the same spring and cap without damping.
+//    mu_r R* N, plus damping -eta 2 sqrt(I_r k_r) w while not at the cap; holds a pile at rest. With
+//    p.twist (the default) w is the whole relative rotation, the twist about n included, and the spring
+//    turns with n (by turn) instead of being projected into the tangent plane. Without it, a sphere that
+//    rolling resistance holds in place with its contacts' normals (nearly) on one line -- on a face with
+//    one neighbour above or beside it, or one sphere hanging from another -- is free to spin about that
+//    line: neither spring nor damper sees the spin, only its leak through the normals' tilt. In a settled
+//    100-sphere JKR pile three such spheres kept spinning back and forth at up to 80 rad/s with ~1e-12 J
+//    between them to t = 0.4 s; damping the twist alone left them creeping (1e-17 J), as the static
+//    rolling moments of the tilted contacts kept a steady torque about the line (test dem/epsd_rest;
+//    docs/physics.md P5).
+//  - Epsd2 (LIGGGHTS' epsd2): the spring and cap of Epsd without the twist, without damping.
 template <Rolling model>
 VOFDEM_HOT_INLINE void RollingTorque(const RollingParams &p, PetscReal Fn, PetscReal offset, PetscReal kn, PetscReal Rstar, PetscReal Ir, const PetscReal n[3],
-                          const PetscReal wrel[3], PetscReal dt, PetscReal spring[3], PetscReal M[3]) {
+                          const PetscReal wrel[3], PetscReal dt, PetscReal spring[3], PetscReal M[3], const PetscReal *turn = nullptr) {
   M[0] = M[1] = M[2] = 0;
   if constexpr (model == Rolling::None) return;
-  const PetscReal wn = wrel[0] * n[0] + wrel[1] * n[1] + wrel[2] * n[2];
+  const bool      twist = model == Rolling::Epsd && p.twist;
+  const PetscReal wn    = twist ? 0 : wrel[0] * n[0] + wrel[1] * n[1] + wrel[2] * n[2];
   PetscReal       w[3];
   for (int d = 0; d < 3; ++d) w[d] = wrel[d] - wn * n[d];
   const PetscReal Mmax = p.mu * Rstar * RollingNormalLoad(p.load, Fn, offset);
@@ -313,7 +326,20 @@ VOFDEM_HOT_INLINE void RollingTorque(const RollingParams &p, PetscReal Fn, Petsc
     if (wmag > 0)
       for (int d = 0; d < 3; ++d) M[d] = -Mmax * w[d] / wmag;
   } else {
-    ProjectKeepingLength(spring, n);  // as the tangential spring
+    if (!twist) {
+      ProjectKeepingLength(spring, n);  // as the tangential spring
+    } else if (turn) {
+      // The spring turns with the normal, its rolling and twisting parts kept: s += turn x s, then its
+      // length back (first order in the angle, as ProjectKeepingLength is).
+      const PetscReal old2 = spring[0] * spring[0] + spring[1] * spring[1] + spring[2] * spring[2];
+      const PetscReal c[3] = {turn[1] * spring[2] - turn[2] * spring[1], turn[2] * spring[0] - turn[0] * spring[2], turn[0] * spring[1] - turn[1] * spring[0]};
+      const PetscReal c2   = c[0] * c[0] + c[1] * c[1] + c[2] * c[2];
+      if (c2 > 1e-32 * old2) {
+        for (int d = 0; d < 3; ++d) spring[d] += c[d];
+        const PetscReal new2 = spring[0] * spring[0] + spring[1] * spring[1] + spring[2] * spring[2], f = std::sqrt(old2 / new2);
+        for (int d = 0; d < 3; ++d) spring[d] *= f;
+      }
+    }
     const PetscReal kr = 2.25 * kn * p.mu * p.mu * Rstar * Rstar;
     for (int d = 0; d < 3; ++d) spring[d] -= kr * w[d] * dt;
     const PetscReal s2 = spring[0] * spring[0] + spring[1] * spring[1] + spring[2] * spring[2];
