@@ -65,7 +65,7 @@ vofdem_bad_input(malformed_yaml     "malformed\\.yaml:4:[0-9]+: malformed YAML" 
 vofdem_bad_input(scene_not_mapping  "not-a-mapping\\.yaml:1:1: a scene must be a mapping" -options_file_yaml ${_bad}/not-a-mapping.yaml)
 vofdem_bad_input(typo_in_scene      "unknown or unused option -dem_restitusion \\(did you mean -dem_restitution\\?\\)" -options_file_yaml ${_bad}/typo.yaml)
 vofdem_bad_input(unknown_physics    "option -physics: unknown name 'magic'"        -physics dem,magic)
-vofdem_bad_input(physics_not_built  "option -physics: unknown name 'energy' \\(known: dem, flow, vof, scalar\\)" -physics flow,energy)
+vofdem_bad_input(physics_not_built  "option -physics: unknown name 'magnetism' \\(known: dem, flow, vof, scalar, energy\\)" -physics flow,magnetism)
 # The registry's needs, and the passive scalar's own checks.
 vofdem_bad_input(scalar_needs_flow  "option -physics: 'scalar' needs 'flow' \\(the scalar moves with the fluid\\)" -physics scalar)
 vofdem_bad_input(scalar_with_dem    "option -physics: 'scalar' does not take particles into account yet" -physics dem,flow,scalar -grid_upper 0.01,0.01,0.01)
@@ -183,3 +183,22 @@ set_tests_properties(coupling/options PROPERTIES LABELS "quick;coupling" PROCESS
 # -dem_rolling_damping: 0 is epsd2 bit for bit and leaves the sphere rocking; 0.3 and 1 damp it out (1 and 2 ranks).
 add_test(NAME dem/rolling_damping COMMAND ${VOFDEM_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/test/dem/test_rolling_damping.py $<TARGET_FILE:vofdem_app>)
 set_tests_properties(dem/rolling_damping PROPERTIES LABELS "quick;dem" PROCESSORS 2 TIMEOUT 300)
+
+# ---- energy (docs/modules/energy.md) ----
+# E1 reduced: Stefan melting, one phase at St 0.1 and 1 and two phases, 100 cells across the melt, on 1 and 2 ranks.
+add_test(NAME energy/stefan COMMAND ${VOFDEM_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/test/energy/test_stefan.py $<TARGET_FILE:vofdem_app>)
+set_tests_properties(energy/stefan PROPERTIES LABELS "quick;energy" PROCESSORS 2 TIMEOUT 300)
+# E4's power integral: eta P absorbed to 1e-12 at R_l/h 0.35-2 with the beam off the grid lines, split in z and in x.
+add_test(NAME energy/laser_power COMMAND ${VOFDEM_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/test/energy/test_laser_power.py $<TARGET_FILE:vofdem_app>)
+set_tests_properties(energy/laser_power PROPERTIES LABELS "quick;energy" PROCESSORS 2 TIMEOUT 300)
+set(VOFDEM_ENERGY_BOX -physics energy -grid_cells 4,4,4 -dt 1e-3)
+vofdem_bad_input(energy_liquidus_below_solidus "option -energy_metal_liquidus: the liquidus 1500\\.? K must exceed the solidus 1533\\.? K" ${VOFDEM_ENERGY_BOX} -energy_metal_liquidus 1500)
+vofdem_bad_input(energy_conductivity_zero "option -energy_metal_conductivity: the metal .* needs a positive conductivity" ${VOFDEM_ENERGY_BOX} -energy_metal_conductivity 0)
+vofdem_bad_input(energy_specific_heat_negative "option -energy_gas_specific_heat: the gas .* needs a positive specific heat" ${VOFDEM_ENERGY_BOX} -energy_gas_specific_heat -5)
+vofdem_bad_input(energy_density_zero "option -energy_metal_density: the metal .* needs a positive density" ${VOFDEM_ENERGY_BOX} -energy_metal_density 0)
+vofdem_bad_input(energy_laser_outside "option -laser_path: way point 1 \\(2\\.?, 0.5\\) m lies outside the box in x" ${VOFDEM_ENERGY_BOX} -laser_power 100 -laser_radius 0.1 -laser_path 0.5,0.5,2,0.5 -laser_speed 1)
+vofdem_bad_input(energy_absorptivity_range "option -laser_absorptivity: .*1.5" ${VOFDEM_ENERGY_BOX} -laser_power 100 -laser_radius 0.1 -laser_path 0.5,0.5 -laser_absorptivity 1.5)
+vofdem_bad_input(energy_laser_without_energy "unknown or unused option -laser_power" -physics dem -grid_upper 0.01,0.01,0.01 -laser_power 100)
+vofdem_bad_input(energy_material_missing "option -energy_metal: .*no_solidus.yaml: .*needs a solidus|option -energy_metal_solidus: the metal .*no_solidus.yaml.* needs a solidus and a liquidus" ${VOFDEM_ENERGY_BOX} -energy_metal ${CMAKE_CURRENT_SOURCE_DIR}/test/energy/no_solidus.yaml)
+vofdem_bad_input(energy_with_flow "option -physics: 'energy' with 'flow' is not built yet" -physics flow,energy)
+vofdem_bad_input(energy_needs_dt "option -dt: the energy equation is implicit and sets no step of its own without a moving laser" -physics energy -grid_cells 4,4,4)

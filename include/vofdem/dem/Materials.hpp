@@ -4,6 +4,8 @@
 // once, before the run, so the contact loop only indexes a small table.
 #pragma once
 
+#include "vofdem/io/MaterialFile.hpp"
+
 #include "vofdem/dem/HertzMindlin.hpp"
 
 #include <petscsys.h>
@@ -29,10 +31,7 @@ struct DemMaterial {
 // what is wrong (unknown key, not a number, out of range, not a mapping).
 bool ReadMaterialFile(const std::string &path, DemMaterial *m, std::string *message);
 
-// Where `-dem_type_<t>_material NAME` is looked for: NAME itself when it is a readable file, else
-// <dir>/NAME.yaml for each dir in the search path (the source tree's config/materials, and
-// $VOFDEM_MATERIALS_DIR first when set). Returns "" when not found.
-std::string FindMaterialFile(const std::string &name);
+// Where `-dem_type_<t>_material NAME` is looked for: io/MaterialFile.hpp (FindMaterialFile).
 
 // The constants of every pair of types and of every type against the walls, mixed from the types'
 // materials: E*, G* exactly (P3); restitution, sliding and rolling friction by the arithmetic mean of

@@ -22,4 +22,8 @@ inline PetscReal FaceBeta(PetscReal bL, PetscReal bR) { return 2 * bL * bR / (bL
 // eL, eR: the fluid fractions of the cells on either side; bL, bR: their eps/rho.
 inline FaceProperties FaceAverage(PetscReal eL, PetscReal eR, PetscReal bL, PetscReal bR) { return {0.5 * (eL + eR), FaceBeta(bL, bR)}; }
 
+// The conductivity of a face between cells of conductivities kL and kR (docs/physics.md F7): the same
+// harmonic mean, which keeps the heat flux continuous across a jump of k; 0 if either side conducts nothing.
+inline PetscReal FaceConductivity(PetscReal kL, PetscReal kR) { return kL > 0 && kR > 0 ? FaceBeta(kL, kR) : 0; }
+
 }  // namespace vofdem

@@ -1,0 +1,120 @@
+// The energy equation on the grid's cells (docs/physics.md F3, F7, F8; docs/modules/energy.md), for metal
+// (fraction alpha) and gas in a cell whose fluid fraction is eps:
+//   d(eps E)/dt = div(eps k grad T) - delta_s [h_c (T - T_a) + e sigma_SB (T^4 - T_a^4)] + q_laser,
+//   E = alpha rho_m h_m(T) + (1 - alpha) rho_g h_g(T),  h_m = int cp_m dT + f_l(T) L,
+// with conductivities averaged harmonically at faces, box faces adiabatic, at a fixed temperature, with a
+// fixed flux, or convective (with radiation). In time: BDF2 (backward Euler on the first step, or
+// throughout with -energy_time_scheme euler), implicit in T. Latent heat enters through E(T): each
+// cell's state is its temperature T and its metal's melt fraction f, E = E(T, f); each iteration solves the
+// balance linearised in T with the latent heat's share f = f^k + F' (T - F^{-1}(f^k)) (the source-based
+// scheme of Voller and Swaminathan, 1991; F' the mushy slope unless the cell is consistently solid or
+// liquid), then clamps f to [0, 1], until every cell's balance closes to -energy_tolerance. The linear systems
+// are symmetric: CG with hypre PFMG (structured) or BoomerAMG, options prefix energy_.
+// Not yet: transport by a flow (the VOF sweeps' phase fluxes, F7 a) and particles (eps < 1, F9).
+#pragma once
+
+#include "vofdem/energy/Laser.hpp"
+#include "vofdem/energy/ThermalMaterial.hpp"
+#include "vofdem/grid/Grid.hpp"
+
+#include <petscksp.h>
+
+#include <string>
+
+namespace vofdem {
+
+enum class EnergyBoundary { Adiabatic, Temperature, Flux, Convective };
+
+struct EnergyFace {
+  EnergyBoundary type = EnergyBoundary::Adiabatic;
+  PetscReal      value = 0;       // K (temperature), W/m^2 into the box (flux), W/(m^2 K) (convective)
+  PetscReal      ambient = 300;   // K (convective and radiation)
+  PetscReal      emissivity = 0;  // radiation to the ambient (convective faces)
+};
+
+// One step's account and the state now (the monitor line).
+struct EnergySummary {
+  PetscReal total = 0;          // sum eps E dV, J
+  PetscReal inputRate = 0;      // W into the cells at the end of the step: box faces + laser - losses
+  PetscReal boundaryRate = 0;   // W through the box faces
+  PetscReal lossRate = 0;       // W lost at interfaces (convection and radiation)
+  PetscReal absorbed = 0;       // W of the laser deposited in the cells
+  PetscReal beam = 0;           // W of the laser entering the box
+  PetscReal balance = 0;        // J: the step's energy balance error, sum of the cells' residuals
+  PetscReal balanceRelative = 0;  // balance / max(|change of total|, dt * |input|, tiny)
+  PetscReal accounted = 0;      // J: the integrated input by the scheme's own quadrature, plus the initial total
+  PetscReal peak = 0, minimum = 0;  // K
+  PetscReal meltVolume = 0;     // m^3 of metal above the pool isotherm's melt fraction (sum alpha f_l dV)
+  PetscReal pool[3] = {0, 0, 0};  // extent in x, y, z of the -energy_pool_isotherm (length, width, depth), m
+  PetscInt  iterations = 0;     // of the last step's enthalpy iteration
+  PetscInt  linearIterations = 0;
+};
+
+class Energy {
+public:
+  PetscErrorCode SetFromOptions(const Grid &grid);
+  PetscErrorCode SetUp();
+  PetscErrorCode Step(PetscReal time, PetscReal dt);  // advances T from time to time + dt
+  PetscErrorCode Summarize(EnergySummary *s);         // the last step's account, the state now
+  PetscErrorCode View(PetscViewer viewer) const;
+  PetscReal      ExplicitLimit() const { return explicitLimit_; }  // s: what an explicit scheme would need
+  PetscReal      StepLimit() const { return laser_.StepLimit(); }
+  PetscErrorCode CheckBoiling(PetscReal time);                       // stops the run past the boiling point
+  PetscErrorCode Save(PetscViewer viewer) const;
+  PetscErrorCode Load(PetscViewer viewer);
+  PetscErrorCode Destroy();
+  Vec            Temperature() const { return T_; }
+  Vec            MeltFraction();  // f_l per cell (alpha-weighted: the metal's), for output
+  const Laser   &Beam() const { return laser_; }
+  PetscInt       SavedVectors() const { return 4; }
+
+private:
+  PetscErrorCode ReadMaterials();
+  PetscErrorCode FaceOptions(PetscOptionItems *items);
+  PetscErrorCode SetInitial();
+  PetscErrorCode Properties();                      // E(T, f), C, F', F^{-1}(f), k at the state; T, k scattered to the local vectors
+  PetscErrorCode LaserSource(PetscReal time);       // q_ (W/m^3), absorbed_, beam_
+  PetscErrorCode Assemble(PetscReal a, PetscReal dt);  // matrix and rhs at the current iterate
+  PetscErrorCode Residual(PetscReal a, PetscReal dt, PetscReal *maxResidual);  // r = a E - H - dt R(T)
+  PetscErrorCode Update(PetscReal lambda);         // the enthalpy update with a fraction lambda of the correction
+  PetscErrorCode PoolExtent(PetscReal iso, PetscReal ext[3]);
+  PetscReal      CellEnergy(PetscReal alpha, PetscReal T, PetscReal f) const;
+  PetscReal      CellSensibleCapacity(PetscReal alpha, PetscReal T) const;
+  PetscReal      LatentSlope(PetscReal T, PetscReal f, PetscReal *TF) const;  // F' and F^{-1}(f) of the linearisation
+  PetscReal      CellConductivity(PetscReal alpha, PetscReal T) const;
+
+  const Grid     *grid_ = nullptr;
+  MPI_Comm        comm_ = MPI_COMM_NULL;
+  ThermalMaterial metal_, gas_;
+  std::string     metalName_ = "in718", gasName_ = "argon";
+  Laser           laser_;
+  EnergyFace      face_[6];
+  PetscReal       T0_ = 300, boxT_ = 300, substrateT_ = 300, substrateTop_ = -PETSC_MAX_REAL;
+  PetscReal       boxLower_[3] = {0, 0, 0}, boxUpper_[3] = {0, 0, 0};
+  bool            box_ = false;
+  PetscReal       metalTop_ = PETSC_MAX_REAL;  // m: metal below (no interface module)
+  PetscReal       ambient_ = 300, interfaceConvection_ = 0;
+  PetscBool       interfaceRadiation_ = PETSC_TRUE;
+  bool            bdf2_ = true;
+  PetscReal       tolerance_ = 1e-10;  // of a cell's residual, relative to rho_m (cp_m (T_l - T_s) + L)
+  PetscInt        maxIterations_ = 50;
+  PetscReal       boilingMargin_ = 0, poolIsotherm_ = -1;
+  bool            pfmg_ = true;
+  PetscReal       explicitLimit_ = 0, energyScale_ = 1;
+
+  DM        dm_ = nullptr;
+  Vec       T_ = nullptr, E_ = nullptr, Eold_ = nullptr, H_ = nullptr, C_ = nullptr, Ecur_ = nullptr, k_ = nullptr, q_ = nullptr, alpha_ = nullptr;
+  Vec       r_ = nullptr, rhs_ = nullptr, Tstar_ = nullptr, fl_ = nullptr;
+  Vec       F_ = nullptr, slope_ = nullptr, TF_ = nullptr, Tbase_ = nullptr, Fbase_ = nullptr;  // f, F', F^{-1}(f), the iterate before an update
+  Vec       TLocal_ = nullptr, kLocal_ = nullptr, alphaLocal_ = nullptr;
+  Mat       A_ = nullptr;
+  KSP       ksp_ = nullptr;
+  MPI_Comm  column_ = MPI_COMM_NULL;  // the ranks of one process column in z, top first
+
+  // The account: steps done, the previous step, the accounted energy of the last two steps.
+  PetscInt      steps_ = 0;
+  PetscReal     dtOld_ = 0, W_ = 0, Wold_ = 0, totalOld_ = 0, totalOlder_ = 0;
+  EnergySummary last_;
+};
+
+}  // namespace vofdem

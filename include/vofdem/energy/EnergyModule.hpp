@@ -1,0 +1,40 @@
+// The energy equation (Energy.hpp) as a module (base/Module.hpp): -physics energy, conduction with latent
+// heat and the laser in metal that does not move (the metal below -energy_metal_top). Stage "transport",
+// where it will follow the interface's sweeps once the flow carries heat (docs/modules/energy.md).
+#pragma once
+
+#include "vofdem/base/Module.hpp"
+#include "vofdem/energy/Energy.hpp"
+
+namespace vofdem {
+
+class EnergyModule final : public Module {
+public:
+  Energy       &Get() { return energy_; }
+  const Energy &Get() const { return energy_; }
+
+  const char    *Name() const override { return "energy"; }
+  const char    *LogStage() const override { return "Energy"; }
+  PetscErrorCode SetFromOptions(const RunContext &run) override;
+  PetscErrorCode Configure(ModuleSet &modules, const RunContext &run) override;
+  PetscErrorCode SetUp(ModuleSet &, const RunContext &) override { return energy_.SetUp(); }
+
+  std::vector<Stage> Stages() const override { return {Stage::Transport}; }
+  PetscErrorCode     Run(Stage stage, StepState &step) override;
+  PetscErrorCode     LowerTimeStep(TimeStepLimit *limit) override;
+
+  std::string    MonitorColumns() const override;
+  PetscErrorCode Monitor(MonitorPart *part) override;
+
+  PetscErrorCode View(PetscViewer viewer, PetscReal) const override { return energy_.View(viewer); }
+  PetscErrorCode Save(PetscViewer viewer) override;  // group "energy"
+  PetscErrorCode Load(PetscViewer viewer) override;
+  PetscErrorCode SavedBytes(PetscInt64 *bytes) const override;
+  PetscErrorCode Destroy() override { return energy_.Destroy(); }
+
+private:
+  Energy    energy_;
+  PetscReal time_ = 0;
+};
+
+}  // namespace vofdem

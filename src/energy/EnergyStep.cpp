@@ -1,0 +1,417 @@
+// Energy.hpp: one step, the cells' properties, the laser's deposit and the implicit system (docs/physics.md F7, F8).
+#include "vofdem/energy/Energy.hpp"
+
+#include "vofdem/base/Runtime.hpp"
+#include "vofdem/grid/FaceProperties.hpp"
+
+#include <petscdmda.h>
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+namespace vofdem {
+
+namespace {
+constexpr PetscReal kStefanBoltzmann = 5.670374419e-8;  // W/(m^2 K^4)
+
+struct Box {
+  PetscInt s[3], m[3];
+};
+
+Box Owned(DM dm) {
+  Box b;
+  DMDAGetCorners(dm, &b.s[0], &b.s[1], &b.s[2], &b.m[0], &b.m[1], &b.m[2]);
+  return b;
+}
+}  // namespace
+
+// Per volume of cell: E = eps [alpha rho_m (int cp_m dT + L f) + (1 - alpha) rho_g int cp_g dT] (eps = 1 until
+// particles take their share), f the metal's melt fraction (the state; f = f_l(T) once a step has converged).
+PetscReal Energy::CellEnergy(PetscReal a, PetscReal T, PetscReal f) const {
+  return a * metal_.density * (metal_.Sensible(T) + metal_.latentHeat * f) + (1 - a) * gas_.density * gas_.Sensible(T);
+}
+PetscReal Energy::CellSensibleCapacity(PetscReal a, PetscReal T) const { return a * metal_.density * metal_.cp.At(T) + (1 - a) * gas_.density * gas_.cp.At(T); }
+PetscReal Energy::CellConductivity(PetscReal a, PetscReal T) const { return a * metal_.k.At(T) + (1 - a) * gas_.k.At(T); }
+
+// The linearisation of the melt fraction about the state (T, f) (Voller and Swaminathan): f = f^k + F' (T - T_F),
+// T_F = F^{-1}(f^k). A cell consistently solid (f = 0, T <= T_s) or liquid (f = 1, T >= T_l) has F' = 0; any other
+// (in the mushy range, or one that crossed the solidus or liquidus in the last iteration) the law's slope at T_F.
+PetscReal Energy::LatentSlope(PetscReal T, PetscReal f, PetscReal *TF) const {
+  const ThermalMaterial &m = metal_;
+  if (m.melt == MeltLaw::Linear) {
+    if ((f <= 0 && T <= m.solidus) || (f >= 1 && T >= m.liquidus)) return *TF = T, 0;
+    *TF = m.MeltInverse(std::min((PetscReal)1, std::max((PetscReal)0, f)));
+    return 1 / (m.liquidus - m.solidus);
+  }
+  const PetscReal fc = std::min(1 - 1e-15, std::max((PetscReal)1e-300, f));
+  *TF                = m.MeltInverse(fc);
+  return m.MeltSlope(*TF);
+}
+
+PetscErrorCode Energy::Properties() {
+  PetscScalar ***T, ***F, ***E, ***C, ***k, ***al, ***S, ***TF;
+  const Box     b = Owned(dm_);
+
+  PetscFunctionBeginUser;
+  PetscCall(DMDAVecGetArrayRead(dm_, T_, &T));
+  PetscCall(DMDAVecGetArrayRead(dm_, F_, &F));
+  PetscCall(DMDAVecGetArrayRead(dm_, alpha_, &al));
+  PetscCall(DMDAVecGetArray(dm_, Ecur_, &E));
+  PetscCall(DMDAVecGetArray(dm_, C_, &C));
+  PetscCall(DMDAVecGetArray(dm_, k_, &k));
+  PetscCall(DMDAVecGetArray(dm_, slope_, &S));
+  PetscCall(DMDAVecGetArray(dm_, TF_, &TF));
+  for (PetscInt z = b.s[2]; z < b.s[2] + b.m[2]; ++z)
+    for (PetscInt y = b.s[1]; y < b.s[1] + b.m[1]; ++y)
+      for (PetscInt x = b.s[0]; x < b.s[0] + b.m[0]; ++x) {
+        const PetscReal a = al[z][y][x], t = T[z][y][x], f = F[z][y][x];
+        PetscReal       tf;
+        E[z][y][x]  = CellEnergy(a, t, f);
+        S[z][y][x]  = a > 0 ? LatentSlope(t, f, &tf) : (tf = t, 0);
+        TF[z][y][x] = tf;
+        C[z][y][x]  = CellSensibleCapacity(a, t) + a * metal_.density * metal_.latentHeat * S[z][y][x];
+        k[z][y][x]  = CellConductivity(a, t);
+      }
+  PetscCall(DMDAVecRestoreArray(dm_, TF_, &TF));
+  PetscCall(DMDAVecRestoreArray(dm_, slope_, &S));
+  PetscCall(DMDAVecRestoreArray(dm_, k_, &k));
+  PetscCall(DMDAVecRestoreArray(dm_, C_, &C));
+  PetscCall(DMDAVecRestoreArray(dm_, Ecur_, &E));
+  PetscCall(DMDAVecRestoreArrayRead(dm_, alpha_, &al));
+  PetscCall(DMDAVecRestoreArrayRead(dm_, F_, &F));
+  PetscCall(DMDAVecRestoreArrayRead(dm_, T_, &T));
+  PetscCall(DMGlobalToLocal(dm_, k_, INSERT_VALUES, kLocal_));
+  PetscCall(DMGlobalToLocal(dm_, T_, INSERT_VALUES, TLocal_));
+  PetscFunctionReturn(0);
+}
+
+// The laser's deposit q (W/m^3) at time t (docs/physics.md F8). first_interface: down each column the metal
+// takes eta of the column's power, shared by the metal volume each cell adds until one cell's worth of
+// metal has been met (a cell full of metal takes it all); the metal of the ranks above comes from a scan
+// over the process column. gradient: eta (P_col / footprint) |grad alpha| in every cell.
+PetscErrorCode Energy::LaserSource(PetscReal t) {
+  const Box        b = Owned(dm_);
+  const PetscReal *h = grid_->Spacing(), *lo = grid_->Lower();
+  const PetscReal  V = h[0] * h[1] * h[2];
+  const PetscInt   nz = grid_->Cells()[2];
+  PetscScalar   ***q, ***al;
+  PetscReal        sums[2] = {0, 0};  // beam into the box, absorbed
+
+  PetscFunctionBeginUser;
+  PetscCall(VecSet(q_, 0));
+  last_.beam = last_.absorbed = 0;
+  if (!laser_.On() || laser_.Power(t) == 0) PetscFunctionReturn(0);
+  const PetscInt        n = b.m[0] * b.m[1];
+  std::vector<PetscReal> slab(n, 0), above(n, 0), total(n, 0), power(n, 0);
+  PetscCall(DMDAVecGetArrayRead(dm_, alphaLocal_, &al));
+  PetscCall(DMDAVecGetArray(dm_, q_, &q));
+  for (PetscInt y = b.s[1]; y < b.s[1] + b.m[1]; ++y)
+    for (PetscInt x = b.s[0]; x < b.s[0] + b.m[0]; ++x) {
+      const PetscInt c = (y - b.s[1]) * b.m[0] + (x - b.s[0]);
+      power[c]         = laser_.FootprintPower(t, lo[0] + x * h[0], lo[0] + (x + 1) * h[0], lo[1] + y * h[1], lo[1] + (y + 1) * h[1]);
+      for (PetscInt z = b.s[2]; z < b.s[2] + b.m[2]; ++z) slab[c] += al[z][y][x];
+    }
+  int columnRank;
+  PetscCallMPI(MPI_Comm_rank(column_, &columnRank));
+  PetscCallMPI(MPI_Exscan(slab.data(), above.data(), (int)n, MPIU_REAL, MPI_SUM, column_));
+  if (columnRank == 0) std::fill(above.begin(), above.end(), 0);
+  PetscCallMPI(MPI_Allreduce(slab.data(), total.data(), (int)n, MPIU_REAL, MPI_SUM, column_));
+  const PetscReal eta = laser_.Absorptivity();
+  for (PetscInt y = b.s[1]; y < b.s[1] + b.m[1]; ++y)
+    for (PetscInt x = b.s[0]; x < b.s[0] + b.m[0]; ++x) {
+      const PetscInt c = (y - b.s[1]) * b.m[0] + (x - b.s[0]);
+      if (columnRank == 0) sums[0] += power[c];
+      if (laser_.Deposition() == LaserDeposition::FirstInterface) {
+        const PetscReal met = std::min((PetscReal)1, total[c]);  // the metal the beam meets, in cells
+        if (!(met > 0)) continue;                                // no metal: the beam leaves through the bottom
+        PetscReal cum = above[c];
+        for (PetscInt z = b.s[2] + b.m[2] - 1; z >= b.s[2]; --z) {
+          const PetscReal a = al[z][y][x], w = std::max((PetscReal)0, std::min(a, 1 - cum));
+          cum += a;
+          if (w > 0) q[z][y][x] = eta * power[c] * (w / met) / V, sums[1] += q[z][y][x] * V;
+        }
+      } else {
+        for (PetscInt z = b.s[2]; z < b.s[2] + b.m[2]; ++z) {
+          const PetscReal up = z + 1 < nz ? al[z + 1][y][x] : al[z][y][x], dn = z > 0 ? al[z - 1][y][x] : al[z][y][x];
+          PetscReal       g2 = (up - dn) * (up - dn) / (4 * h[2] * h[2]);
+          for (int d = 0; d < 2; ++d) {
+            const PetscInt nd = grid_->Cells()[d];
+            const PetscInt i = d == 0 ? x : y;
+            const PetscReal p = i + 1 < nd ? (d == 0 ? al[z][y][x + 1] : al[z][y + 1][x]) : al[z][y][x];
+            const PetscReal m = i > 0 ? (d == 0 ? al[z][y][x - 1] : al[z][y - 1][x]) : al[z][y][x];
+            g2 += (p - m) * (p - m) / (4 * h[d] * h[d]);
+          }
+          q[z][y][x] = eta * power[c] / (h[0] * h[1]) * std::sqrt(g2);
+          sums[1] += q[z][y][x] * V;
+        }
+      }
+    }
+  PetscCall(DMDAVecRestoreArray(dm_, q_, &q));
+  PetscCall(DMDAVecRestoreArrayRead(dm_, alphaLocal_, &al));
+  PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, sums, 2, MPIU_REAL, MPI_SUM, comm_));
+  last_.beam = sums[0], last_.absorbed = sums[1];
+  PetscFunctionReturn(0);
+}
+
+namespace {
+
+// |grad alpha| by central differences, zero gradient at the box's faces: the interface area per volume
+// delta_s of the losses (docs/physics.md F7); it sums to 1/h over a column crossing a plane interface.
+PetscReal InterfaceDensity(PetscScalar ***al, PetscInt x, PetscInt y, PetscInt z, const PetscInt *n, const PetscReal *h, const bool *periodic) {
+  const PetscInt q[3] = {x, y, z};
+  PetscReal      g2   = 0;
+  for (int d = 0; d < 3; ++d) {
+    PetscInt p[3] = {x, y, z}, m[3] = {x, y, z};
+    p[d] += 1, m[d] -= 1;
+    if (!periodic[d] && p[d] >= n[d]) p[d] = q[d];
+    if (!periodic[d] && m[d] < 0) m[d] = q[d];
+    const PetscReal diff = al[p[2]][p[1]][p[0]] - al[m[2]][m[1]][m[0]];
+    g2 += diff * diff / (4 * h[d] * h[d]);
+  }
+  return std::sqrt(g2);
+}
+
+}  // namespace
+
+// The Jacobian of the balance at the iterate T^k (Properties done), per volume and time:
+//   J d = (a C/dt) d - div(k grad d) + (the slopes of the box faces' and the interfaces' losses) d,
+// solved for the correction d with J d = -r/dt (Residual): in corrections, so that the system's round-off
+// is that of the correction, not of C T/dt (about 1e12 W/m^3 in metal near its melting point).
+PetscErrorCode Energy::Assemble(PetscReal a, PetscReal dt) {
+  const Box        b = Owned(dm_);
+  const PetscReal *h = grid_->Spacing();
+  const PetscInt  *n = grid_->Cells();
+  bool             periodic[3];
+  PetscScalar   ***T, ***k, ***al, ***C;
+
+  PetscFunctionBeginUser;
+  for (int d = 0; d < 3; ++d) periodic[d] = grid_->Periodic(d);
+  PetscCall(MatZeroEntries(A_));
+  PetscCall(DMDAVecGetArrayRead(dm_, TLocal_, &T));
+  PetscCall(DMDAVecGetArrayRead(dm_, kLocal_, &k));
+  PetscCall(DMDAVecGetArrayRead(dm_, alphaLocal_, &al));
+  PetscCall(DMDAVecGetArrayRead(dm_, C_, &C));
+  for (PetscInt z = b.s[2]; z < b.s[2] + b.m[2]; ++z)
+    for (PetscInt y = b.s[1]; y < b.s[1] + b.m[1]; ++y)
+      for (PetscInt x = b.s[0]; x < b.s[0] + b.m[0]; ++x) {
+        const PetscReal t = T[z][y][x], kc = k[z][y][x];
+        PetscReal       diag = a * C[z][y][x] / dt;
+        MatStencil      row = {z, y, x, 0}, col[7];
+        PetscScalar     val[7];
+        PetscInt        nc = 1;
+        for (int d = 0; d < 3; ++d)
+          for (int side = 0; side < 2; ++side) {
+            PetscInt nb[3] = {x, y, z};
+            nb[d] += side ? 1 : -1;
+            if (!periodic[d] && (nb[d] < 0 || nb[d] >= n[d])) {  // a box face
+              const EnergyFace &f = face_[2 * d + side];
+              switch (f.type) {
+              case EnergyBoundary::Adiabatic: break;
+              case EnergyBoundary::Flux: break;
+              case EnergyBoundary::Temperature: diag += 2 * kc / (h[d] * h[d]); break;
+              case EnergyBoundary::Convective: diag += (f.value + 4 * f.emissivity * kStefanBoltzmann * t * t * t) / h[d]; break;
+              }
+              continue;
+            }
+            const PetscReal kf = FaceConductivity(kc, k[nb[2]][nb[1]][nb[0]]) / (h[d] * h[d]);
+            diag += kf;
+            col[nc] = {nb[2], nb[1], nb[0], 0}, val[nc] = -kf, ++nc;
+          }
+        if (interfaceConvection_ > 0 || (interfaceRadiation_ && metal_.emissivity > 0)) {
+          const PetscReal ds = InterfaceDensity(const_cast<PetscScalar ***>(al), x, y, z, n, h, periodic);
+          if (ds > 0) {
+            const PetscReal e = interfaceRadiation_ ? metal_.emissivity : 0;
+            diag += ds * (interfaceConvection_ + 4 * e * kStefanBoltzmann * t * t * t);
+          }
+        }
+        col[0] = row, val[0] = diag;
+        PetscCall(MatSetValuesStencil(A_, 1, &row, nc, col, val, INSERT_VALUES));
+      }
+  PetscCall(DMDAVecRestoreArrayRead(dm_, C_, &C));
+  PetscCall(DMDAVecRestoreArrayRead(dm_, alphaLocal_, &al));
+  PetscCall(DMDAVecRestoreArrayRead(dm_, kLocal_, &k));
+  PetscCall(DMDAVecRestoreArrayRead(dm_, TLocal_, &T));
+  PetscCall(MatAssemblyBegin(A_, MAT_FINAL_ASSEMBLY));
+  PetscCall(MatAssemblyEnd(A_, MAT_FINAL_ASSEMBLY));
+  PetscFunctionReturn(0);
+}
+
+// r = a E(T) - H - dt R(T) per cell (J/m^3), with R the exact (not linearised) fluxes, losses and deposit at
+// the current T (Properties done); also the step's rates: through the box faces, lost, in all.
+PetscErrorCode Energy::Residual(PetscReal a, PetscReal dt, PetscReal *maxResidual) {
+  const Box        b = Owned(dm_);
+  const PetscReal *h = grid_->Spacing();
+  const PetscInt  *n = grid_->Cells();
+  const PetscReal  V = h[0] * h[1] * h[2];
+  bool             periodic[3];
+  PetscScalar   ***T, ***k, ***al, ***E, ***H, ***q, ***r;
+  PetscReal        rates[3] = {0, 0, 0}, rmax = 0;  // box faces, losses, residual sum (J)
+
+  PetscFunctionBeginUser;
+  for (int d = 0; d < 3; ++d) periodic[d] = grid_->Periodic(d);
+  PetscCall(DMDAVecGetArrayRead(dm_, TLocal_, &T));
+  PetscCall(DMDAVecGetArrayRead(dm_, kLocal_, &k));
+  PetscCall(DMDAVecGetArrayRead(dm_, alphaLocal_, &al));
+  PetscCall(DMDAVecGetArrayRead(dm_, Ecur_, &E));
+  PetscCall(DMDAVecGetArrayRead(dm_, H_, &H));
+  PetscCall(DMDAVecGetArrayRead(dm_, q_, &q));
+  PetscCall(DMDAVecGetArray(dm_, r_, &r));
+  PetscReal rsum = 0;
+  for (PetscInt z = b.s[2]; z < b.s[2] + b.m[2]; ++z)
+    for (PetscInt y = b.s[1]; y < b.s[1] + b.m[1]; ++y)
+      for (PetscInt x = b.s[0]; x < b.s[0] + b.m[0]; ++x) {
+        const PetscReal t = T[z][y][x], kc = k[z][y][x];
+        PetscReal       R = q[z][y][x], boundary = 0;
+        for (int d = 0; d < 3; ++d)
+          for (int side = 0; side < 2; ++side) {
+            PetscInt nb[3] = {x, y, z};
+            nb[d] += side ? 1 : -1;
+            if (!periodic[d] && (nb[d] < 0 || nb[d] >= n[d])) {
+              const EnergyFace &f = face_[2 * d + side];
+              PetscReal         flux = 0;  // W/m^2 into the cell
+              if (f.type == EnergyBoundary::Temperature) flux = 2 * kc * (f.value - t) / h[d];
+              else if (f.type == EnergyBoundary::Flux) flux = f.value;
+              else if (f.type == EnergyBoundary::Convective)
+                flux = f.value * (f.ambient - t) + f.emissivity * kStefanBoltzmann * (std::pow(f.ambient, 4) - std::pow(t, 4));
+              boundary += flux / h[d];
+              continue;
+            }
+            const PetscReal tn = T[nb[2]][nb[1]][nb[0]];
+            R += FaceConductivity(kc, k[nb[2]][nb[1]][nb[0]]) * (tn - t) / (h[d] * h[d]);
+          }
+        PetscReal loss = 0;
+        if (interfaceConvection_ > 0 || (interfaceRadiation_ && metal_.emissivity > 0)) {
+          const PetscReal ds = InterfaceDensity(const_cast<PetscScalar ***>(al), x, y, z, n, h, periodic);
+          const PetscReal e  = interfaceRadiation_ ? metal_.emissivity : 0;
+          loss               = ds * (interfaceConvection_ * (t - ambient_) + e * kStefanBoltzmann * (std::pow(t, 4) - std::pow(ambient_, 4)));
+        }
+        R += boundary - loss;
+        rates[0] += boundary * V, rates[1] += loss * V;
+        r[z][y][x] = a * E[z][y][x] - H[z][y][x] - dt * R;
+        rsum += r[z][y][x] * V;
+        rmax = std::max(rmax, (PetscReal)std::fabs(r[z][y][x]));
+      }
+  PetscCall(DMDAVecRestoreArray(dm_, r_, &r));
+  PetscCall(DMDAVecRestoreArrayRead(dm_, q_, &q));
+  PetscCall(DMDAVecRestoreArrayRead(dm_, H_, &H));
+  PetscCall(DMDAVecRestoreArrayRead(dm_, Ecur_, &E));
+  PetscCall(DMDAVecRestoreArrayRead(dm_, alphaLocal_, &al));
+  PetscCall(DMDAVecRestoreArrayRead(dm_, kLocal_, &k));
+  PetscCall(DMDAVecRestoreArrayRead(dm_, TLocal_, &T));
+  rates[2] = rsum;
+  PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, rates, 3, MPIU_REAL, MPI_SUM, comm_));
+  PetscCallMPI(MPI_Allreduce(&rmax, maxResidual, 1, MPIU_REAL, MPI_MAX, comm_));
+  last_.boundaryRate = rates[0], last_.lossRate = rates[1], last_.balance = rates[2];
+  last_.inputRate    = rates[0] - rates[1] + last_.absorbed;
+  PetscFunctionReturn(0);
+}
+
+// T = T_base + lambda d (d in Tstar_), f = clamp(f_base + F' (T - T_F), 0, 1).
+PetscErrorCode Energy::Update(PetscReal lambda) {
+  const Box     bx = Owned(dm_);
+  PetscScalar ***T, ***Tb, ***d, ***F, ***Fb, ***S, ***TF;
+
+  PetscFunctionBeginUser;
+  PetscCall(DMDAVecGetArray(dm_, T_, &T));
+  PetscCall(DMDAVecGetArray(dm_, F_, &F));
+  PetscCall(DMDAVecGetArrayRead(dm_, Tbase_, &Tb));
+  PetscCall(DMDAVecGetArrayRead(dm_, Fbase_, &Fb));
+  PetscCall(DMDAVecGetArrayRead(dm_, Tstar_, &d));
+  PetscCall(DMDAVecGetArrayRead(dm_, slope_, &S));
+  PetscCall(DMDAVecGetArrayRead(dm_, TF_, &TF));
+  for (PetscInt z = bx.s[2]; z < bx.s[2] + bx.m[2]; ++z)
+    for (PetscInt y = bx.s[1]; y < bx.s[1] + bx.m[1]; ++y)
+      for (PetscInt x = bx.s[0]; x < bx.s[0] + bx.m[0]; ++x) {
+        T[z][y][x] = Tb[z][y][x] + lambda * d[z][y][x];
+        if (S[z][y][x] > 0) F[z][y][x] = std::min((PetscReal)1, std::max((PetscReal)0, Fb[z][y][x] + S[z][y][x] * (T[z][y][x] - TF[z][y][x])));
+      }
+  PetscCall(DMDAVecRestoreArrayRead(dm_, TF_, &TF));
+  PetscCall(DMDAVecRestoreArrayRead(dm_, slope_, &S));
+  PetscCall(DMDAVecRestoreArrayRead(dm_, Tstar_, &d));
+  PetscCall(DMDAVecRestoreArrayRead(dm_, Fbase_, &Fb));
+  PetscCall(DMDAVecRestoreArrayRead(dm_, Tbase_, &Tb));
+  PetscCall(DMDAVecRestoreArray(dm_, F_, &F));
+  PetscCall(DMDAVecRestoreArray(dm_, T_, &T));
+  PetscFunctionReturn(0);
+}
+
+// One step from time to time + dt: BDF2 a E^{n+1} - b E^n + c E^{n-1} = dt R(T^{n+1}) with the variable-step
+// coefficients (w = dt/dt_old) a = (1 + 2w)/(1 + w), b = 1 + w, c = w^2/(1 + w); backward Euler (a = b = 1,
+// c = 0) on the first step or with -energy_time_scheme euler.
+PetscErrorCode Energy::Step(PetscReal time, PetscReal dt) {
+  PetscReal a = 1, bcoef = 1, c = 0;
+
+  PetscFunctionBeginUser;
+  if (bdf2_ && steps_ > 0 && dtOld_ > 0) {
+    const PetscReal w = dt / dtOld_;
+    a = (1 + 2 * w) / (1 + w), bcoef = 1 + w, c = w * w / (1 + w);
+  }
+  PetscCall(VecAXPBYPCZ(H_, bcoef, -c, 0, E_, Eold_));  // H = b E^n - c E^{n-1}
+  PetscCall(LaserSource(time + dt));
+  PetscCall(Properties());  // the iteration starts from the state at n
+  PetscReal rmax  = 0;
+  PetscInt  it    = 0, linear = 0;
+  PetscCall(Residual(a, dt, &rmax));
+  while (rmax > tolerance_ * energyScale_ && it < maxIterations_) {
+    PetscInt its;
+    PetscCall(Assemble(a, dt));
+    PetscCall(KSPSetOperators(ksp_, A_, A_));
+    // J d = -(r + a alpha rho_m L F' (T^k - T_F))/dt: the latent share linearised about T_F (LatentSlope)
+    {
+      const Box    bx = Owned(dm_);
+      PetscScalar ***rhs, ***r, ***T, ***S, ***TF, ***al;
+      PetscCall(DMDAVecGetArray(dm_, rhs_, &rhs));
+      PetscCall(DMDAVecGetArrayRead(dm_, r_, &r));
+      PetscCall(DMDAVecGetArrayRead(dm_, T_, &T));
+      PetscCall(DMDAVecGetArrayRead(dm_, slope_, &S));
+      PetscCall(DMDAVecGetArrayRead(dm_, TF_, &TF));
+      PetscCall(DMDAVecGetArrayRead(dm_, alpha_, &al));
+      const PetscReal rl = metal_.density * metal_.latentHeat;
+      for (PetscInt z = bx.s[2]; z < bx.s[2] + bx.m[2]; ++z)
+        for (PetscInt y = bx.s[1]; y < bx.s[1] + bx.m[1]; ++y)
+          for (PetscInt x = bx.s[0]; x < bx.s[0] + bx.m[0]; ++x)
+            rhs[z][y][x] = -(r[z][y][x] + a * al[z][y][x] * rl * S[z][y][x] * (T[z][y][x] - TF[z][y][x])) / dt;
+      PetscCall(DMDAVecRestoreArrayRead(dm_, alpha_, &al));
+      PetscCall(DMDAVecRestoreArrayRead(dm_, TF_, &TF));
+      PetscCall(DMDAVecRestoreArrayRead(dm_, slope_, &S));
+      PetscCall(DMDAVecRestoreArrayRead(dm_, T_, &T));
+      PetscCall(DMDAVecRestoreArrayRead(dm_, r_, &r));
+      PetscCall(DMDAVecRestoreArray(dm_, rhs_, &rhs));
+    }
+    PetscCall(VecSet(Tstar_, 0));
+    PetscCall(KSPSolve(ksp_, rhs_, Tstar_));
+    PetscCall(KSPGetIterationNumber(ksp_, &its));
+    linear += its;
+    // The update (Update), with lambda halved while the largest residual grows.
+    PetscCall(VecCopy(T_, Tbase_));
+    PetscCall(VecCopy(F_, Fbase_));
+    const PetscReal before = rmax;
+    PetscReal       lambda = 1;
+    for (int halving = 0;; ++halving, lambda *= 0.5) {
+      PetscCall(Update(lambda));
+      PetscCall(Properties());
+      PetscCall(Residual(a, dt, &rmax));
+      if (rmax <= before || halving == 8) break;
+    }
+    ++it;
+  }
+  if (rmax > tolerance_ * energyScale_)
+    VofdemInputError(comm_, "option -energy_max_iterations: the enthalpy balance did not close in %d iterations at t = %g s (largest residual %.3e of the tolerance %.3e J/m^3); lower -dt or raise -energy_max_iterations",
+                     (int)maxIterations_, (double)(time + dt), (double)rmax, (double)(tolerance_ * energyScale_));
+  // The account: a W^{n+1} - b W^n + c W^{n-1} = dt (input at n+1), the integrated input the scheme itself implies.
+  PetscReal total;
+  PetscCall(VecSum(Ecur_, &total));
+  const PetscReal *h = grid_->Spacing();
+  total *= h[0] * h[1] * h[2];
+  const PetscReal W = (bcoef * W_ - c * Wold_ + dt * last_.inputRate) / a;
+  Wold_ = W_, W_ = W;
+  totalOlder_ = totalOld_, totalOld_ = total;
+  PetscCall(VecCopy(E_, Eold_));
+  PetscCall(VecCopy(Ecur_, E_));
+  dtOld_ = dt, ++steps_;
+  last_.iterations = it, last_.linearIterations = linear;
+  PetscFunctionReturn(0);
+}
+
+}  // namespace vofdem
