@@ -191,6 +191,9 @@ set_tests_properties(energy/stefan PROPERTIES LABELS "quick;energy" PROCESSORS 2
 # E4's power integral: eta P absorbed to 1e-12 at R_l/h 0.35-2 with the beam off the grid lines, split in z and in x.
 add_test(NAME energy/laser_power COMMAND ${VOFDEM_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/test/energy/test_laser_power.py $<TARGET_FILE:vofdem_app>)
 set_tests_properties(energy/laser_power PROPERTIES LABELS "quick;energy" PROCESSORS 2 TIMEOUT 300)
+# E4: a moving Gaussian source on a plate against Eagar and Tsai, R_l/h = 2: peak, isotherm length and width within 2 %, 1 and 2 ranks.
+add_test(NAME energy/moving_source COMMAND ${VOFDEM_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/test/energy/test_moving_source.py $<TARGET_FILE:vofdem_app>)
+set_tests_properties(energy/moving_source PROPERTIES LABELS "quick;energy" PROCESSORS 2 TIMEOUT 300)
 set(VOFDEM_ENERGY_BOX -physics energy -grid_cells 4,4,4 -dt 1e-3)
 vofdem_bad_input(energy_liquidus_below_solidus "option -energy_metal_liquidus: the liquidus 1500\\.? K must exceed the solidus 1533\\.? K" ${VOFDEM_ENERGY_BOX} -energy_metal_liquidus 1500)
 vofdem_bad_input(energy_conductivity_zero "option -energy_metal_conductivity: the metal .* needs a positive conductivity" ${VOFDEM_ENERGY_BOX} -energy_metal_conductivity 0)

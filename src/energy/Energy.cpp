@@ -4,6 +4,7 @@
 #include "vofdem/base/Options.hpp"
 #include "vofdem/base/Runtime.hpp"
 #include "vofdem/io/MaterialFile.hpp"
+#include "vofdem/io/XdmfCheckpoint.hpp"
 
 #include <petscdmda.h>
 #include <petscviewerhdf5.h>
@@ -121,6 +122,7 @@ PetscErrorCode Energy::SetFromOptions(const Grid &grid) {
     PetscCall(opt.NameList("-pc", "Preconditioner: pfmg (hypre structured; default unless one cell across x or y) or boomeramg", {"pfmg", "boomeramg"}, &pc));
     PetscCall(opt.Real("-boiling_margin", "Stop the run when the metal passes its boiling point by more than this", "K", &boilingMargin_, RealRange::NonNegative()));
     poolIsotherm_ = metal_.liquidus;
+    PetscCall(opt.Int("-output_every", "ParaView files of T, the melt fraction and alpha every N steps (0: none; needs -output_dir)", &outputEvery_, 0));
     PetscCall(opt.Real("-pool_isotherm", "The isotherm whose extent is the pool's length, width and depth (default: the liquidus)", "K", &poolIsotherm_, RealRange::Positive()));
   }
   PetscOptionsEnd();
@@ -150,6 +152,7 @@ PetscErrorCode Energy::SetUp() {
   PetscCall(PetscObjectSetName((PetscObject)E_, "energy_energy"));
   PetscCall(PetscObjectSetName((PetscObject)F_, "energy_metal_melt_fraction"));
   PetscCall(PetscObjectSetName((PetscObject)fl_, "energy_melt_fraction"));
+  PetscCall(PetscObjectSetName((PetscObject)alpha_, "energy_metal_fraction"));
   PetscCall(SetInitial());
   // The process column of this rank in z (DMDA ranks run x fastest), top first: the laser's scan.
   PetscMPIInt rank;
@@ -259,6 +262,7 @@ PetscErrorCode Energy::Save(PetscViewer viewer) const {
     const std::string name = "energy_account_" + std::to_string(i);
     PetscCall(PetscViewerHDF5WriteAttribute(viewer, "/energy", name.c_str(), PETSC_REAL, &scalars[i]));
   }
+  PetscCall(SaveXdmfIndex(viewer, comm_, "energy_output_entries", outputEntries_));
   PetscFunctionReturn(0);
 }
 
@@ -275,6 +279,10 @@ PetscErrorCode Energy::Load(PetscViewer viewer) {
     const std::string name = "energy_account_" + std::to_string(i);
     PetscCall(PetscViewerHDF5ReadAttribute(viewer, "/energy", name.c_str(), PETSC_REAL, nullptr, &scalars[i]));
   }
+  std::vector<std::pair<PetscInt, PetscReal>> saved;
+  PetscCall(LoadXdmfIndex(viewer, comm_, "energy_output_entries", &saved));
+  outputEntries_.clear();
+  for (const auto &st : saved) outputEntries_.push_back(OutputEntry(st.first, st.second));
   steps_ = (PetscInt)scalars[0], dtOld_ = scalars[1], W_ = scalars[2], Wold_ = scalars[3], totalOld_ = scalars[4], totalOlder_ = scalars[5];
   PetscCall(VecCopy(E_, Ecur_));
   PetscFunctionReturn(0);

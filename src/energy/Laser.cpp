@@ -75,7 +75,7 @@ PetscReal Laser::Power(PetscReal t) const {
   if (points_.size() > 2) {  // off after the end of the path
     PetscReal length = 0;
     for (size_t p = 2; p < points_.size(); p += 2) length += std::hypot(points_[p] - points_[p - 2], points_[p + 1] - points_[p - 1]);
-    if (speed_ * (t - start_) > length) return 0;
+    if (speed_ * (t - start_) > length * (1 + 1e-12)) return 0;  // the end point itself still has the beam (round-off in t)
   }
   return ramp_ > 0 && t - start_ < ramp_ ? power_ * (t - start_) / ramp_ : power_;
 }

@@ -1,4 +1,6 @@
 #include "vofdem/flow/Flow.hpp"
+
+#include "vofdem/io/XdmfCheckpoint.hpp"
 #include "vofdem/grid/FaceProperties.hpp"
 
 #include "vofdem/base/Options.hpp"
@@ -465,22 +467,7 @@ PetscErrorCode Flow::Save(PetscViewer viewer) const {
   PetscCall(VecAssemblyEnd(scalars));
   PetscCall(VecView(scalars, viewer));
   PetscCall(VecDestroy(&scalars));
-  {  // the ParaView index so far (-flow_output_every): count, then step and time of each entry
-    const PetscInt m = (PetscInt)outputEntries_.size();
-    PetscCall(VecCreateMPI(grid_->Comm(), rank == 0 ? 1 + 2 * m : 0, 1 + 2 * m, &scalars));
-    PetscCall(PetscObjectSetName((PetscObject)scalars, "flow_output_entries"));
-    if (rank == 0) {
-      PetscCall(VecSetValue(scalars, 0, (PetscScalar)m, INSERT_VALUES));
-      for (PetscInt k = 0; k < m; ++k) {
-        PetscCall(VecSetValue(scalars, 1 + 2 * k, (PetscScalar)outputEntries_[k].step, INSERT_VALUES));
-        PetscCall(VecSetValue(scalars, 2 + 2 * k, outputEntries_[k].time, INSERT_VALUES));
-      }
-    }
-    PetscCall(VecAssemblyBegin(scalars));
-    PetscCall(VecAssemblyEnd(scalars));
-    PetscCall(VecView(scalars, viewer));
-    PetscCall(VecDestroy(&scalars));
-  }
+  PetscCall(SaveXdmfIndex(viewer, grid_->Comm(), "flow_output_entries", outputEntries_));  // the ParaView index so far (-flow_output_every)
   PetscCall(pressure_.Save(viewer));
   PetscFunctionReturn(0);
 }
@@ -508,25 +495,11 @@ PetscErrorCode Flow::Load(PetscViewer viewer) {
   PetscCall(VecDestroy(&scalars));
   dtOld_   = s[0];
   haveOld_ = s[1] > 0 ? PETSC_TRUE : PETSC_FALSE;
-  {  // the ParaView index so far, on every rank (its length comes from the file)
-    Vec        all;
-    VecScatter toAll;
-    PetscCall(VecCreate(grid_->Comm(), &scalars));
-    PetscCall(VecSetType(scalars, VECMPI));
-    PetscCall(PetscObjectSetName((PetscObject)scalars, "flow_output_entries"));
-    PetscCall(VecLoad(scalars, viewer));
-    PetscCall(VecScatterCreateToAll(scalars, &toAll, &all));
-    PetscCall(VecScatterBegin(toAll, scalars, all, INSERT_VALUES, SCATTER_FORWARD));
-    PetscCall(VecScatterEnd(toAll, scalars, all, INSERT_VALUES, SCATTER_FORWARD));
-    const PetscScalar *a;
-    PetscCall(VecGetArrayRead(all, &a));
+  {  // the ParaView index so far, on every rank
+    std::vector<std::pair<PetscInt, PetscReal>> saved;
+    PetscCall(LoadXdmfIndex(viewer, grid_->Comm(), "flow_output_entries", &saved));
     outputEntries_.clear();
-    for (PetscInt k = 0; k < (PetscInt)PetscRealPart(a[0]); ++k)
-      outputEntries_.push_back(OutputEntry((PetscInt)PetscRealPart(a[1 + 2 * k]), PetscRealPart(a[2 + 2 * k])));
-    PetscCall(VecRestoreArrayRead(all, &a));
-    PetscCall(VecScatterDestroy(&toAll));
-    PetscCall(VecDestroy(&all));
-    PetscCall(VecDestroy(&scalars));
+    for (const auto &st : saved) outputEntries_.push_back(OutputEntry(st.first, st.second));
   }
   pressureReady_ = true;
   // The fields above are the material the preconditioner reference is compared with: set them up

@@ -16,10 +16,12 @@
 #include "vofdem/energy/Laser.hpp"
 #include "vofdem/energy/ThermalMaterial.hpp"
 #include "vofdem/grid/Grid.hpp"
+#include "vofdem/io/Xdmf.hpp"
 
 #include <petscksp.h>
 
 #include <string>
+#include <vector>
 
 namespace vofdem {
 
@@ -63,6 +65,9 @@ public:
   PetscErrorCode Save(PetscViewer viewer) const;
   PetscErrorCode Load(PetscViewer viewer);
   PetscErrorCode Destroy();
+  // ParaView (-energy_output_every N): energy_<step>.h5 with T, the melt fraction alpha f and alpha, indexed by energy.xmf.
+  PetscErrorCode SetOutputDir(const std::string &dir);
+  PetscErrorCode WriteOutput(PetscInt step, PetscReal time);
   Vec            Temperature() const { return T_; }
   Vec            MeltFraction();  // f_l per cell (alpha-weighted: the metal's), for output
   const Laser   &Beam() const { return laser_; }
@@ -77,6 +82,7 @@ private:
   PetscErrorCode Assemble(PetscReal a, PetscReal dt);  // matrix and rhs at the current iterate
   PetscErrorCode Residual(PetscReal a, PetscReal dt, PetscReal *maxResidual);  // r = a E - H - dt R(T)
   PetscErrorCode Update(PetscReal lambda);         // the enthalpy update with a fraction lambda of the correction
+  XdmfEntry      OutputEntry(PetscInt step, PetscReal time) const;
   PetscErrorCode PoolExtent(PetscReal iso, PetscReal ext[3]);
   PetscReal      CellEnergy(PetscReal alpha, PetscReal T, PetscReal f) const;
   PetscReal      CellSensibleCapacity(PetscReal alpha, PetscReal T) const;
@@ -115,6 +121,10 @@ private:
   PetscInt      steps_ = 0;
   PetscReal     dtOld_ = 0, W_ = 0, Wold_ = 0, totalOld_ = 0, totalOlder_ = 0;
   EnergySummary last_;
+
+  PetscInt               outputEvery_ = 0;
+  std::string            outputDir_;
+  std::vector<XdmfEntry> outputEntries_;
 };
 
 }  // namespace vofdem

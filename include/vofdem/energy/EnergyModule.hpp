@@ -31,6 +31,8 @@ public:
   PetscErrorCode Load(PetscViewer viewer) override;
   PetscErrorCode SavedBytes(PetscInt64 *bytes) const override;
   PetscErrorCode Destroy() override { return energy_.Destroy(); }
+  PetscErrorCode SetOutputDir(const std::string &dir) override { return energy_.SetOutputDir(dir); }
+  PetscErrorCode WriteOutput(PetscInt step, PetscReal time) override { return energy_.WriteOutput(step, time); }
 
 private:
   Energy    energy_;
