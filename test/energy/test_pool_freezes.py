@@ -5,10 +5,14 @@
   - it freezes completely: the melt volume is exactly 0 at the end, with the step unchanged (no collapse) and at
     most 10 enthalpy iterations in any step;
   - the energy account closes: |total - accounted| below 1e-10 of the energy the laser put in (radiation included);
-on 1 and 2 ranks (split in z, so the beam's column march crosses ranks).
+on 1 and 2 ranks (split in z, so the beam's column march crosses ranks). And the 3 kW spot
+(config/scenes/spot-on-plate.yaml at 20 x 20 x 10 cells) passes the boiling point: the run stops on 2 ranks with one
+error line naming the peak temperature and the boiling point, a non-zero exit and no PETSc trace.
   test_pool_freezes.py VOFDEM"""
 import os
+import re
 import shutil
+import subprocess
 import sys
 import tempfile
 
@@ -40,6 +44,14 @@ def main():
             put = sum(r["laser_absorbed_W"] * r["dt_s"] for r in rows[1:])
             drift = abs(last["energy_total_J"] - last["energy_accounted_J"])
             check(drift <= 1e-10 * put, "%d rank(s): energy account: |total - accounted| %.2e J, %.1e of the %.4e J absorbed (tolerance 1e-10)" % (ranks, drift, drift / put, put))
+        env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
+        p = subprocess.run(["mpiexec", "-n", "2", "--oversubscribe", exe, "-options_file_yaml", os.path.join(ROOT, "config", "scenes", "spot-on-plate.yaml"),
+                            "-grid_cells", "20,20,10"], capture_output=True, text=True, env=env, timeout=120)
+        errors = [l for l in (p.stdout + p.stderr).splitlines() if "error" in l.lower()]
+        stop = re.compile(r"vofdem: error: energy: the metal reached ([0-9.]+) K at t = \S+ s, past its boiling point 3000\.? K")
+        m = stop.search(p.stdout + p.stderr)
+        check(p.returncode != 0 and len(errors) == 1 and m is not None and "PETSC ERROR" not in p.stdout + p.stderr,
+              "the 3 kW spot stops at the boiling point: exit %d, %d error line(s): %s" % (p.returncode, len(errors), errors[0] if errors else "none"))
     finally:
         shutil.rmtree(tmp, ignore_errors=True)
     finish()
