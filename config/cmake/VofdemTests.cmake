@@ -191,6 +191,9 @@ set_tests_properties(energy/stefan PROPERTIES LABELS "quick;energy" PROCESSORS 2
 # E4's power integral: eta P absorbed to 1e-12 at R_l/h 0.35-2 with the beam off the grid lines, split in z and in x.
 add_test(NAME energy/laser_power COMMAND ${VOFDEM_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/test/energy/test_laser_power.py $<TARGET_FILE:vofdem_app>)
 set_tests_properties(energy/laser_power PROPERTIES LABELS "quick;energy" PROCESSORS 2 TIMEOUT 300)
+# E5: energy across a moving interface (the dam break, rho cp ratio 4000): a uniform T stays uniform to 1e-12, a closed box keeps its energy.
+add_test(NAME energy/interface_transport COMMAND ${VOFDEM_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/test/energy/test_interface_transport.py $<TARGET_FILE:vofdem_app>)
+set_tests_properties(energy/interface_transport PROPERTIES LABELS "quick;energy" PROCESSORS 2 TIMEOUT 300)
 # E4: a moving Gaussian source on a plate against Eagar and Tsai, R_l/h = 2: peak, isotherm length and width within 2 %, 1 and 2 ranks.
 add_test(NAME energy/moving_source COMMAND ${VOFDEM_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/test/energy/test_moving_source.py $<TARGET_FILE:vofdem_app>)
 set_tests_properties(energy/moving_source PROPERTIES LABELS "quick;energy" PROCESSORS 2 TIMEOUT 300)
@@ -207,5 +210,7 @@ vofdem_bad_input(energy_laser_outside "option -laser_path: way point 1 \\(2\\.?,
 vofdem_bad_input(energy_absorptivity_range "option -laser_absorptivity: .*1.5" ${VOFDEM_ENERGY_BOX} -laser_power 100 -laser_radius 0.1 -laser_path 0.5,0.5 -laser_absorptivity 1.5)
 vofdem_bad_input(energy_laser_without_energy "unknown or unused option -laser_power" -physics dem -grid_upper 0.01,0.01,0.01 -laser_power 100)
 vofdem_bad_input(energy_material_missing "option -energy_metal: .*no_solidus.yaml: .*needs a solidus|option -energy_metal_solidus: the metal .*no_solidus.yaml.* needs a solidus and a liquidus" ${VOFDEM_ENERGY_BOX} -energy_metal ${CMAKE_CURRENT_SOURCE_DIR}/test/energy/no_solidus.yaml)
-vofdem_bad_input(energy_with_flow "option -physics: 'energy' with 'flow' is not built yet" -physics flow,energy)
+vofdem_bad_input(energy_flow_without_vof "option -physics: 'energy' with 'flow' needs 'vof'" -physics flow,energy)
+vofdem_bad_input(energy_with_dem "option -physics: 'energy' with 'dem' is not built yet" -physics dem,energy -grid_upper 0.01,0.01,0.01 -dt 1e-5)
+vofdem_bad_input(energy_density_mismatch "option -energy_metal_density: 8380\\.? kg/m\\^3 .* differs from the interface's -vof_density 1000\\.? kg/m\\^3" -physics flow,vof,energy -grid_cells 4,4,4)
 vofdem_bad_input(energy_needs_dt "option -dt: the energy equation is implicit and sets no step of its own without a moving laser" -physics energy -grid_cells 4,4,4)

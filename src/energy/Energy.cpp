@@ -112,6 +112,9 @@ PetscErrorCode Energy::SetFromOptions(const Grid &grid) {
     PetscCall(opt.Real("-substrate_top", "Top of a preheated substrate (cells whose centre is below it; default: none)", "m", &substrateTop_, RealRange::Any()));
     PetscCall(opt.Real("-substrate_temperature", "Initial temperature of the substrate", "K", &substrateT_, RealRange::Positive()));
     PetscCall(opt.Real("-metal_top", "Without an interface module: metal below this height, gas above (default: the box top, all metal)", "m", &metalTop_, RealRange::Any()));
+    metal_.referenceTemperature = 300;
+    PetscCall(opt.Real("-reference_temperature", "Where the enthalpy is zero (energy_total_J counts from it)", "K", &metal_.referenceTemperature, RealRange::NonNegative()));
+    gas_.referenceTemperature = metal_.referenceTemperature;
     PetscCall(opt.Real("-ambient_temperature", "Ambient temperature of the interface's losses", "K", &ambient_, RealRange::Positive()));
     PetscCall(opt.Real("-interface_convection", "Heat transfer coefficient of the metal surface to the ambient", "W/(m^2 K)", &interfaceConvection_, RealRange::NonNegative()));
     PetscCall(opt.Bool("-interface_radiation", "Radiation of the metal surface (its emissivity) to the ambient", &interfaceRadiation_));
@@ -145,7 +148,7 @@ PetscErrorCode Energy::SetUp() {
 
   PetscFunctionBeginUser;
   dm_ = grid_->CellDM();
-  for (Vec *v : {&T_, &E_, &Eold_, &H_, &C_, &Ecur_, &k_, &q_, &alpha_, &r_, &rhs_, &Tstar_, &fl_, &F_, &slope_, &TF_, &Tbase_, &Fbase_}) PetscCall(DMCreateGlobalVector(dm_, v));
+  for (Vec *v : {&T_, &E_, &Eold_, &H_, &C_, &Ecur_, &k_, &q_, &alpha_, &r_, &rhs_, &Tstar_, &fl_, &F_, &slope_, &TF_, &Tbase_, &Fbase_, &Xstart_}) PetscCall(DMCreateGlobalVector(dm_, v));
   for (Vec *v : {&TLocal_, &kLocal_, &alphaLocal_}) PetscCall(DMCreateLocalVector(dm_, v));
   PetscCall(PetscObjectSetName((PetscObject)T_, "energy_temperature"));
   PetscCall(PetscObjectSetName((PetscObject)Eold_, "energy_previous_energy"));
@@ -217,10 +220,11 @@ PetscErrorCode Energy::SetInitial() {
         if (inside) t = boxT_;
         T[z][y][x]  = t;
         F[z][y][x]  = metal_.MeltFraction(t);
-        al[z][y][x] = std::min((PetscReal)1, std::max((PetscReal)0, (metalTop_ - (lo[2] + z * h[2])) / h[2]));  // the cell's metal below metalTop_
+        if (!interfaceAlpha_) al[z][y][x] = std::min((PetscReal)1, std::max((PetscReal)0, (metalTop_ - (lo[2] + z * h[2])) / h[2]));  // the cell's metal below metalTop_
       }
   PetscCall(DMDAVecRestoreArray(dm_, alpha_, &al));
   PetscCall(DMDAVecRestoreArray(dm_, F_, &F));
+  if (interfaceAlpha_) PetscCall(VecCopy(interfaceAlpha_(), alpha_));  // the interface's metal
   PetscCall(DMDAVecRestoreArray(dm_, T_, &T));
   PetscCall(DMGlobalToLocal(dm_, alpha_, INSERT_VALUES, alphaLocal_));
   PetscCall(Properties());
@@ -290,7 +294,7 @@ PetscErrorCode Energy::Load(PetscViewer viewer) {
 
 PetscErrorCode Energy::Destroy() {
   PetscFunctionBeginUser;
-  for (Vec *v : {&T_, &E_, &Eold_, &H_, &C_, &Ecur_, &k_, &q_, &alpha_, &r_, &rhs_, &Tstar_, &fl_, &F_, &slope_, &TF_, &Tbase_, &Fbase_, &TLocal_, &kLocal_, &alphaLocal_}) PetscCall(VecDestroy(v));
+  for (Vec *v : {&T_, &E_, &Eold_, &H_, &C_, &Ecur_, &k_, &q_, &alpha_, &r_, &rhs_, &Tstar_, &fl_, &F_, &slope_, &TF_, &Tbase_, &Fbase_, &Xstart_, &TLocal_, &kLocal_, &alphaLocal_, &Tsg_, &Fsg_, &TsgLocal_, &FsgLocal_, &AsgLocal_, &uLocal_[0], &uLocal_[1], &uLocal_[2], &fluxLocal_[0], &fluxLocal_[1], &fluxLocal_[2]}) PetscCall(VecDestroy(v));
   PetscCall(MatDestroy(&A_));
   PetscCall(KSPDestroy(&ksp_));
   if (column_ != MPI_COMM_NULL) PetscCallMPI(MPI_Comm_free(&column_));

@@ -4,7 +4,10 @@
 #include "vofdem/base/ModuleRegistry.hpp"
 #include "vofdem/base/Runtime.hpp"
 #include "vofdem/base/ViewerGroup.hpp"
+#include "vofdem/flow/FlowModule.hpp"
+#include "vofdem/vof/VofModule.hpp"
 
+#include <cmath>
 #include <cstdio>
 
 namespace vofdem {
@@ -13,12 +16,27 @@ PetscErrorCode EnergyModule::SetFromOptions(const RunContext &run) { return ener
 
 PetscErrorCode EnergyModule::Configure(ModuleSet &modules, const RunContext &run) {
   PetscFunctionBeginUser;
-  // The flow would carry heat through the interface's sweeps (F7 a) and particles would take their volume
-  // and exchange heat (F9): neither is built, and energy beside them would be silently wrong.
-  for (const char *other : {"flow", "dem"})
-    if (modules.Has(other))
-      VofdemInputError(run.comm, "option -physics: 'energy' with '%s' is not built yet (heat carried by the flow and exchanged with particles); -physics energy alone is conduction in still metal", other);
-  if (!run.fixedDt && !(energy_.StepLimit() > 0) && !run.help)
+  // Particles would take their volume and exchange heat (F9): not built, and energy beside them would be silently wrong.
+  if (modules.Has("dem"))
+    VofdemInputError(run.comm, "option -physics: 'energy' with 'dem' is not built yet (heat exchanged with particles); use -physics energy or flow,vof,energy");
+  if (modules.Has("flow") && !modules.Has("vof"))
+    VofdemInputError(run.comm, "option -physics: 'energy' with 'flow' needs 'vof' (the metal is the interface's heavy phase)");
+  if (VofModule *vof = modules.Get<VofModule>("vof")) {  // the energy moves with the interface's sweeps (F7 a)
+    FlowModule *flow = modules.Get<FlowModule>("flow");
+    Vof        &v    = vof->Get();
+    // One density per phase: the momentum moves with the interface's, the energy with the materials'.
+    const PetscReal rm = energy_.Metal().density, rg = energy_.Gas().density;
+    if (std::fabs(rm - v.Density()) > 1e-12 * rm)
+      VofdemInputError(run.comm, "option -energy_metal_density: %g kg/m^3 (%s) differs from the interface's -vof_density %g kg/m^3; give them one value", (double)rm,
+                       energy_.Metal().path.c_str(), (double)v.Density());
+    if (std::fabs(rg - flow->Get().ReferenceDensity()) > 1e-12 * rg)
+      VofdemInputError(run.comm, "option -energy_gas_density: %g kg/m^3 (%s) differs from the flow's -flow_density %g kg/m^3; give them one value", (double)rg,
+                       energy_.Gas().path.c_str(), (double)flow->Get().ReferenceDensity());
+    energy_.AttachInterface(flow->Get().Staggered(), [&v]() { return v.Fraction(); });
+    v.AddSweepObserver([this, &v](int d, PetscReal dt, Vec u, Vec phaseFlux) { return energy_.TransportSweep(d, dt, u, phaseFlux, v.FullAtStart()); });
+    flow_ = flow, vof_ = vof;
+  }
+  if (!modules.Has("flow") && !run.fixedDt && !(energy_.StepLimit() > 0) && !run.help)
     VofdemInputError(run.comm, "option -dt: the energy equation is implicit and sets no step of its own without a moving laser: give -dt");
   PetscFunctionReturn(0);
 }
@@ -53,7 +71,7 @@ PetscErrorCode EnergyModule::Monitor(MonitorPart *part) {
                 (double)s.total, (double)s.balance, (double)s.balanceRelative, (double)s.peak, (double)s.absorbed, (double)s.beam, (double)s.pool[0], (double)s.pool[1],
                 (double)s.pool[2], (int)s.iterations);
   part->screen = b;
-  std::snprintf(b, sizeof b, ",%.16e,%.16e,%.6e,%.6e,%.10e,%.10e,%.10e,%.16e,%.16e,%.10e,%.10e,%.10e,%.10e,%.10e,%.10e,%d,%d", (double)s.total, (double)s.accounted,
+  std::snprintf(b, sizeof b, ",%.16e,%.16e,%.6e,%.6e,%.10e,%.10e,%.10e,%.16e,%.16e,%.16e,%.16e,%.10e,%.10e,%.10e,%.10e,%d,%d", (double)s.total, (double)s.accounted,
                 (double)s.balance, (double)s.balanceRelative, (double)s.inputRate, (double)s.boundaryRate, (double)s.lossRate, (double)s.beam, (double)s.absorbed,
                 (double)s.peak, (double)s.minimum, (double)s.meltVolume, (double)s.pool[0], (double)s.pool[1], (double)s.pool[2], (int)s.iterations,
                 (int)s.linearIterations);

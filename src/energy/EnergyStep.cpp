@@ -343,7 +343,7 @@ PetscErrorCode Energy::Step(PetscReal time, PetscReal dt) {
   PetscReal a = 1, bcoef = 1, c = 0;
 
   PetscFunctionBeginUser;
-  if (bdf2_ && steps_ > 0 && dtOld_ > 0) {
+  if (bdf2_ && !Moving() && steps_ > 0 && dtOld_ > 0) {  // with a moving interface: backward Euler after the transport
     const PetscReal w = dt / dtOld_;
     a = (1 + 2 * w) / (1 + w), bcoef = 1 + w, c = w * w / (1 + w);
   }
@@ -410,6 +410,7 @@ PetscErrorCode Energy::Step(PetscReal time, PetscReal dt) {
   PetscCall(VecCopy(E_, Eold_));
   PetscCall(VecCopy(Ecur_, E_));
   dtOld_ = dt, ++steps_;
+  swept_ = false;
   last_.iterations = it, last_.linearIterations = linear;
   PetscFunctionReturn(0);
 }

@@ -88,8 +88,7 @@ PetscErrorCode Energy::Summarize(EnergySummary *s) {
   PetscCall(VecSum(MeltFraction(), &s->meltVolume));
   s->meltVolume *= V;
   PetscCall(PoolExtent(poolIsotherm_, s->pool));
-  const PetscReal change = std::fabs(totalOld_ - totalOlder_);
-  s->balanceRelative     = s->balance / std::max({change, std::fabs(dtOld_ * s->inputRate), (PetscReal)1e-300});
+  s->balanceRelative = s->balance / std::max(std::fabs(s->total), (PetscReal)1e-300);
   PetscFunctionReturn(0);
 }
 

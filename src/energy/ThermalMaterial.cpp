@@ -51,7 +51,7 @@ PetscReal ThermalMaterial::MeltSlope(PetscReal T) const {
   return 4 / w / std::sqrt(PETSC_PI) * std::exp(-x * x);
 }
 
-PetscReal ThermalMaterial::Enthalpy(PetscReal T) const { return cp.Integral(0, T) + latentHeat * MeltFraction(T); }
+PetscReal ThermalMaterial::Enthalpy(PetscReal T) const { return Sensible(T) + latentHeat * MeltFraction(T); }
 
 PetscReal ThermalMaterial::MeltInverse(PetscReal f) const {
   if (melt == MeltLaw::Linear) return solidus + f * (liquidus - solidus);

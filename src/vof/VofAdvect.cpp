@@ -263,6 +263,7 @@ PetscErrorCode Vof::Advect(Vec const u[3], PetscReal dt) {
     PetscCall(Sweep(d, p + 1, uLocal_, dt, &counts[0], &counts[1]));
     PetscCall(FillGhosts());
     if (momentumFlow_) PetscCall(MomentumSweep(d, dt));  // AdvectWithMomentum (VofMomentum.cpp)
+    for (const SweepObserver &o : observers_) PetscCall(o(d, dt, u[d], phaseFlux_[d]));
   }
   if (eps_ && redistribute_) {
     PetscCall(Redistribute());

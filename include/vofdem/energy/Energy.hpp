@@ -16,10 +16,12 @@
 #include "vofdem/energy/Laser.hpp"
 #include "vofdem/energy/ThermalMaterial.hpp"
 #include "vofdem/grid/Grid.hpp"
+#include "vofdem/grid/StaggeredGrid.hpp"
 #include "vofdem/io/Xdmf.hpp"
 
 #include <petscksp.h>
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -43,7 +45,7 @@ struct EnergySummary {
   PetscReal absorbed = 0;       // W of the laser deposited in the cells
   PetscReal beam = 0;           // W of the laser entering the box
   PetscReal balance = 0;        // J: the step's energy balance error, sum of the cells' residuals
-  PetscReal balanceRelative = 0;  // balance / max(|change of total|, dt * |input|, tiny)
+  PetscReal balanceRelative = 0;  // balance / |total|
   PetscReal accounted = 0;      // J: the integrated input by the scheme's own quadrature, plus the initial total
   PetscReal peak = 0, minimum = 0;  // K
   PetscReal meltVolume = 0;     // m^3 of metal above the pool isotherm's melt fraction (sum alpha f_l dV)
@@ -56,6 +58,15 @@ class Energy {
 public:
   PetscErrorCode SetFromOptions(const Grid &grid);
   PetscErrorCode SetUp();
+  // With a moving interface (before SetUp): the metal fraction alpha is the interface's (a global vector of sg's
+  // cells, followed after each sweep), and the energy moves with the sweeps (TransportSweep).
+  void AttachInterface(const StaggeredGrid &sg, std::function<Vec()> alpha) { sg_ = &sg, interfaceAlpha_ = std::move(alpha); }
+  bool Moving() const { return sg_ != nullptr; }
+  // After the interface's sweep along d (u_d its face velocities, F_d its metal volume flux per face, c its
+  // cells' Weymouth-Yue indicator): the metal and gas enthalpy fluxes F_d rho_m h_m(T_f) and (u_d - F_d) rho_g
+  // h_g(T_f), T_f the van Leer face temperature (the donor's where the stencil mixes phases), and the dilatation term with h at the step's start
+  // (docs/physics.md F7 a). A uniform T stays uniform; a closed box keeps its energy.
+  PetscErrorCode TransportSweep(int d, PetscReal dt, Vec u, Vec phaseFlux, const std::vector<char> &full);
   PetscErrorCode Step(PetscReal time, PetscReal dt);  // advances T from time to time + dt
   PetscErrorCode Summarize(EnergySummary *s);         // the last step's account, the state now
   PetscErrorCode View(PetscViewer viewer) const;
@@ -71,6 +82,8 @@ public:
   Vec            Temperature() const { return T_; }
   Vec            MeltFraction();  // f_l per cell (alpha-weighted: the metal's), for output
   const Laser   &Beam() const { return laser_; }
+  const ThermalMaterial &Metal() const { return metal_; }
+  const ThermalMaterial &Gas() const { return gas_; }
   PetscInt       SavedVectors() const { return 4; }
 
 private:
@@ -81,7 +94,8 @@ private:
   PetscErrorCode LaserSource(PetscReal time);       // q_ (W/m^3), absorbed_, beam_
   PetscErrorCode Assemble(PetscReal a, PetscReal dt);  // matrix and rhs at the current iterate
   PetscErrorCode Residual(PetscReal a, PetscReal dt, PetscReal *maxResidual);  // r = a E - H - dt R(T)
-  PetscErrorCode Update(PetscReal lambda);         // the enthalpy update with a fraction lambda of the correction
+  PetscErrorCode Update(PetscReal lambda);
+  PetscReal      CellTemperature(PetscReal E, PetscReal alpha, PetscReal guess) const;  // T with E(T, f_l(T)) = E         // the enthalpy update with a fraction lambda of the correction
   XdmfEntry      OutputEntry(PetscInt step, PetscReal time) const;
   PetscErrorCode PoolExtent(PetscReal iso, PetscReal ext[3]);
   PetscReal      CellEnergy(PetscReal alpha, PetscReal T, PetscReal f) const;
@@ -121,6 +135,12 @@ private:
   PetscInt      steps_ = 0;
   PetscReal     dtOld_ = 0, W_ = 0, Wold_ = 0, totalOld_ = 0, totalOlder_ = 0;
   EnergySummary last_;
+
+  const StaggeredGrid *sg_ = nullptr;  // with a moving interface
+  std::function<Vec()> interfaceAlpha_;  // the interface's alpha (once it is set up)
+  Vec                  Tsg_ = nullptr, TsgLocal_ = nullptr, Fsg_ = nullptr, FsgLocal_ = nullptr, AsgLocal_ = nullptr, uLocal_[3] = {nullptr, nullptr, nullptr},
+                       fluxLocal_[3] = {nullptr, nullptr, nullptr}, Xstart_ = nullptr;
+  bool                 swept_ = false;  // this step's sweeps have begun (Xstart_ holds the step's dilatation enthalpy)
 
   PetscInt               outputEvery_ = 0;
   std::string            outputDir_;

@@ -1,6 +1,7 @@
 // The energy equation (Energy.hpp) as a module (base/Module.hpp): -physics energy, conduction with latent
-// heat and the laser in metal that does not move (the metal below -energy_metal_top). Stage "transport",
-// where it will follow the interface's sweeps once the flow carries heat (docs/modules/energy.md).
+// heat and the laser in metal that does not move (the metal below -energy_metal_top), or -physics
+// flow,vof,energy, where the energy moves with the interface's sweeps (an observer of Vof) and the metal is
+// the interface's heavy phase. Stage "transport": the implicit diffusion after the sweeps (docs/modules/energy.md).
 #pragma once
 
 #include "vofdem/base/Module.hpp"
@@ -36,6 +37,7 @@ public:
 
 private:
   Energy    energy_;
+  Module   *flow_ = nullptr, *vof_ = nullptr;  // with a moving interface
   PetscReal time_ = 0;
 };
 

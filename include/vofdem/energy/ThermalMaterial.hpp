@@ -2,8 +2,8 @@
 // density, heat capacity and conductivity (numbers, or tables of temperature), and for a metal its solidus,
 // liquidus, latent heat, melt-fraction law, boiling point; emissivity and absorptivity of its surface.
 // Read from config/materials/<name>.yaml (ReadThermalMaterial); every value a file gives states its source
-// there. The enthalpy per mass, h(T) = int_{T_ref}^{T} cp dT + f_l(T) L, with T_ref = 0 K (a choice: only
-// differences of h enter), is exact for a piecewise-linear cp table.
+// there. The enthalpy per mass, h(T) = int_{T_ref}^{T} cp dT + f_l(T) L (T_ref a choice: only differences of
+// h enter), is exact for a piecewise-linear cp table.
 #pragma once
 
 #include <petscsys.h>
@@ -35,11 +35,13 @@ struct ThermalMaterial {
   PetscReal     emissivity   = 0;             // of its surface, -
   PetscReal     absorptivity = -1;            // of a laser at its surface, - (< 0: not given)
   MeltLaw       melt = MeltLaw::Linear;
+  PetscReal     referenceTemperature = 0;  // K: where h = 0 (only differences of h enter; a reference near the field's
+                                           // temperatures keeps E's round-off to that of the differences)
 
   PetscReal MeltFraction(PetscReal T) const;   // f_l, 0 for a gas
   PetscReal MeltSlope(PetscReal T) const;      // d f_l / dT
   PetscReal Enthalpy(PetscReal T) const;       // h(T), J/kg
-  PetscReal Sensible(PetscReal T) const { return cp.Integral(0, T); }  // int_0^T cp dT, J/kg
+  PetscReal Sensible(PetscReal T) const { return cp.Integral(referenceTemperature, T); }  // int_{T_ref}^T cp dT, J/kg
   PetscReal MeltInverse(PetscReal f) const;    // the T with f_l(T) = f, for 0 < f < 1
   PetscReal Capacity(PetscReal T) const { return cp.At(T) + latentHeat * MeltSlope(T); }  // dh/dT
 };

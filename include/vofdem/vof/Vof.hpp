@@ -18,6 +18,7 @@
 
 #include "vofdem/grid/StaggeredGrid.hpp"
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -113,6 +114,13 @@ public:
   PetscReal CapillaryTimeStep(PetscReal otherDensity) const;
   Vec       Curvature() const { return kappa_; }  // 1/m, 1e300 where none (after SurfaceTension)
   Vec Fraction() const { return alpha_; }  // global vector of FractionDM()
+  // What moves with the interface's sweeps (the energy, docs/physics.md F7 a) runs its own sweep after each of
+  // alpha's: observer(d, dt, u_d, F_d) with u_d the face velocities the sweep used and F_d its phase-1 volume
+  // flux per face (m/s), both global on the staggered grid's Face(d); alpha is already moved.
+  using SweepObserver = std::function<PetscErrorCode(int d, PetscReal dt, Vec u, Vec phaseFlux)>;
+  void AddSweepObserver(SweepObserver observer) { observers_.push_back(std::move(observer)); }
+  // c_i of the step's sweeps (Weymouth and Yue: alpha > 1/2 at the step's start), owned cells, x fastest.
+  const std::vector<char> &FullAtStart() const { return fullAtStart_; }
   DM  FractionDM() const { return da_; }
   VofNormals Normals() const { return normals_; }
   // Static contact angle of box face f (xlo, xhi, ylo, yhi, zlo, zhi), degrees through phase 1
@@ -163,6 +171,7 @@ private:
   Vec                  uLocal_[3] = {nullptr, nullptr, nullptr};
   Vec                  kappa_ = nullptr, kappaLocal_ = nullptr;  // SurfaceTension
   std::vector<char>    fullAtStart_;  // c_i of the current step, owned cells
+  std::vector<SweepObserver> observers_;
   std::vector<double>  flux_;         // face fluxes of one sweep
   Vec                  eps_ = nullptr, epsChange_ = nullptr;  // SetFluidFraction (not owned)
   Vec                  epsLocal_ = nullptr, changeLocal_ = nullptr, cellScratch_ = nullptr;  // on da_

@@ -1,0 +1,182 @@
+// Energy.hpp: the energy carried by the interface's sweeps (docs/physics.md F7 a). After alpha's sweep along d,
+//   E'' = E' - dt/h (Phi_P - Phi_M) + dt/h (u_P - u_M) X,   Phi = F rho_m h_m(T_f, f_up) + (u - F) rho_g h_g(T_f),
+//   X = c rho_m h_m(T^n, f^n) + (1 - c) rho_g h_g(T^n),
+// with F the sweep's metal volume flux, c alpha's Weymouth-Yue indicator and T_f the van Leer (TVD) face
+// temperature from the upwind side where the stencil is one phase, the donor cell's temperature where it is not. With alpha'' = alpha' - dt/h (F_P - F_M) + c dt/h (u_P - u_M), a uniform T
+// gives E'' = alpha'' rho_m h_m + (1 - alpha'') rho_g h_g exactly: T stays uniform whatever the jump of rho cp.
+// X is frozen over the step's sweeps, so that their dilatation terms add up to X div u. T and f then follow from
+// E'' and alpha'' (f = f_l(T)).
+#include "vofdem/energy/Energy.hpp"
+
+#include "vofdem/base/Runtime.hpp"
+
+#include <petscdmda.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace vofdem {
+
+namespace {
+
+inline PetscReal VanLeer(PetscReal r) { return (r + std::fabs(r)) / (1 + std::fabs(r)); }
+inline PetscReal FaceValue(PetscReal up2, PetscReal up1, PetscReal down) {
+  const PetscReal dd = down - up1, du = up1 - up2;
+  if (dd == 0) return up1;
+  return up1 + 0.5 * VanLeer(du / dd) * dd;
+}
+
+// Outside a non-periodic box: the nearest interior cell's value (no flux crosses a wall: u = 0 there).
+void FillOutside(const StaggeredGrid &sg, LocalField &c) {
+  const Grid &grid = sg.Base();
+  PetscInt    gs[3], gm[3];
+  DMDAGetGhostCorners(sg.Cells(), &gs[0], &gs[1], &gs[2], &gm[0], &gm[1], &gm[2]);
+  for (int d = 0; d < 3; ++d) {
+    if (grid.Periodic(d)) continue;
+    const PetscInt n = grid.Cells()[d];
+    for (PetscInt k = gs[2]; k < gs[2] + gm[2]; ++k)
+      for (PetscInt j = gs[1]; j < gs[1] + gm[1]; ++j)
+        for (PetscInt i = gs[0]; i < gs[0] + gm[0]; ++i) {
+          PetscInt q[3] = {i, j, k};
+          if (q[d] >= 0 && q[d] < n) continue;
+          PetscInt src[3] = {i, j, k};
+          src[d]          = q[d] < 0 ? 0 : n - 1;
+          bool in         = true;
+          for (int e = 0; e < 3; ++e) in = in && src[e] >= gs[e] && src[e] < gs[e] + gm[e];
+          if (in) c.at(q) = c.at(src);
+        }
+  }
+}
+
+}  // namespace
+
+PetscReal Energy::CellTemperature(PetscReal E, PetscReal a, PetscReal guess) const {
+  auto f  = [&](PetscReal T) { return CellEnergy(a, T, metal_.MeltFraction(T)) - E; };
+  auto df = [&](PetscReal T) { return CellSensibleCapacity(a, T) + a * metal_.density * metal_.latentHeat * metal_.MeltSlope(T); };
+  PetscReal lo = guess, hi = guess, step = 1e-6 * std::max((PetscReal)1, std::fabs(guess));
+  while (f(lo) > 0) lo -= step, step *= 2;
+  step = 1e-6 * std::max((PetscReal)1, std::fabs(guess));
+  while (f(hi) < 0) hi += step, step *= 2;
+  PetscReal T = std::min(hi, std::max(lo, guess));
+  for (int it = 0; it < 200; ++it) {
+    const PetscReal fT = f(T);
+    if (fT == 0) return T;
+    (fT < 0 ? lo : hi) = T;
+    const PetscReal d = df(T);
+    PetscReal       n = d > 0 ? T - fT / d : 0.5 * (lo + hi);
+    if (!(n > lo && n < hi)) n = 0.5 * (lo + hi);
+    if (n == T || hi - lo <= 2 * PETSC_MACHINE_EPSILON * std::fabs(T)) return n;
+    T = n;
+  }
+  return T;
+}
+
+PetscErrorCode Energy::TransportSweep(int d, PetscReal dt, Vec u, Vec phaseFlux, const std::vector<char> &full) {
+  const StaggeredGrid &sg = *sg_;
+  const PetscReal      r  = dt / grid_->Spacing()[d];
+  LocalField           T, F, uf, pf, E, X, A;
+  PetscInt             s[3], n[3];
+
+  PetscFunctionBeginUser;
+  if (!Tsg_) {
+    PetscCall(DMCreateGlobalVector(sg.Cells(), &Tsg_));
+    PetscCall(VecDuplicate(Tsg_, &Fsg_));
+    PetscCall(DMCreateLocalVector(sg.Cells(), &TsgLocal_));
+    PetscCall(VecDuplicate(TsgLocal_, &FsgLocal_));
+    PetscCall(VecDuplicate(TsgLocal_, &AsgLocal_));
+    for (int e = 0; e < 3; ++e) {
+      PetscCall(DMCreateLocalVector(sg.Face(e), &uLocal_[e]));
+      PetscCall(DMCreateLocalVector(sg.Face(e), &fluxLocal_[e]));
+    }
+  }
+  sg.Owned(3, s, n);
+  if (!swept_) {  // the step's first sweep: X from the state at its start
+    PetscScalar ***Tn, ***Fn, ***Xn;
+    PetscCall(DMDAVecGetArrayRead(dm_, T_, &Tn));
+    PetscCall(DMDAVecGetArrayRead(dm_, F_, &Fn));
+    PetscCall(DMDAVecGetArray(dm_, Xstart_, &Xn));
+    for (PetscInt k = s[2]; k < s[2] + n[2]; ++k)
+      for (PetscInt j = s[1]; j < s[1] + n[1]; ++j)
+        for (PetscInt i = s[0]; i < s[0] + n[0]; ++i) {
+          const size_t    cell = (size_t)((i - s[0]) + n[0] * ((j - s[1]) + n[1] * (k - s[2])));
+          const PetscReal t = Tn[k][j][i];
+          Xn[k][j][i]       = full[cell] ? metal_.density * (metal_.Sensible(t) + metal_.latentHeat * Fn[k][j][i]) : gas_.density * gas_.Sensible(t);
+        }
+    PetscCall(DMDAVecRestoreArray(dm_, Xstart_, &Xn));
+    PetscCall(DMDAVecRestoreArrayRead(dm_, F_, &Fn));
+    PetscCall(DMDAVecRestoreArrayRead(dm_, T_, &Tn));
+    swept_ = true;
+  }
+  PetscCall(VecCopy(T_, Tsg_));  // the same layout on the staggered grid's cells (2 ghosts: the TVD stencil)
+  PetscCall(VecCopy(F_, Fsg_));
+  PetscCall(DMGlobalToLocal(sg.Cells(), Tsg_, INSERT_VALUES, TsgLocal_));
+  PetscCall(DMGlobalToLocal(sg.Cells(), Fsg_, INSERT_VALUES, FsgLocal_));
+  PetscCall(DMGlobalToLocal(sg.Face(d), u, INSERT_VALUES, uLocal_[d]));
+  PetscCall(DMGlobalToLocal(sg.Face(d), phaseFlux, INSERT_VALUES, fluxLocal_[d]));
+  PetscCall(VecCopy(alpha_, Tsg_));  // alpha at the sweep's start, ghosted like T (the face rule below)
+  PetscCall(DMGlobalToLocal(sg.Cells(), Tsg_, INSERT_VALUES, AsgLocal_));
+  PetscCall(sg.GetLocal(3, TsgLocal_, &T));
+  PetscCall(sg.GetLocal(3, FsgLocal_, &F));
+  PetscCall(sg.GetLocal(3, AsgLocal_, &A));
+  FillOutside(sg, T);
+  FillOutside(sg, F);
+  FillOutside(sg, A);
+  PetscCall(sg.GetLocal(d, uLocal_[d], &uf));
+  PetscCall(sg.GetLocal(d, fluxLocal_[d], &pf));
+  PetscCall(sg.GetGlobal(3, E_, &E));  // E_ and Xstart_ are global vectors of the same layout
+  PetscCall(sg.GetGlobal(3, Xstart_, &X));
+  const PetscReal rm = metal_.density, rg = gas_.density, L = metal_.latentHeat;
+  auto            flux = [&](const PetscInt f[3]) {  // Phi dt/h through face f (between cells f-1 and f along d)
+    const PetscReal vel = uf.at(f), fm = pf.at(f);
+    if (vel == 0 && fm == 0) return (PetscReal)0;
+    PetscInt L1[3] = {f[0], f[1], f[2]}, L2[3] = {f[0], f[1], f[2]}, R1[3] = {f[0], f[1], f[2]}, R2[3] = {f[0], f[1], f[2]};
+    L1[d] -= 1, L2[d] -= 2, R2[d] += 1;
+    const bool pos = vel >= 0;
+    // The face temperature: van Leer's where the stencil is one phase throughout; the donor cell's where it is
+    // not (a mixture temperature blended into a phase's flux would move metal enthalpy at a temperature the
+    // donor's metal does not have: at a rho cp jump of 4000 the gas side would be driven out of bounds).
+    const PetscInt *s1 = pos ? L2 : R2, *s2 = pos ? L1 : R1, *s3 = pos ? R1 : L1;
+    const PetscReal a1 = A.at(s1), a2 = A.at(s2), a3 = A.at(s3);
+    const bool      pure = (a1 == a2 && a2 == a3) && (a2 == 0 || a2 == 1);
+    const PetscReal tf   = pure ? FaceValue(T.at(s1), T.at(s2), T.at(s3)) : T.at(s2);
+    const PetscReal fup = pos ? F.at(L1) : F.at(R1);
+    return r * (fm * rm * (metal_.Sensible(tf) + L * fup) + (vel - fm) * rg * gas_.Sensible(tf));
+  };
+  for (PetscInt k = s[2]; k < s[2] + n[2]; ++k)
+    for (PetscInt j = s[1]; j < s[1] + n[1]; ++j)
+      for (PetscInt i = s[0]; i < s[0] + n[0]; ++i) {
+        PetscInt lo[3] = {i, j, k}, hi[3] = {i, j, k};
+        hi[d] += 1;
+        E.at(lo) += -(flux(hi) - flux(lo)) + r * (uf.at(hi) - uf.at(lo)) * X.at(lo);
+      }
+  PetscCall(sg.RestoreGlobal(3, Xstart_, &X));
+  PetscCall(sg.RestoreGlobal(3, E_, &E));
+  PetscCall(sg.RestoreLocal(d, fluxLocal_[d], &pf));
+  PetscCall(sg.RestoreLocal(d, uLocal_[d], &uf));
+  PetscCall(sg.RestoreLocal(3, AsgLocal_, &A));
+  PetscCall(sg.RestoreLocal(3, FsgLocal_, &F));
+  PetscCall(sg.RestoreLocal(3, TsgLocal_, &T));
+  // The moved interface, and T, f from E'' and alpha''.
+  PetscCall(VecCopy(interfaceAlpha_(), alpha_));
+  PetscCall(DMGlobalToLocal(dm_, alpha_, INSERT_VALUES, alphaLocal_));
+  {
+    PetscScalar ***Tg, ***Fg, ***Eg, ***al;
+    PetscCall(DMDAVecGetArray(dm_, T_, &Tg));
+    PetscCall(DMDAVecGetArray(dm_, F_, &Fg));
+    PetscCall(DMDAVecGetArrayRead(dm_, E_, &Eg));
+    PetscCall(DMDAVecGetArrayRead(dm_, alpha_, &al));
+    for (PetscInt k = s[2]; k < s[2] + n[2]; ++k)
+      for (PetscInt j = s[1]; j < s[1] + n[1]; ++j)
+        for (PetscInt i = s[0]; i < s[0] + n[0]; ++i) {
+          Tg[k][j][i] = CellTemperature(Eg[k][j][i], al[k][j][i], Tg[k][j][i]);  // alpha as the sweep left it (E'' was moved with it)
+          Fg[k][j][i]       = metal_.MeltFraction(Tg[k][j][i]);
+        }
+    PetscCall(DMDAVecRestoreArrayRead(dm_, alpha_, &al));
+    PetscCall(DMDAVecRestoreArrayRead(dm_, E_, &Eg));
+    PetscCall(DMDAVecRestoreArray(dm_, F_, &Fg));
+    PetscCall(DMDAVecRestoreArray(dm_, T_, &Tg));
+  }
+  PetscFunctionReturn(0);
+}
+
+}  // namespace vofdem
