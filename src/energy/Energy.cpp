@@ -3,6 +3,7 @@
 
 #include "vofdem/base/Options.hpp"
 #include "vofdem/base/Runtime.hpp"
+#include "vofdem/grid/CellMatrix.hpp"
 #include "vofdem/io/MaterialFile.hpp"
 #include "vofdem/io/XdmfCheckpoint.hpp"
 
@@ -163,17 +164,8 @@ PetscErrorCode Energy::SetUp() {
   PetscCall(DMDAGetInfo(dm_, nullptr, nullptr, nullptr, nullptr, &px, &py, &pz, nullptr, nullptr, nullptr, nullptr, nullptr, nullptr));
   const int xy = rank % (px * py), zr = rank / (px * py);
   PetscCallMPI(MPI_Comm_split(comm_, xy, (int)pz - 1 - zr, &column_));
-  // The matrix: hypre's structured type for PFMG, set for this matrix only (the grid's DM is shared).
-  if (pfmg_) {
-    MatType old;
-    PetscCall(DMGetMatType(dm_, &old));
-    const std::string keep = old ? old : MATAIJ;
-    PetscCall(DMSetMatType(dm_, MATHYPRESTRUCT));
-    PetscCall(DMCreateMatrix(dm_, &A_));
-    PetscCall(DMSetMatType(dm_, keep.c_str()));
-  } else {
-    PetscCall(DMCreateMatrix(dm_, &A_));
-  }
+  // The matrix: hypre's structured type for PFMG (grid/CellMatrix.hpp).
+  PetscCall(CreateCellMatrix(dm_, pfmg_, &A_));
   PetscCall(MatSetOption(A_, MAT_NEW_NONZERO_ALLOCATION_ERR, PETSC_FALSE));
   PetscCall(KSPCreate(comm_, &ksp_));
   PetscCall(KSPSetOptionsPrefix(ksp_, "energy_"));

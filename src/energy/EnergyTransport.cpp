@@ -9,6 +9,7 @@
 #include "vofdem/energy/Energy.hpp"
 
 #include "vofdem/base/Runtime.hpp"
+#include "vofdem/grid/CellStencil.hpp"
 
 #include <petscdmda.h>
 
@@ -17,38 +18,6 @@
 
 namespace vofdem {
 
-namespace {
-
-inline PetscReal VanLeer(PetscReal r) { return (r + std::fabs(r)) / (1 + std::fabs(r)); }
-inline PetscReal FaceValue(PetscReal up2, PetscReal up1, PetscReal down) {
-  const PetscReal dd = down - up1, du = up1 - up2;
-  if (dd == 0) return up1;
-  return up1 + 0.5 * VanLeer(du / dd) * dd;
-}
-
-// Outside a non-periodic box: the nearest interior cell's value (no flux crosses a wall: u = 0 there).
-void FillOutside(const StaggeredGrid &sg, LocalField &c) {
-  const Grid &grid = sg.Base();
-  PetscInt    gs[3], gm[3];
-  DMDAGetGhostCorners(sg.Cells(), &gs[0], &gs[1], &gs[2], &gm[0], &gm[1], &gm[2]);
-  for (int d = 0; d < 3; ++d) {
-    if (grid.Periodic(d)) continue;
-    const PetscInt n = grid.Cells()[d];
-    for (PetscInt k = gs[2]; k < gs[2] + gm[2]; ++k)
-      for (PetscInt j = gs[1]; j < gs[1] + gm[1]; ++j)
-        for (PetscInt i = gs[0]; i < gs[0] + gm[0]; ++i) {
-          PetscInt q[3] = {i, j, k};
-          if (q[d] >= 0 && q[d] < n) continue;
-          PetscInt src[3] = {i, j, k};
-          src[d]          = q[d] < 0 ? 0 : n - 1;
-          bool in         = true;
-          for (int e = 0; e < 3; ++e) in = in && src[e] >= gs[e] && src[e] < gs[e] + gm[e];
-          if (in) c.at(q) = c.at(src);
-        }
-  }
-}
-
-}  // namespace
 
 PetscReal Energy::CellTemperature(PetscReal E, PetscReal a, PetscReal guess) const {
   auto f  = [&](PetscReal T) { return CellEnergy(a, T, metal_.MeltFraction(T)) - E; };
@@ -118,9 +87,9 @@ PetscErrorCode Energy::TransportSweep(int d, PetscReal dt, Vec u, Vec phaseFlux,
   PetscCall(sg.GetLocal(3, TsgLocal_, &T));
   PetscCall(sg.GetLocal(3, FsgLocal_, &F));
   PetscCall(sg.GetLocal(3, AsgLocal_, &A));
-  FillOutside(sg, T);
-  FillOutside(sg, F);
-  FillOutside(sg, A);
+  PetscCall(FillNearestOutside(sg, T));
+  PetscCall(FillNearestOutside(sg, F));
+  PetscCall(FillNearestOutside(sg, A));
   PetscCall(sg.GetLocal(d, uLocal_[d], &uf));
   PetscCall(sg.GetLocal(d, fluxLocal_[d], &pf));
   PetscCall(sg.GetGlobal(3, E_, &E));  // E_ and Xstart_ are global vectors of the same layout
@@ -138,7 +107,7 @@ PetscErrorCode Energy::TransportSweep(int d, PetscReal dt, Vec u, Vec phaseFlux,
     const PetscInt *s1 = pos ? L2 : R2, *s2 = pos ? L1 : R1, *s3 = pos ? R1 : L1;
     const PetscReal a1 = A.at(s1), a2 = A.at(s2), a3 = A.at(s3);
     const bool      pure = (a1 == a2 && a2 == a3) && (a2 == 0 || a2 == 1);
-    const PetscReal tf   = pure ? FaceValue(T.at(s1), T.at(s2), T.at(s3)) : T.at(s2);
+    const PetscReal tf   = pure ? VanLeerFaceValue(T.at(s1), T.at(s2), T.at(s3)) : T.at(s2);
     const PetscReal fup = pos ? F.at(L1) : F.at(R1);
     return r * (fm * rm * (metal_.Sensible(tf) + L * fup) + (vel - fm) * rg * gas_.Sensible(tf));
   };

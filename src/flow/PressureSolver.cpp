@@ -1,4 +1,6 @@
 #include "vofdem/flow/PressureSolver.hpp"
+
+#include "vofdem/grid/CellMatrix.hpp"
 #include "vofdem/grid/FaceProperties.hpp"
 
 #include <petscviewerhdf5.h>
@@ -180,17 +182,7 @@ PetscErrorCode PressureSolver::SetUp() {
   PetscFunctionBeginUser;
   dm_ = grid_->CellDM();
   PetscCall(PetscObjectReference((PetscObject)dm_));
-  if (pc_ == PressurePreconditioner::PFMG) {
-    // The grid's DM is shared: set the matrix type only for this matrix.
-    MatType old;
-    PetscCall(DMGetMatType(dm_, &old));
-    const std::string keep = old ? old : MATAIJ;
-    PetscCall(DMSetMatType(dm_, MATHYPRESTRUCT));
-    PetscCall(DMCreateMatrix(dm_, &A_));
-    PetscCall(DMSetMatType(dm_, keep.c_str()));
-  } else {
-    PetscCall(DMCreateMatrix(dm_, &A_));
-  }
+  PetscCall(CreateCellMatrix(dm_, pc_ == PressurePreconditioner::PFMG, &A_));
   PetscCall(PetscObjectSetName((PetscObject)A_, "flow_pressure_operator"));
   PetscCall(DMCreateLocalVector(dm_, &betaLocal_));
   PetscCall(VecDuplicate(betaLocal_, &betaAssembled_));

@@ -3,6 +3,7 @@
 
 #include "vofdem/base/Options.hpp"
 #include "vofdem/base/Runtime.hpp"
+#include "vofdem/grid/CellStencil.hpp"
 
 #include <petscviewerhdf5.h>
 
@@ -84,40 +85,7 @@ PetscErrorCode Scalar::SetUp(const StaggeredGrid &sg) {
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode Scalar::FillGhosts(LocalField &c) const {
-  const Grid &grid = sg_->Base();
-  PetscInt    gs[3], gm[3];
-
-  PetscFunctionBeginUser;
-  PetscCall(DMDAGetGhostCorners(sg_->Cells(), &gs[0], &gs[1], &gs[2], &gm[0], &gm[1], &gm[2]));
-  // Direction by direction, so that edges and corners take the value of their nearest interior cell.
-  for (int d = 0; d < 3; ++d) {
-    if (grid.Periodic(d)) continue;
-    const PetscInt n = grid.Cells()[d];
-    for (PetscInt k = gs[2]; k < gs[2] + gm[2]; ++k)
-      for (PetscInt j = gs[1]; j < gs[1] + gm[1]; ++j)
-        for (PetscInt i = gs[0]; i < gs[0] + gm[0]; ++i) {
-          PetscInt q[3] = {i, j, k};
-          if (q[d] >= 0 && q[d] < n) continue;
-          PetscInt src[3] = {i, j, k};
-          src[d]          = q[d] < 0 ? 0 : n - 1;
-          bool inside     = true;
-          for (int e = 0; e < 3; ++e) inside = inside && src[e] >= gs[e] && src[e] < gs[e] + gm[e];
-          if (inside) c.at(q) = c.at(src);
-        }
-  }
-  PetscFunctionReturn(0);
-}
-
-// The van Leer limiter phi(r) = (r + |r|)/(1 + |r|): phi(r) in [0, 2], TVD.
-static inline PetscReal VanLeer(PetscReal r) { return (r + std::fabs(r)) / (1 + std::fabs(r)); }
-
-// c at a face between cells L and R from the upwind side: LL, L, R for u > 0 (mirrored for u < 0).
-static inline PetscReal FaceValue(PetscReal up2, PetscReal up1, PetscReal down) {
-  const PetscReal dd = down - up1, du = up1 - up2;
-  if (dd == 0) return up1;
-  return up1 + 0.5 * VanLeer(du / dd) * dd;
-}
+PetscErrorCode Scalar::FillGhosts(LocalField &c) const { return FillNearestOutside(*sg_, c); }
 
 PetscErrorCode Scalar::Rate(Vec cg, Vec const u[3], Vec rate) {
   const Grid      &grid = sg_->Base();
@@ -147,7 +115,7 @@ PetscErrorCode Scalar::Rate(Vec cg, Vec const u[3], Vec rate) {
             L[d] = f[d] - 1, LL[d] = f[d] - 2, R[d] = f[d], RR[d] = f[d] + 1;
             const bool wall = !grid.Periodic(d) && (f[d] == 0 || f[d] == n);
             const PetscReal uface = uf[d].at(f);
-            const PetscReal cf    = uface >= 0 ? FaceValue(c.at(LL), c.at(L), c.at(R)) : FaceValue(c.at(RR), c.at(R), c.at(L));
+            const PetscReal cf    = uface >= 0 ? VanLeerFaceValue(c.at(LL), c.at(L), c.at(R)) : VanLeerFaceValue(c.at(RR), c.at(R), c.at(L));
             // Diffusion: none through the box's faces (walls and open faces alike: the scalar leaves by advection).
             const PetscReal diffusive = wall ? 0 : -D_ * (c.at(R) - c.at(L)) / h[d];
             F[side]                   = uface * cf + diffusive;
