@@ -194,6 +194,11 @@ set_tests_properties(energy/laser_power PROPERTIES LABELS "quick;energy" PROCESS
 # E5: energy across a moving interface (the dam break, rho cp ratio 4000): a uniform T stays uniform to 1e-12, a closed box keeps its energy.
 add_test(NAME energy/interface_transport COMMAND ${VOFDEM_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/test/energy/test_interface_transport.py $<TARGET_FILE:vofdem_app>)
 set_tests_properties(energy/interface_transport PROPERTIES LABELS "quick;energy" PROCESSORS 2 TIMEOUT 300)
+# Restart of energy moving with the interface: killed twice (once while writing), the final state is bitwise the uninterrupted run's.
+add_test(NAME energy/interface_restart COMMAND ${VOFDEM_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/scripts/kill-restart-test ${CMAKE_CURRENT_SOURCE_DIR}/config/scenes/dam-break.yaml 2
+         --ranks 2 --steps 60 --every 6 --during-write 1 --seed 5 --exe $<TARGET_FILE:vofdem_app> -- -physics flow,vof,energy -grid_cells 40,20,1 -energy_metal_density 1000
+         -energy_gas_density 1 -energy_interface_radiation 0 -energy_pc boomeramg -energy_box_lower 0,0,0 -energy_box_upper 0.05715,0.1143,0.0035719 -energy_box_temperature 400)
+set_tests_properties(energy/interface_restart PROPERTIES LABELS "quick;energy;checkpoint" PROCESSORS 2 TIMEOUT 300 WORKING_DIRECTORY ${CMAKE_CURRENT_SOURCE_DIR})
 # E4: a moving Gaussian source on a plate against Eagar and Tsai, R_l/h = 2: peak, isotherm length and width within 2 %, 1 and 2 ranks.
 add_test(NAME energy/moving_source COMMAND ${VOFDEM_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/test/energy/test_moving_source.py $<TARGET_FILE:vofdem_app>)
 set_tests_properties(energy/moving_source PROPERTIES LABELS "quick;energy" PROCESSORS 2 TIMEOUT 300)

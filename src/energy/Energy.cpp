@@ -280,6 +280,10 @@ PetscErrorCode Energy::Load(PetscViewer viewer) {
   outputEntries_.clear();
   for (const auto &st : saved) outputEntries_.push_back(OutputEntry(st.first, st.second));
   steps_ = (PetscInt)scalars[0], dtOld_ = scalars[1], W_ = scalars[2], Wold_ = scalars[3], totalOld_ = scalars[4], totalOlder_ = scalars[5];
+  if (interfaceAlpha_) {  // the interface's alpha as its own Load restored it (the vof module loads first)
+    PetscCall(VecCopy(interfaceAlpha_(), alpha_));
+    PetscCall(DMGlobalToLocal(dm_, alpha_, INSERT_VALUES, alphaLocal_));
+  }
   PetscCall(VecCopy(E_, Ecur_));
   PetscFunctionReturn(0);
 }
