@@ -283,7 +283,7 @@ PetscErrorCode Flow::Step(PetscReal t, PetscReal dt) {
   PetscCall(PetscLogEventBegin(evGhosts_, 0, 0, 0, 0));
   PetscCall(UpdateLocals(propertiesDirty_));
   PetscCall(PetscLogEventEnd(evGhosts_, 0, 0, 0, 0));
-  if (implicitViscosity_ && (viscousStale_ || viscous_.AssembledDt() != dt)) {
+  if (implicitViscosity_ && (viscousStale_ || viscous_.AssembledDt() != dt || viscous_.Damped())) {  // damping: new rates each step
     PetscCall(PetscLogEventBegin(evViscousAssemble_, 0, 0, 0, 0));
     PetscCall(viscous_.Assemble(dt, epsLocal_, betaLocal_, emLocal_, viscousStale_));
     PetscCall(PetscLogEventEnd(evViscousAssemble_, 0, 0, 0, 0));
@@ -528,7 +528,7 @@ PetscErrorCode Flow::Destroy() {
   for (int d = 0; d < 3; ++d)
     for (Vec *v : {&u_[d], &uLocal_[d], &H_[d], &Hold_[d], &L_[d], &rhsFace_[d], &faceForce_[d]}) PetscCall(VecDestroy(v));
   for (Vec *v : {&rho_, &mu_, &eps_, &p_, &phi_, &beta_, &divRhs_, &epsLocal_, &betaLocal_, &emLocal_, &pLocal_, &phiLocal_}) PetscCall(VecDestroy(v));
-  for (Vec *v : {&dragBeta_, &dragBetaLocal_, &rateLocal_[0], &rateLocal_[1], &rateLocal_[2]}) PetscCall(VecDestroy(v));
+  for (Vec *v : {&dragBeta_, &dragBetaLocal_, &rateLocal_[0], &rateLocal_[1], &rateLocal_[2], &dampLocal_[0], &dampLocal_[1], &dampLocal_[2]}) PetscCall(VecDestroy(v));
   PetscCall(VecDestroy(&cellVelocity_));
   PetscCall(DMDestroy(&velocityDM_));
   PetscCall(pressure_.Destroy());

@@ -24,10 +24,18 @@
 // results/c2-packed-bed.md).
 #include "vofdem/flow/Flow.hpp"
 
+#include <cmath>
+
 namespace vofdem {
 
 namespace {
 const PetscReal kGain = 1.5;  // gamma: the largest T/A allowed at any face (see above)
+}
+
+void Flow::SetFaceDamping(Vec c[3]) {
+  for (int d = 0; d < 3; ++d) damping_[d] = c ? c[d] : nullptr;
+  if (implicitViscosity_) viscous_.SetDamping(c);  // implicit in the predictor's matrix (else split after it)
+  pressure_.AllowHeldCells(c ? 1 / density_ : 0);  // held cells' identity rows, scaled like the flow's own phase
 }
 
 PetscErrorCode Flow::DragProjectionCoefficient(PetscReal dt) {
@@ -39,9 +47,17 @@ PetscErrorCode Flow::DragProjectionCoefficient(PetscReal dt) {
     PetscCall(VecDuplicate(beta_, &dragBeta_));
     PetscCall(VecDuplicate(betaLocal_, &dragBetaLocal_));
     for (int d = 0; d < 3; ++d) PetscCall(DMCreateLocalVector(sg_.Face(d), &rateLocal_[d]));
+    if (damping_[0])
+      for (int d = 0; d < 3; ++d) PetscCall(DMCreateLocalVector(sg_.Face(d), &dampLocal_[d]));
   }
+  // The rate of each face: the relaxation's plus the damping's (SetFaceDamping; +inf: held at rest).
   for (int d = 0; d < 3; ++d) {
-    PetscCall(DMGlobalToLocal(sg_.Face(d), relaxRate_[d], INSERT_VALUES, rateLocal_[d]));
+    if (relaxRate_[d]) PetscCall(DMGlobalToLocal(sg_.Face(d), relaxRate_[d], INSERT_VALUES, rateLocal_[d]));
+    else PetscCall(VecSet(rateLocal_[d], 0));
+    if (damping_[d]) {
+      PetscCall(DMGlobalToLocal(sg_.Face(d), damping_[d], INSERT_VALUES, dampLocal_[d]));
+      PetscCall(VecAXPY(rateLocal_[d], 1, dampLocal_[d]));
+    }
     PetscCall(sg_.GetLocal(d, rateLocal_[d], &c[d]));
   }
   // Box faces that keep their prescribed velocity (all but periodic and outflow) take no correction.
@@ -54,15 +70,28 @@ PetscErrorCode Flow::DragProjectionCoefficient(PetscReal dt) {
   for (PetscInt k = s[2]; k < s[2] + n[2]; ++k)
     for (PetscInt j = s[1]; j < s[1] + n[1]; ++j)
       for (PetscInt i = s[0]; i < s[0] + n[0]; ++i) {
-        PetscReal mean = 0, least = PETSC_MAX_REAL;
+        // Held faces (rate +inf, SetFaceDamping) take no correction whatever the coefficient: they are left out of
+        // the mean and the bound. A cell whose movable faces are all held gets 0: it leaves the pressure equation.
+        PetscReal mean = 0, sum = 0, least = PETSC_MAX_REAL;
+        int       counted = 0, movable = 0, held = 0;
         for (int d = 0; d < 3; ++d)
           for (int side = 0; side < 2; ++side) {
             PetscInt q[3] = {i, j, k};
             q[d] += side;
-            const PetscReal r = PetscRealPart(c[d].at(q));
-            mean += r / 6;
-            if (!(fixed[2 * d + side] && q[d] == (side ? N[d] : 0))) least = std::min(least, r);  // faces the correction moves
+            const PetscReal r     = PetscRealPart(c[d].at(q));
+            const bool      moved = !(fixed[2 * d + side] && q[d] == (side ? N[d] : 0));  // faces the correction moves
+            if (std::isinf(r)) {
+              held += moved;
+              continue;
+            }
+            mean += r / 6, sum += r, ++counted;
+            if (moved) least = std::min(least, r), ++movable;
           }
+        if (!movable && held) {
+          out.at(i, j, k) = 0;
+          continue;
+        }
+        if (counted < 6) mean = sum / counted;  // the mean of the faces not held
         const PetscReal rate = std::min(mean, kGain * least + (kGain - 1) / dt);
         out.at(i, j, k) = PetscRealPart(b.at(i, j, k)) / (1 + dt * rate);
       }

@@ -3,6 +3,8 @@
 #include "vofdem/flow/Flow.hpp"
 #include "vofdem/grid/FaceProperties.hpp"
 
+#include <cmath>
+
 namespace vofdem {
 
 namespace {
@@ -201,15 +203,35 @@ PetscErrorCode Flow::Predict(PetscReal t, PetscReal dt) {
     PetscFunctionBeginUser;
     if (relaxRate_[d]) {  // SetFaceRelaxation: implicit linear drag, split from the predictor
       PetscScalar       *uu;
-      const PetscScalar *c, *w;
+      const PetscScalar *c, *w, *cd = nullptr;
       PetscInt           m;
       PetscCall(VecGetLocalSize(u_[d], &m));
       PetscCall(VecGetArray(u_[d], &uu));
       PetscCall(VecGetArrayRead(relaxRate_[d], &c));
       PetscCall(VecGetArrayRead(relaxTarget_[d], &w));
-      for (PetscInt k = 0; k < m; ++k) uu[k] = (uu[k] + dt * c[k] * w[k]) / (1 + dt * c[k]);
+      if (damping_[d]) PetscCall(VecGetArrayRead(damping_[d], &cd));
+      if (cd && implicitViscosity_)  // the damping is in the viscous matrix: held faces to 0 exactly
+        for (PetscInt k = 0; k < m; ++k) uu[k] = std::isinf(PetscRealPart(cd[k])) ? 0 : (uu[k] + dt * c[k] * w[k]) / (1 + dt * c[k]);
+      else if (cd)
+        for (PetscInt k = 0; k < m; ++k) uu[k] = std::isinf(PetscRealPart(cd[k])) ? 0 : (uu[k] + dt * c[k] * w[k]) / (1 + dt * (c[k] + cd[k]));
+      else
+        for (PetscInt k = 0; k < m; ++k) uu[k] = (uu[k] + dt * c[k] * w[k]) / (1 + dt * c[k]);
+      if (cd) PetscCall(VecRestoreArrayRead(damping_[d], &cd));
       PetscCall(VecRestoreArrayRead(relaxTarget_[d], &w));
       PetscCall(VecRestoreArrayRead(relaxRate_[d], &c));
+      PetscCall(VecRestoreArray(u_[d], &uu));
+    } else if (damping_[d]) {  // SetFaceDamping alone: a drag toward rest, +inf holds the face
+      PetscScalar       *uu;
+      const PetscScalar *cd;
+      PetscInt           m;
+      PetscCall(VecGetLocalSize(u_[d], &m));
+      PetscCall(VecGetArray(u_[d], &uu));
+      PetscCall(VecGetArrayRead(damping_[d], &cd));
+      if (implicitViscosity_)  // in the viscous matrix: held faces to 0 exactly
+        for (PetscInt k = 0; k < m; ++k) uu[k] = std::isinf(PetscRealPart(cd[k])) ? 0 : uu[k];
+      else
+        for (PetscInt k = 0; k < m; ++k) uu[k] = std::isinf(PetscRealPart(cd[k])) ? 0 : uu[k] / (1 + dt * cd[k]);
+      PetscCall(VecRestoreArrayRead(damping_[d], &cd));
       PetscCall(VecRestoreArray(u_[d], &uu));
     }
     PetscCall(bc_.ApplyNormal(sg_, d, u_[d]));

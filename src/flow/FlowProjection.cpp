@@ -63,12 +63,12 @@ PetscErrorCode Flow::Project(PetscReal dt, Vec *) {
   for (int d = 0; d < 3; ++d) PetscCall(DMGlobalToLocal(sg_.Face(d), u_[d], INSERT_VALUES, uLocal_[d]));
   epsChangeDt_ = dt;
   PetscCall(Divergence(divRhs_, -1 / dt, &dummy));
-  if (relaxRate_[0]) PetscCall(DragProjectionCoefficient(dt));  // the drag acts on the correction too
+  if (Relaxing()) PetscCall(DragProjectionCoefficient(dt));  // the drag acts on the correction too
   else if (coefficientPending_) {
     PetscCall(pressure_.SetCoefficient(beta_, "flow: eps/rho"));
     coefficientPending_ = false;
   }
-  const Vec coefficient = relaxRate_[0] ? dragBetaLocal_ : betaLocal_;
+  const Vec coefficient = Relaxing() ? dragBetaLocal_ : betaLocal_;
   if (!userPressureAtol_) {
     // The rhs is an imbalance of much larger terms (a still tank: gravity against the pressure), so a
     // reduction relative to it alone would chase round-off. The absolute floor is the relative
@@ -130,7 +130,7 @@ PetscErrorCode Flow::Project(PetscReal dt, Vec *) {
         for (PetscInt i = 0; i < n[0]; ++i) {
           const PetscReal bL = bb[i - cs], bR = bb[i];
           const FaceProperties face = FaceAverage(ee[i - cs], ee[i], bL, bR);
-          const PetscReal eF = face.eps, bF = face.beta;
+          const PetscReal eF = face.eps, bF = bL > 0 && bR > 0 ? face.beta : 0;  // 0: a held cell (SetFaceDamping)
           uu[i] -= c * bF / eF * (ph[i] - ph[i - cs]);
         }
       }

@@ -8,6 +8,7 @@
 #include "vofdem/base/Options.hpp"
 #include "vofdem/base/Runtime.hpp"
 
+#include <cmath>
 #include <string>
 #include <vector>
 
@@ -283,11 +284,23 @@ PetscErrorCode PressureSolver::Assemble(Vec beta) {
         MatStencil  row = {k, j, i, 0}, col[7];
         PetscScalar val[7], diag = 0;
         PetscInt    n = 1;
-        if (sol && PetscRealPart(sol[k][j][i]) > 0.5) {
-          // A solid cell: decoupled, scaled like its fluid neighbours' rows; its rhs is 0 (no flow).
+        if ((sol && PetscRealPart(sol[k][j][i]) > 0.5) || bc == 0) {
+          // A solid cell: decoupled, scaled like its fluid neighbours' rows; its rhs is 0 (no flow). A held
+          // cell (AllowHeldCells; coefficient 0) likewise, scaled by the given scale.
           col[0] = row;
-          val[0] = 2 * bc * (ih2[0] + ih2[1] + ih2[2]);
-          PetscCall(MatSetValuesStencil(A_, 1, &row, 1, col, val, INSERT_VALUES));
+          val[0] = 2 * (bc == 0 ? heldScale_ : bc) * (ih2[0] + ih2[1] + ih2[2]);
+          if (bc == 0) {  // held cells come and go: clear the couplings such a row had before
+            for (int d = 0; d < 3; ++d)
+              for (int s = 0; s < 2; ++s) {
+                const PetscInt nb = c[d] + (s ? 1 : -1);
+                if (bc_[2 * d + s] != PressureBoundary::Periodic && (nb < 0 || nb >= cells_[d])) continue;
+                PetscInt q[3] = {i, j, k};
+                q[d]          = nb;
+                col[n]        = {q[2], q[1], q[0], 0};
+                val[n++]      = 0;
+              }
+          }
+          PetscCall(MatSetValuesStencil(A_, 1, &row, n, col, val, INSERT_VALUES));
           continue;
         }
         for (int d = 0; d < 3; ++d)
@@ -331,16 +344,34 @@ PetscErrorCode PressureSolver::SetCoefficient(Vec beta, const char *what) {
   PetscFunctionBeginUser;
   PetscCall(VecMin(beta, nullptr, &lo));
   PetscCall(VecMax(beta, nullptr, &hi));
-  if (!(lo > 0) || PetscIsInfOrNanReal(hi) || PetscIsInfOrNanReal(lo))
+  const bool held = heldScale_ > 0 && lo == 0 && hi > 0;
+  if (!(lo > 0 || held) || PetscIsInfOrNanReal(hi) || PetscIsInfOrNanReal(lo))
     VofdemInputError(comm_, "%s: the pressure coefficient eps/rho must be positive and finite, found values in [%g, %g]", what, (double)lo, (double)hi);
   reused_ = PETSC_FALSE;
   if (hasRef_) {
     PetscReal change;
-    PetscCall(VecWAXPY(work_, -1, betaRef_, beta));
-    PetscCall(VecPointwiseDivide(work_, work_, betaRef_));
-    PetscCall(VecNorm(work_, NORM_INFINITY, &change));
+    if (heldScale_ > 0) {  // zeros in either: a cell that stays held has not changed; one that came or went has
+      const PetscScalar *b, *r;
+      PetscInt           n;
+      PetscReal          local = 0;
+      PetscCall(VecGetLocalSize(beta, &n));
+      PetscCall(VecGetArrayRead(beta, &b));
+      PetscCall(VecGetArrayRead(betaRef_, &r));
+      for (PetscInt i = 0; i < n; ++i) {
+        const PetscReal bi = PetscRealPart(b[i]), ri = PetscRealPart(r[i]);
+        local = std::fmax(local, ri == 0 ? (bi == 0 ? 0 : PETSC_MAX_REAL) : std::fabs(bi - ri) / ri);
+      }
+      PetscCall(VecRestoreArrayRead(betaRef_, &r));
+      PetscCall(VecRestoreArrayRead(beta, &b));
+      PetscCallMPI(MPI_Allreduce(&local, &change, 1, MPIU_REAL, MPI_MAX, comm_));
+    } else {
+      PetscCall(VecWAXPY(work_, -1, betaRef_, beta));
+      PetscCall(VecPointwiseDivide(work_, work_, betaRef_));
+      PetscCall(VecNorm(work_, NORM_INFINITY, &change));
+    }
     reused_ = (change <= reuseThreshold_ && reuseThreshold_ > 0) || sinceBuild_ < reuseSteps_ ? PETSC_TRUE : PETSC_FALSE;
   }
+  if (heldScale_ > 0 && nullSpace_) PetscCall(HeldNullSpace(beta));
   if (!reused_) {
     PetscCall(VecCopy(beta, betaRef_));
     hasRef_ = true;
@@ -349,6 +380,38 @@ PetscErrorCode PressureSolver::SetCoefficient(Vec beta, const char *what) {
   } else ++sinceBuild_;
   PetscCall(Assemble(beta));
   PetscCall(KSPSetReusePreconditioner(ksp_, reused_));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode PressureSolver::HeldNullSpace(Vec beta) {
+  const PetscScalar *b, *sol = nullptr;
+  PetscScalar       *o;
+  PetscInt           n, held = 0, total;
+  Vec                one;
+
+  PetscFunctionBeginUser;
+  PetscCall(VecGetLocalSize(beta, &n));
+  PetscCall(VecDuplicate(work_, &one));
+  PetscCall(VecGetArrayRead(beta, &b));
+  if (solid_) PetscCall(VecGetArrayRead(solid_, &sol));
+  PetscCall(VecGetArray(one, &o));
+  for (PetscInt i = 0; i < n; ++i) {
+    const bool h = PetscRealPart(b[i]) == 0;
+    held += h;
+    o[i] = h || (sol && PetscRealPart(sol[i]) > 0.5) ? 0 : 1;
+  }
+  PetscCall(VecRestoreArray(one, &o));
+  if (solid_) PetscCall(VecRestoreArrayRead(solid_, &sol));
+  PetscCall(VecRestoreArrayRead(beta, &b));
+  PetscCallMPI(MPI_Allreduce(&held, &total, 1, MPIU_INT, MPI_SUM, comm_));
+  if (total > 0 || heldCells_ > 0) {  // the null space follows the held cells (rebuilt while there are any)
+    PetscCall(VecNormalize(one, nullptr));
+    PetscCall(MatNullSpaceDestroy(&nullSpace_));
+    PetscCall(MatNullSpaceCreate(comm_, PETSC_FALSE, 1, &one, &nullSpace_));
+    PetscCall(MatSetNullSpace(A_, nullSpace_));
+  }
+  heldCells_ = total;
+  PetscCall(VecDestroy(&one));
   PetscFunctionReturn(0);
 }
 

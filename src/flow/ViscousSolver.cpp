@@ -3,6 +3,8 @@
 
 #include "vofdem/base/Runtime.hpp"
 
+#include <cmath>
+
 namespace vofdem {
 
 namespace {
@@ -242,16 +244,19 @@ PetscErrorCode ViscousSolver::Assemble(PetscReal dt, Vec epsLocal, Vec betaLocal
       }
       PetscCall(sg_->RestoreGlobal(d, K_[d], &out));
       PetscCall(sg_->RestoreGlobal(d, bcRhs_[d], &rb));
-    } else {
-      LocalField K;
+    }
+    if (!(coefficientsChanged || !assembled_) || damping_[d]) {  // the diagonal alone (and the damping's share, SetDamping)
+      LocalField K, C;
       PetscCall(sg_->GetGlobal(d, diag_[d], &out));
       PetscCall(sg_->GetGlobal(d, K_[d], &K));
+      if (damping_[d]) PetscCall(sg_->GetGlobal(d, damping_[d], &C));
       const PetscInt last = sg_->Points(d, d) - 1, cs = beta.stride[d];
       const bool     walls = !sg_->Base().Periodic(d);
       for (PetscInt k = s[2]; k < s[2] + n[2]; ++k)
         for (PetscInt j = s[1]; j < s[1] + n[1]; ++j) {
           PetscScalar       *o = &out.at(s[0], j, k);
           const PetscScalar *Kq = &K.at(s[0], j, k), *bq = &beta.at(s[0], j, k), *eq = &eps.at(s[0], j, k);
+          const PetscScalar *cq = damping_[d] ? &C.at(s[0], j, k) : nullptr;
           const PetscInt     qd = d == 1 ? j : k;
           const bool         rowOnWall = walls && d != 0 && (qd == 0 || qd == last);
           for (PetscInt i = 0; i < n[0]; ++i) {
@@ -263,8 +268,13 @@ PetscErrorCode ViscousSolver::Assemble(PetscReal dt, Vec epsLocal, Vec betaLocal
             const FaceProperties face = FaceAverage(PetscRealPart(eq[i - cs]), PetscRealPart(eq[i]), bL, bR);
             const PetscReal eF = face.eps, bF = face.beta;
             o[i] = MassOverDt(eF, bF, dt) + PetscRealPart(Kq[i]);
+            if (cq) {
+              const PetscReal c = PetscRealPart(cq[i]);
+              o[i] += std::isinf(c) ? kHeldFactor * MassOverDt(eF, bF, dt) : eF * eF / bF * c;
+            }
           }
         }
+      if (damping_[d]) PetscCall(sg_->RestoreGlobal(d, damping_[d], &C));
       if (solid_)
         for (PetscInt o : solid_->Blocked(d)) out.data[o] = 1;  // identity rows (K is 1 there)
       PetscCall(sg_->RestoreGlobal(d, K_[d], &K));

@@ -101,6 +101,13 @@ public:
   void SetFaceRelaxation(Vec c[3], Vec w[3]) {
     for (int d = 0; d < 3; ++d) relaxRate_[d] = c ? c[d] : nullptr, relaxTarget_[d] = c ? w[d] : nullptr;
   }
+  // A linear drag toward rest per face, rate c (1/s), taken with the relaxation above:
+  // u* <- (u* + dt c_r w)/(1 + dt (c_r + c)); c = +inf holds the face at rest (u* = 0 exactly). The Darcy
+  // term of a mushy zone and solid metal (docs/physics.md F2), set by the energy module. The projection's
+  // coefficient takes the sum of the rates (FlowDragProjection.cpp): a cell whose faces are all held
+  // leaves the pressure equation (identity row), and its faces take no correction. c[d]: global vectors of
+  // Staggered().Face(d), owned by the caller; nullptr: none.
+  void SetFaceDamping(Vec c[3]);
   // The change of eps over the coming step (a global cell vector, owned by the caller, set by the
   // coupling; nullptr: none): the projection then makes div(eps U) = -(change)/dt (docs/physics.md F1), the
   // fluid the particles displace. The summary's divergence is div(eps U) + change/dt of the last step.
@@ -201,8 +208,10 @@ private:
   PropertyGhosts propertyGhosts_ = nullptr;  // SetPropertyGhosts
   const void    *propertyGhostsCtx_ = nullptr;
   Vec       relaxRate_[3] = {nullptr, nullptr, nullptr}, relaxTarget_[3] = {nullptr, nullptr, nullptr};
+  Vec       damping_[3] = {nullptr, nullptr, nullptr};  // SetFaceDamping
+  bool      Relaxing() const { return relaxRate_[0] || damping_[0]; }
   // With a relaxation: the projection's coefficient eps/(rho (1 + dt c)) (FlowDragProjection.cpp)
-  Vec            dragBeta_ = nullptr, dragBetaLocal_ = nullptr, rateLocal_[3] = {nullptr, nullptr, nullptr};
+  Vec            dragBeta_ = nullptr, dragBetaLocal_ = nullptr, rateLocal_[3] = {nullptr, nullptr, nullptr}, dampLocal_[3] = {nullptr, nullptr, nullptr};
   PetscErrorCode DragProjectionCoefficient(PetscReal dt);
   Vec       epsChange_ = nullptr;  // SetFluidFractionChange
   PetscReal epsChangeDt_ = 0;     // the step it belongs to (set by Project)

@@ -56,6 +56,10 @@ public:
   // one-line input error raised otherwise (e.g. "option -density_heavy"). Assembles the matrix;
   // decides whether the preconditioner is reused.
   PetscErrorCode SetCoefficient(Vec beta, const char *what);
+  // Cells whose coefficient is 0 are held (the flow's cells held at rest, Flow::SetFaceDamping): identity
+  // rows of 2 scale sum(1/h^2), no flux to their neighbours, and with closed boundaries the null space is the
+  // constant on the other cells. scale > 0 allows zeros in SetCoefficient (0: every coefficient must be positive).
+  void AllowHeldCells(PetscReal scale) { heldScale_ = scale; }
   // Solves with p as the initial guess; rhs is not changed.
   PetscErrorCode Solve(Vec rhs, Vec p);
   PetscErrorCode View(PetscViewer viewer) const;
@@ -86,6 +90,7 @@ public:
 
 private:
   PetscErrorCode Assemble(Vec beta);
+  PetscErrorCode HeldNullSpace(Vec beta);  // the constant on the cells neither solid nor held
   PetscErrorCode InsertBoomerAMGDefaults();
 
   MPI_Comm               comm_ = MPI_COMM_NULL;
@@ -110,6 +115,8 @@ private:
   Vec                    work_ = nullptr;       // rhs copy
   Vec                    solid_ = nullptr, solidLocal_ = nullptr;  // SetSolid
   bool                   hasRef_ = false;
+  PetscReal              heldScale_ = 0;   // AllowHeldCells
+  PetscInt               heldCells_ = 0;   // zero coefficients in the last SetCoefficient
   PetscInt               iterations_ = 0, builds_ = 0, floorStops_ = 0;
   PetscReal              residual_ = 0;
   PetscBool              reused_ = PETSC_FALSE;

@@ -20,6 +20,13 @@ class ViscousSolver {
 public:
   PetscErrorCode Create(const StaggeredGrid &sg, const FlowBoundary &bc);
   void           SetSolid(const SolidMask *solid) { solid_ = solid && solid->Any() ? solid : nullptr; }  // before Assemble
+  // A drag toward rest per face (Flow::SetFaceDamping), rate c (1/s), implicit in the matrix: the diagonal gains
+  // (eps rho)_f c, and kHeldFactor times the mass term where c = +inf (the face then moves by 1e-12 of what it
+  // would; the flow sets it to 0 after the solve). The vectors are read at every Assemble, which then always
+  // sets the diagonal. nullptr: none.
+  void           SetDamping(Vec rate[3]) { for (int d = 0; d < 3; ++d) damping_[d] = rate ? rate[d] : nullptr; }
+  bool           Damped() const { return damping_[0] != nullptr; }
+  static constexpr PetscReal kHeldFactor = 1e12;
   PetscErrorCode SetFromOptions();
   // Cell fields as ghosted local vectors of StaggeredGrid::Cells(): eps, beta = eps/rho, eps*mu.
   // Without coefficientsChanged (and after a first assembly) only the diagonal is recomputed.
@@ -41,6 +48,7 @@ private:
   const StaggeredGrid *sg_ = nullptr;
   const FlowBoundary  *bc_ = nullptr;
   const SolidMask     *solid_ = nullptr;
+  Vec                  damping_[3] = {nullptr, nullptr, nullptr};  // SetDamping
   Mat                  A_[3] = {nullptr, nullptr, nullptr};
   KSP                  ksp_[3] = {nullptr, nullptr, nullptr};
   Vec                  bcRhs_[3] = {nullptr, nullptr, nullptr};
