@@ -34,7 +34,12 @@ PetscErrorCode Vof::SetFromOptions(const Grid &grid) {
     PetscCall(opt.Real("-viscosity", "Dynamic viscosity of phase 1; phase 0 has -flow_viscosity", "Pa s", &viscosity_, RealRange::Positive()));
     PetscCall(opt.Real("-surface_tension", "Surface tension coefficient sigma (0: none); height-function curvature, balanced-force face force", "N/m", &sigma_, RealRange::NonNegative()));
     PetscCall(opt.Real("-dsigma_dT", "Temperature coefficient of the surface tension (Marangoni force, docs/physics.md F2)", "N/(m K)", &dsigmadT_));
-    PetscCall(opt.RealVector("-temperature_gradient", "Prescribed uniform temperature gradient (T = T0 + G.(x - lower corner)) for the Marangoni force until the energy module exists", "K/m", gradT_, 3));
+    PetscBool gradSet = PETSC_FALSE;
+    PetscCall(opt.RealVector("-temperature_gradient", "Prescribed uniform temperature gradient (T = T0 + G.(x - lower corner), sigma holding at T0) for the Marangoni force without the energy module",
+                             "K/m", gradT_, 3, RealRange::Any(), &gradSet));
+    gradTGiven_ = gradSet;
+    PetscCall(opt.Real("-surface_tension_temperature", "With the energy module: the temperature at which -vof_surface_tension holds (sigma(T) = sigma + dsigma/dT (T - this))", "K",
+                       &sigmaTemperature_, RealRange::Any()));
     std::vector<std::string> mom = {momentum_ == VofMomentum::Consistent ? "consistent" : "advective"};
     PetscCall(opt.NameList("-momentum",
                            "Momentum transport: consistent (rho u moved with the mass fluxes of the VOF sweeps, stable at large density ratios) or advective (the flow's -(U.grad)U, for comparison)",
@@ -69,9 +74,9 @@ PetscErrorCode Vof::SetUp(const StaggeredGrid &sg) {
   const PetscInt width = 4;
   for (int d = 0; d < 3; ++d)
     for (PetscInt r = 0; r < m[d]; ++r)
-      if (grid_->Periodic(d) && l[d][r] < width)
-        VofdemInputError(grid_->Comm(), "option -grid_cells: the VOF module needs at least %d cells per rank along a periodic direction, but %c has %" PetscInt_FMT " cells on %" PetscInt_FMT " ranks",
-                         (int)width, "xyz"[d], grid_->Cells()[d], m[d]);
+      if ((grid_->Periodic(d) || m[d] > 1) && l[d][r] < width)  // PETSc's DMDA needs the ghost width within each rank's cells
+        VofdemInputError(grid_->Comm(), "option -grid_cells: the VOF module needs at least %d cells per rank along a %s direction, but %c has %" PetscInt_FMT " cells on %" PetscInt_FMT " ranks (more cells, or -grid_ranks)",
+                         (int)width, grid_->Periodic(d) ? "periodic" : "split", "xyz"[d], grid_->Cells()[d], m[d]);
   DMBoundaryType bt[3];
   for (int d = 0; d < 3; ++d) bt[d] = grid_->Periodic(d) ? DM_BOUNDARY_PERIODIC : DM_BOUNDARY_GHOSTED;
   const PetscInt *N = grid_->Cells();
@@ -87,6 +92,15 @@ PetscErrorCode Vof::SetUp(const StaggeredGrid &sg) {
   PetscInt s[3], n[3];
   PetscCall(DMDAGetCorners(da_, &s[0], &s[1], &s[2], &n[0], &n[1], &n[2]));
   fullAtStart_.assign((size_t)(n[0] * n[1] * n[2]), 0);
+  if (temperature_) {  // the computed temperature (SetTemperature) replaces the prescribed one
+    if (gradTGiven_)
+      VofdemInputError(grid_->Comm(), "option -vof_temperature_gradient: the temperature comes from the energy module here; remove the prescribed gradient");
+    if (dsigmadT_ != 0 && !(sigmaTemperature_ > 0))
+      VofdemInputError(grid_->Comm(), "option -vof_surface_tension_temperature: with -vof_dsigma_dT and the energy module, give the temperature (K) at which -vof_surface_tension holds");
+    PetscCall(DMCreateGlobalVector(da_, &tGlobal_));
+    PetscCall(DMCreateLocalVector(da_, &tLocal_));
+    PetscCall(VecDuplicate(tLocal_, &mLocal_));
+  }
   PetscFunctionReturn(0);
 }
 
@@ -103,6 +117,7 @@ PetscErrorCode Vof::Destroy() {
   for (Vec &v : contactGhost_) PetscCall(VecDestroy(&v));
   PetscCall(VecDestroy(&contactLocal_));
   PetscCall(VecDestroy(&kappa_));
+  for (Vec *v : {&tGlobal_, &tLocal_, &mLocal_}) PetscCall(VecDestroy(v));
   PetscCall(VecDestroy(&kappaLocal_));
   PetscCall(VecDestroy(&alphaLocal_));
   PetscCall(VecDestroy(&alpha_));

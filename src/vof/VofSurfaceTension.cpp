@@ -172,7 +172,11 @@ PetscErrorCode Vof::SurfaceTension(Flow &flow) {
   // T = T0 + G.(x - lower corner) (-vof_temperature, -vof_temperature_gradient): grad alpha at the face
   // from the jump across it and, across, the mean of the two cells' centred differences.
   const PetscReal *lower = grid_->Lower();
-  const bool       marangoni = dsigmadT_ != 0 && (gradT_[0] != 0 || gradT_[1] != 0 || gradT_[2] != 0);
+  const bool       computed  = (bool)temperature_;
+  const bool       marangoni = dsigmadT_ != 0 && (computed || gradT_[0] != 0 || gradT_[1] != 0 || gradT_[2] != 0);
+  const PetscScalar *tl = nullptr, *ml = nullptr;
+  if (computed) PetscCall(TemperatureLocals(&tl, &ml));
+  const Cells        tc = {tl, {gs[0], gs[1], gs[2]}, {stride[0], stride[1], stride[2]}}, mc = {ml, {gs[0], gs[1], gs[2]}, {stride[0], stride[1], stride[2]}};
   const PetscScalar *kl;
   PetscCall(VecGetArrayRead(kappaLocal_, &kl));
   const Cells kc = {kl, {gs[0], gs[1], gs[2]}, {stride[0], stride[1], stride[2]}};
@@ -191,11 +195,22 @@ PetscErrorCode Vof::SurfaceTension(Flow &flow) {
           L[d] -= 1;
           double force = 0;
           if (grid_->Periodic(d) || (R[d] > 0 && R[d] < N)) {
-            double xf[3], dT = 0;  // face centre, temperature above T0
-            for (int e = 0; e < 3; ++e) {
-              xf[e] = lower[e] + (e == d ? R[e] : R[e] + 0.5) * h[e];
-              dT += gradT_[e] * (xf[e] - lower[e]);
-            }
+            double xf[3], dT = 0, gT[3] = {gradT_[0], gradT_[1], gradT_[2]};  // face centre, temperature above T0 (T_sigma), grad T
+            if (computed) {
+              dT = 0.5 * (tc.at(L) + tc.at(R)) - sigmaTemperature_;
+              for (int e = 0; e < 3; ++e) {
+                if (e == d) gT[e] = (tc.at(R) - tc.at(L)) / h[d];
+                else {
+                  PetscInt Rp[3] = {R[0], R[1], R[2]}, Rm[3] = {R[0], R[1], R[2]}, Lp[3] = {L[0], L[1], L[2]}, Lm[3] = {L[0], L[1], L[2]};
+                  Rp[e] += 1, Rm[e] -= 1, Lp[e] += 1, Lm[e] -= 1;
+                  gT[e] = 0.25 * (tc.at(Rp) - tc.at(Rm) + tc.at(Lp) - tc.at(Lm)) / h[e];
+                }
+              }
+            } else
+              for (int e = 0; e < 3; ++e) {
+                xf[e] = lower[e] + (e == d ? R[e] : R[e] + 0.5) * h[e];
+                dT += gradT_[e] * (xf[e] - lower[e]);
+              }
             const double jump = c.at(R) - c.at(L);
             if (jump != 0) {
               const double kL = kc.at(L), kR = kc.at(R);
@@ -215,18 +230,66 @@ PetscErrorCode Vof::SurfaceTension(Flow &flow) {
               }
               if (g2 > 0) {
                 const double mag = std::sqrt(g2);
-                for (int e = 0; e < 3; ++e) nG += g[e] / mag * gradT_[e];
-                force += dsigmadT_ * (gradT_[d] - g[d] / mag * nG) * mag;
+                for (int e = 0; e < 3; ++e) nG += g[e] / mag * gT[e];
+                force += dsigmadT_ * (gT[d] - g[d] / mag * nG) * mag;
               }
             }
+            if (computed) force *= std::fmin(mc.at(L), mc.at(R));  // a solid surface carries no capillary force
           }
           F.at(x, y, z) = force;
         }
     PetscCall(sg_->RestoreGlobal(d, f, &F));
   }
   PetscCall(VecRestoreArrayRead(kappaLocal_, &kl));
+  if (computed) {
+    PetscCall(VecRestoreArrayRead(mLocal_, &ml));
+    PetscCall(VecRestoreArrayRead(tLocal_, &tl));
+  }
   PetscCall(VecRestoreArrayRead(alphaLocal_, &a));
   PetscCallMPI(MPI_Allreduce(&missing, &missingCurvature_, 1, MPIU_REAL, MPIU_SUM, grid_->Comm()));
+  PetscFunctionReturn(0);
+}
+
+// The computed temperature and liquid share on da_, ghosted (SetTemperature). Outside a non-periodic box the
+// temperature's first ghost layer is extrapolated linearly (the tangential differences of the cells at the box
+// are then those of the interior); the liquid share is read only inside the box.
+PetscErrorCode Vof::TemperatureLocals(const PetscScalar **T, const PetscScalar **m) {
+  PetscInt     s[3], n[3], gs[3], gm[3];
+  PetscScalar *t;
+
+  PetscFunctionBeginUser;
+  PetscCall(VecCopy(temperature_(), tGlobal_));
+  PetscCall(DMGlobalToLocal(da_, tGlobal_, INSERT_VALUES, tLocal_));
+  PetscCall(VecCopy(liquid_(), tGlobal_));
+  PetscCall(DMGlobalToLocal(da_, tGlobal_, INSERT_VALUES, mLocal_));
+  PetscCall(DMDAGetCorners(da_, &s[0], &s[1], &s[2], &n[0], &n[1], &n[2]));
+  PetscCall(DMDAGetGhostCorners(da_, &gs[0], &gs[1], &gs[2], &gm[0], &gm[1], &gm[2]));
+  const PetscInt  stride[3] = {1, gm[0], gm[0] * gm[1]};
+  const PetscInt *N         = grid_->Cells();
+  PetscCall(VecGetArray(tLocal_, &t));
+  for (int d = 0; d < 3; ++d) {
+    if (grid_->Periodic(d)) continue;
+    for (int side = 0; side < 2; ++side) {
+      const PetscInt ghost = side ? N[d] : -1, in = side ? N[d] - 1 : 0, in2 = side ? N[d] - 2 : 1;
+      if (ghost < gs[d] || ghost >= gs[d] + gm[d] || N[d] < 2) continue;
+      const int a = (d + 1) % 3, b = (d + 2) % 3;
+      for (PetscInt qb = gs[b]; qb < gs[b] + gm[b]; ++qb)
+        for (PetscInt qa = gs[a]; qa < gs[a] + gm[a]; ++qa) {
+          PetscInt q[3];
+          q[a] = qa, q[b] = qb;
+          auto at = [&](PetscInt c) -> PetscScalar & {
+            q[d] = c;
+            return t[(q[0] - gs[0]) * stride[0] + (q[1] - gs[1]) * stride[1] + (q[2] - gs[2]) * stride[2]];
+          };
+          const PetscScalar v = 2 * at(in) - at(in2);
+          at(ghost)           = v;
+        }
+    }
+  }
+  PetscCall(VecRestoreArray(tLocal_, &t));
+  PetscCall(VecGetArrayRead(tLocal_, T));
+  PetscCall(VecGetArrayRead(mLocal_, m));
+  (void)s, (void)n;
   PetscFunctionReturn(0);
 }
 

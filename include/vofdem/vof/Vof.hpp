@@ -106,9 +106,18 @@ public:
   void SetFluidFraction(Vec eps, Vec change) { eps_ = eps; epsChange_ = change; }
   // Surface tension (-vof_surface_tension sigma > 0; VofSurfaceTension.cpp): height-function
   // curvature and the balanced face force sigma kappa_f (alpha_R - alpha_L)/h into flow.FaceForce();
-  // with -vof_dsigma_dT and -vof_temperature_gradient (a prescribed linear temperature, until the
-  // energy module exists) sigma varies along the interface and the Marangoni force is added.
+  // with -vof_dsigma_dT and -vof_temperature_gradient (a prescribed linear temperature) or the computed one
+  // (SetTemperature) sigma varies along the interface and the Marangoni force is added.
   PetscErrorCode SurfaceTension(Flow &flow);
+  // The computed temperature for the surface forces (docs/physics.md F2), from another module (the energy):
+  // T() and liquid() return global vectors with the cells' layout, T in K and each cell's liquid share in
+  // [0, 1] (1 in gas and liquid metal, 0 where the metal is solid). sigma(T) = sigma + dsigma/dT (T_f - T_sigma)
+  // at the face temperature T_f (the mean of its two cells; T_sigma: -vof_surface_tension_temperature), the
+  // Marangoni force from grad T on the same stencil as grad alpha, and both forces weighted at each face by the
+  // smaller liquid share of its two cells (a solid surface carries no capillary force). Set before SetUp;
+  // -vof_temperature_gradient is then refused.
+  void SetTemperature(std::function<Vec()> T, std::function<Vec()> liquid) { temperature_ = std::move(T), liquid_ = std::move(liquid); }
+  bool HasTemperature() const { return (bool)temperature_; }
   PetscReal      SurfaceTensionCoefficient() const { return sigma_; }
   // The capillary time-step limit sqrt(rho_mean h^3 / (2 pi sigma)) (PETSC_MAX_REAL without sigma).
   PetscReal CapillaryTimeStep(PetscReal otherDensity) const;
@@ -193,6 +202,11 @@ private:
   PetscReal   density_ = 1000, viscosity_ = 1e-3;  // phase 1 (alpha = 1)
   PetscReal   sigma_ = 0;                         // surface tension coefficient at T0, N/m
   PetscReal   dsigmadT_ = 0, gradT_[3] = {0, 0, 0};   // Marangoni: dsigma/dT (N/(m K)), prescribed grad T (K/m)
+  PetscReal   sigmaTemperature_ = -1;                 // K: where sigma holds (-vof_surface_tension_temperature; computed T)
+  bool        gradTGiven_ = false;
+  std::function<Vec()> temperature_, liquid_;        // SetTemperature
+  PetscErrorCode TemperatureLocals(const PetscScalar **T, const PetscScalar **m);  // VofSurfaceTension.cpp
+  Vec         tGlobal_ = nullptr, tLocal_ = nullptr, mLocal_ = nullptr;  // SurfaceTension's copies of them, on da_
   PetscBool   advect_ = PETSC_TRUE;               // -vof_advect 0: a frozen interface (V3)
   PetscBool   redistribute_ = PETSC_TRUE;         // -vof_redistribute (with particles)
   VofMomentum momentum_ = VofMomentum::Consistent;  // -vof_momentum
