@@ -111,13 +111,20 @@ PetscErrorCode Energy::TransportSweep(int d, PetscReal dt, Vec u, Vec phaseFlux,
     const PetscReal fup = pos ? F.at(L1) : F.at(R1);
     return r * (fm * rm * (metal_.Sensible(tf) + L * fup) + (vel - fm) * rg * gas_.Sensible(tf));
   };
-  for (PetscInt k = s[2]; k < s[2] + n[2]; ++k)
-    for (PetscInt j = s[1]; j < s[1] + n[1]; ++j)
-      for (PetscInt i = s[0]; i < s[0] + n[0]; ++i) {
-        PetscInt lo[3] = {i, j, k}, hi[3] = {i, j, k};
-        hi[d] += 1;
-        E.at(lo) += -(flux(hi) - flux(lo)) + r * (uf.at(hi) - uf.at(lo)) * X.at(lo);
+  // Along d innermost, so that each face's flux is computed once and serves both its cells.
+  const int a = (d + 1) % 3, b = (d + 2) % 3;
+  for (PetscInt qb = s[b]; qb < s[b] + n[b]; ++qb)
+    for (PetscInt qa = s[a]; qa < s[a] + n[a]; ++qa) {
+      PetscInt lo[3], hi[3];
+      lo[a] = hi[a] = qa, lo[b] = hi[b] = qb, lo[d] = s[d];
+      PetscReal below = flux(lo);
+      for (PetscInt q = s[d]; q < s[d] + n[d]; ++q) {
+        lo[d] = q, hi[d] = q + 1;
+        const PetscReal above = flux(hi);
+        E.at(lo) += -(above - below) + r * (uf.at(hi) - uf.at(lo)) * X.at(lo);
+        below = above;
       }
+    }
   PetscCall(sg.RestoreGlobal(3, Xstart_, &X));
   PetscCall(sg.RestoreGlobal(3, E_, &E));
   PetscCall(sg.RestoreLocal(d, fluxLocal_[d], &pf));
