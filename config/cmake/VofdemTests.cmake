@@ -194,10 +194,16 @@ set_tests_properties(energy/laser_power PROPERTIES LABELS "quick;energy" PROCESS
 # E5: energy across a moving interface (the dam break, rho cp ratio 4000): a uniform T stays uniform to 1e-12, a closed box keeps its energy.
 add_test(NAME energy/interface_transport COMMAND ${VOFDEM_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/test/energy/test_interface_transport.py $<TARGET_FILE:vofdem_app>)
 set_tests_properties(energy/interface_transport PROPERTIES LABELS "quick;energy" PROCESSORS 2 TIMEOUT 300)
-# Restart of energy moving with the interface: killed twice (once while writing), the final state is bitwise the uninterrupted run's.
+# The melt's flow physics (F2): solid metal held at rest, a pool that freezes with the Darcy term, Marangoni from the computed T.
+add_test(NAME energy/mushy_flow COMMAND ${VOFDEM_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/test/energy/test_mushy_flow.py $<TARGET_FILE:vofdem_app>)
+set_tests_properties(energy/mushy_flow PROPERTIES LABELS "quick;energy" PROCESSORS 2 TIMEOUT 400)
+# Restart of energy moving with the interface, a collapsing column freezing from two cold walls (the Darcy term and held cells
+# rebuilt from the loaded state): killed twice (once while writing), the final state is bitwise the uninterrupted run's.
 add_test(NAME energy/interface_restart COMMAND ${VOFDEM_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/scripts/kill-restart-test ${CMAKE_CURRENT_SOURCE_DIR}/config/scenes/dam-break.yaml 2
          --ranks 2 --steps 60 --every 6 --during-write 1 --seed 5 --exe $<TARGET_FILE:vofdem_app> -- -physics flow,vof,energy -grid_cells 40,20,1 -energy_metal_density 1000
-         -energy_gas_density 1 -energy_interface_radiation 0 -energy_pc boomeramg -energy_box_lower 0,0,0 -energy_box_upper 0.05715,0.1143,0.0035719 -energy_box_temperature 400)
+         -energy_gas_density 1 -energy_interface_radiation 0 -energy_pc boomeramg -energy_metal_specific_heat 400 -energy_metal_conductivity 2000 -energy_metal_solidus 340
+         -energy_metal_liquidus 350 -energy_metal_latent_heat 1e4 -energy_initial_temperature 400 -energy_bc_xlo temperature -energy_bc_xlo_value 300 -energy_bc_ylo temperature
+         -energy_bc_ylo_value 300)
 set_tests_properties(energy/interface_restart PROPERTIES LABELS "quick;energy;checkpoint" PROCESSORS 2 TIMEOUT 300 WORKING_DIRECTORY ${CMAKE_CURRENT_SOURCE_DIR})
 # E4: a moving Gaussian source on a plate against Eagar and Tsai, R_l/h = 2: peak, isotherm length and width within 2 %, 1 and 2 ranks.
 add_test(NAME energy/moving_source COMMAND ${VOFDEM_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/test/energy/test_moving_source.py $<TARGET_FILE:vofdem_app>)
@@ -207,6 +213,11 @@ set_tests_properties(energy/moving_source PROPERTIES LABELS "quick;energy" PROCE
 add_test(NAME energy/pool_freezes COMMAND ${VOFDEM_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/test/energy/test_pool_freezes.py $<TARGET_FILE:vofdem_app>)
 set_tests_properties(energy/pool_freezes PROPERTIES LABELS "quick;energy" PROCESSORS 2 TIMEOUT 300)
 set(VOFDEM_ENERGY_BOX -physics energy -grid_cells 4,4,4 -dt 1e-3)
+set(VOFDEM_ENERGY_FLOW -options_file_yaml ${CMAKE_CURRENT_SOURCE_DIR}/config/scenes/dam-break.yaml -physics flow,vof,energy -grid_cells 16,8,1 -energy_metal_density 1000 -energy_gas_density 1 -energy_pc boomeramg -max_steps 1)
+vofdem_bad_input(vof_cells_per_rank "option -grid_cells: the VOF module needs at least 4 cells per rank along a split direction, but y has 4 cells on 2 ranks"
+                 -options_file_yaml ${CMAKE_CURRENT_SOURCE_DIR}/config/scenes/dam-break.yaml -physics flow,vof -grid_cells 8,4,1 -grid_ranks 1,2,1)
+vofdem_bad_input(energy_marangoni_prescribed "option -vof_temperature_gradient: the temperature comes from the energy module here" ${VOFDEM_ENERGY_FLOW} -vof_dsigma_dT -1e-4 -vof_temperature_gradient 1,0,0)
+vofdem_bad_input(energy_marangoni_no_reference "option -vof_surface_tension_temperature: with -vof_dsigma_dT and the energy module, give the temperature" ${VOFDEM_ENERGY_FLOW} -vof_dsigma_dT -1e-4)
 vofdem_bad_input(energy_liquidus_below_solidus "option -energy_metal_liquidus: the liquidus 1500\\.? K must exceed the solidus 1533\\.? K" ${VOFDEM_ENERGY_BOX} -energy_metal_liquidus 1500)
 vofdem_bad_input(energy_conductivity_zero "option -energy_metal_conductivity: the metal .* needs a positive conductivity" ${VOFDEM_ENERGY_BOX} -energy_metal_conductivity 0)
 vofdem_bad_input(energy_specific_heat_negative "option -energy_gas_specific_heat: the gas .* needs a positive specific heat" ${VOFDEM_ENERGY_BOX} -energy_gas_specific_heat -5)

@@ -106,6 +106,7 @@ PetscErrorCode Energy::SetFromOptions(const Grid &grid) {
     PetscCall(opt.NameList("-melt_law", "Melt fraction f_l(T): linear (clamp((T - T_s)/(T_l - T_s), 0, 1)) or erf (seed 000; never exactly 0 or 1)", {"linear", "erf"}, &law));
     metal_.melt = law[0] == "erf" ? MeltLaw::Erf : MeltLaw::Linear;
     PetscCall(opt.Real("-initial_temperature", "Initial temperature everywhere (then the box and the substrate)", "K", &T0_, RealRange::Positive()));
+    PetscCall(opt.RealVector("-initial_gradient", "A uniform initial temperature gradient G: T = T0 + G.(x - lower corner) (before the box and the substrate)", "K/m", gradient0_, 3));
     PetscCall(opt.RealVector("-box_lower", "Lower corner of a box at -energy_box_temperature", "m", boxLower_, 3, RealRange::Any(), &boxLo));
     PetscCall(opt.RealVector("-box_upper", "Upper corner of that box", "m", boxUpper_, 3, RealRange::Any(), &boxHi));
     boxT_ = T0_, substrateT_ = T0_;
@@ -127,6 +128,12 @@ PetscErrorCode Energy::SetFromOptions(const Grid &grid) {
     PetscCall(opt.Real("-boiling_margin", "Stop the run when the metal passes its boiling point by more than this", "K", &boilingMargin_, RealRange::NonNegative()));
     poolIsotherm_ = metal_.liquidus;
     PetscCall(opt.Int("-output_every", "ParaView files of T, the melt fraction and alpha every N steps (0: none; needs -output_dir)", &outputEvery_, 0));
+    PetscCall(opt.Real("-mushy_constant", "With a flow: Carman-Kozeny constant D_c of the Darcy term D_c s^2/((1 - s)^3 + D_cs) U, s the solid metal fraction (docs/physics.md F2)",
+                       "kg/(m^3 s)", &mushyConstant_, RealRange::NonNegative()));
+    PetscCall(opt.Real("-mushy_epsilon", "With a flow: the small D_cs of the Darcy term (bounds it where s = 1)", "", &mushyEpsilon_, RealRange::Positive()));
+    PetscCall(opt.Bool("-hold_solid", "With a flow: hold cells of solid metal at rest (see -energy_freeze_alpha; 0: only the Darcy term)", &holdSolid_));
+    PetscCall(opt.Real("-freeze_alpha", "With a flow: a cell with at least this metal fraction whose metal is all solid (f_l = 0) is held at rest", "", &freezeAlpha_,
+                       RealRange::Closed(0, 1)));
     PetscCall(opt.Real("-pool_isotherm", "The isotherm whose extent is the pool's length, width and depth (default: the liquidus)", "K", &poolIsotherm_, RealRange::Positive()));
   }
   PetscOptionsEnd();
@@ -205,7 +212,7 @@ PetscErrorCode Energy::SetInitial() {
     for (PetscInt y = s[1]; y < s[1] + m[1]; ++y)
       for (PetscInt x = s[0]; x < s[0] + m[0]; ++x) {
         const PetscReal c[3] = {lo[0] + (x + 0.5) * h[0], lo[1] + (y + 0.5) * h[1], lo[2] + (z + 0.5) * h[2]};
-        PetscReal       t    = T0_;
+        PetscReal       t    = T0_ + gradient0_[0] * (c[0] - lo[0]) + gradient0_[1] * (c[1] - lo[1]) + gradient0_[2] * (c[2] - lo[2]);
         if (c[2] < substrateTop_) t = substrateT_;
         bool inside = box_;
         for (int d = 0; d < 3 && inside; ++d) inside = c[d] > boxLower_[d] && c[d] < boxUpper_[d];
@@ -290,7 +297,7 @@ PetscErrorCode Energy::Load(PetscViewer viewer) {
 
 PetscErrorCode Energy::Destroy() {
   PetscFunctionBeginUser;
-  for (Vec *v : {&T_, &E_, &Eold_, &H_, &C_, &Ecur_, &k_, &q_, &alpha_, &r_, &rhs_, &Tstar_, &fl_, &F_, &slope_, &TF_, &Tbase_, &Fbase_, &Xstart_, &TLocal_, &kLocal_, &alphaLocal_, &Tsg_, &Fsg_, &TsgLocal_, &FsgLocal_, &AsgLocal_, &uLocal_[0], &uLocal_[1], &uLocal_[2], &fluxLocal_[0], &fluxLocal_[1], &fluxLocal_[2]}) PetscCall(VecDestroy(v));
+  for (Vec *v : {&T_, &E_, &Eold_, &H_, &C_, &Ecur_, &k_, &q_, &alpha_, &r_, &rhs_, &Tstar_, &fl_, &F_, &slope_, &TF_, &Tbase_, &Fbase_, &Xstart_, &TLocal_, &kLocal_, &alphaLocal_, &Tsg_, &Fsg_, &sLocal_, &rhoLocal_, &sGlobal_, &rhoGlobal_, &TsgLocal_, &FsgLocal_, &AsgLocal_, &uLocal_[0], &uLocal_[1], &uLocal_[2], &fluxLocal_[0], &fluxLocal_[1], &fluxLocal_[2]}) PetscCall(VecDestroy(v));
   PetscCall(MatDestroy(&A_));
   PetscCall(KSPDestroy(&ksp_));
   if (column_ != MPI_COMM_NULL) PetscCallMPI(MPI_Comm_free(&column_));

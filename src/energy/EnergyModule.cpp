@@ -34,10 +34,32 @@ PetscErrorCode EnergyModule::Configure(ModuleSet &modules, const RunContext &run
                        energy_.Gas().path.c_str(), (double)flow->Get().ReferenceDensity());
     energy_.AttachInterface(flow->Get().Staggered(), [&v]() { return v.Fraction(); });
     v.AddSweepObserver([this, &v](int d, PetscReal dt, Vec u, Vec phaseFlux) { return energy_.TransportSweep(d, dt, u, phaseFlux, v.FullAtStart()); });
+    // The surface forces take the computed temperature: sigma(T) and Marangoni (docs/physics.md F2).
+    v.SetTemperature([this]() { return energy_.Temperature(); }, [this]() { return liquid_; });
     flow_ = flow, vof_ = vof;
   }
   if (!modules.Has("flow") && !run.fixedDt && !(energy_.StepLimit() > 0) && !run.help)
     VofdemInputError(run.comm, "option -dt: the energy equation is implicit and sets no step of its own without a moving laser: give -dt");
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode EnergyModule::SetUp(ModuleSet &, const RunContext &) {
+  PetscFunctionBeginUser;
+  PetscCall(energy_.SetUp());
+  if (flow_) {  // the Darcy term, taken implicitly by the flow (docs/physics.md F2)
+    Flow &flow = static_cast<FlowModule *>(flow_)->Get();
+    for (int d = 0; d < 3; ++d) PetscCall(DMCreateGlobalVector(flow.Staggered().Face(d), &damping_[d]));
+    PetscCall(DMCreateGlobalVector(flow.Staggered().Cells(), &liquid_));
+    PetscCall(VecSet(liquid_, 1));
+    flow.SetFaceDamping(damping_);
+    PetscCall(UpdateMushyDrag());
+  }
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode EnergyModule::UpdateMushyDrag() {
+  PetscFunctionBeginUser;
+  if (flow_) PetscCall(energy_.MushyDrag(damping_, liquid_));
   PetscFunctionReturn(0);
 }
 
@@ -46,7 +68,15 @@ PetscErrorCode EnergyModule::Run(Stage stage, StepState &step) {
   if (stage == Stage::Transport) {
     PetscCall(energy_.Step(step.time, step.dt));
     PetscCall(energy_.CheckBoiling(step.time + step.dt));
+    PetscCall(UpdateMushyDrag());  // for the next step's surface forces and predictor
   }
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode EnergyModule::Destroy() {
+  PetscFunctionBeginUser;
+  for (Vec *v : {&damping_[0], &damping_[1], &damping_[2], &liquid_}) PetscCall(VecDestroy(v));
+  PetscCall(energy_.Destroy());
   PetscFunctionReturn(0);
 }
 
@@ -58,7 +88,8 @@ PetscErrorCode EnergyModule::LowerTimeStep(TimeStepLimit *limit) {
 
 std::string EnergyModule::MonitorColumns() const {
   return ",energy_total_J,energy_accounted_J,energy_balance_J,energy_balance_relative,energy_input_W,energy_boundary_W,energy_loss_W,laser_beam_W,laser_absorbed_W,"
-         "temperature_max_K,temperature_min_K,melt_volume_m3,pool_length_m,pool_width_m,pool_depth_m,energy_iterations,energy_linear_iterations";
+         "temperature_max_K,temperature_min_K,melt_volume_m3,pool_length_m,pool_width_m,pool_depth_m,energy_iterations,energy_linear_iterations" +
+         std::string(flow_ ? ",held_cells" : "");
 }
 
 PetscErrorCode EnergyModule::Monitor(MonitorPart *part) {
@@ -76,6 +107,10 @@ PetscErrorCode EnergyModule::Monitor(MonitorPart *part) {
                 (double)s.peak, (double)s.minimum, (double)s.meltVolume, (double)s.pool[0], (double)s.pool[1], (double)s.pool[2], (int)s.iterations,
                 (int)s.linearIterations);
   part->csv = b;
+  if (flow_) {  // the cells of solid metal held at rest (Energy::MushyDrag)
+    part->csv += "," + std::to_string((long long)energy_.HeldCells());
+    part->screen += "  held " + std::to_string((long long)energy_.HeldCells());
+  }
   PetscFunctionReturn(0);
 }
 
@@ -84,7 +119,10 @@ PetscErrorCode EnergyModule::Save(PetscViewer viewer) {
 }
 
 PetscErrorCode EnergyModule::Load(PetscViewer viewer) {
-  return InViewerGroup(viewer, "energy", [&]() -> PetscErrorCode { return energy_.Load(viewer); });
+  PetscFunctionBeginUser;
+  PetscCall(InViewerGroup(viewer, "energy", [&]() -> PetscErrorCode { return energy_.Load(viewer); }));
+  PetscCall(UpdateMushyDrag());  // from the loaded state (the flow's and the interface's are loaded first)
+  PetscFunctionReturn(0);
 }
 
 PetscErrorCode EnergyModule::SavedBytes(PetscInt64 *bytes) const {

@@ -1,7 +1,7 @@
 #!/usr/bin/python3
 """E5 (docs/physics.md F7 a; docs/verification.md E5): energy carried across a moving interface. The dam break
 (config/scenes/dam-break.yaml at 40 x 20 x 1 cells, to T = 3, t = 0.162 s) with -physics flow,vof,energy, water
-as the metal phase (rho 1000 kg/m^3, cp 4000 J/(kg K)) under air (rho 1, cp 1000): a rho cp ratio of 4000.
+as the metal phase (rho 1000 kg/m^3, cp 4000 J/(kg K), liquid: solidus and liquidus below 300 K) under air (rho 1, cp 1000): a rho cp ratio of 4000.
   (a) T uniform at 350 K: it stays uniform, max |T - 350 K| / 350 K below 1e-12 at every step, while the column
       collapses (max |u| above 1 m/s);
   (b) the column at 400 K in air at 300 K, conducting (k 0.6 and 0.025 W/(m K)), the box closed and adiabatic:
@@ -21,6 +21,7 @@ from testcheck import check, finish, run_vofdem  # noqa: E402
 BASE = ["-options_file_yaml", os.path.join(ROOT, "config", "scenes", "dam-break.yaml"), "-physics", "flow,vof,energy", "-grid_cells", "40,20,1",
         "-energy_metal_density", "1000", "-energy_gas_density", "1", "-energy_metal_specific_heat", "4000", "-energy_gas_specific_heat", "1000",
         "-energy_metal_conductivity", "0.6", "-energy_gas_conductivity", "0.025", "-energy_interface_radiation", "0", "-energy_pc", "boomeramg",
+        "-energy_metal_solidus", "200", "-energy_metal_liquidus", "250",  # liquid throughout (else held at rest: docs/physics.md F2)
         "-monitor_every", "1", "-monitor_timing", "0"]
 HOT = ["-energy_initial_temperature", "300", "-energy_box_lower", "0,0,0", "-energy_box_upper", "0.05715,0.1143,0.0035719", "-energy_box_temperature", "400"]
 

@@ -10,7 +10,8 @@
 // scheme of Voller and Swaminathan, 1991; F' the mushy slope unless the cell is consistently solid or
 // liquid), then clamps f to [0, 1], until every cell's balance closes to -energy_tolerance. The linear systems
 // are symmetric: CG with hypre PFMG (structured) or BoomerAMG, options prefix energy_.
-// Not yet: transport by a flow (the VOF sweeps' phase fluxes, F7 a) and particles (eps < 1, F9).
+// With a flow: transport by the VOF sweeps' phase fluxes (F7 a), the Darcy term and held solid metal (F2, MushyDrag).
+// Not yet: particles (eps < 1, F9).
 #pragma once
 
 #include "vofdem/energy/Laser.hpp"
@@ -68,6 +69,14 @@ public:
   // (docs/physics.md F7 a). A uniform T stays uniform; a closed box keeps its energy.
   PetscErrorCode TransportSweep(int d, PetscReal dt, Vec u, Vec phaseFlux, const std::vector<char> &full);
   PetscErrorCode Step(PetscReal time, PetscReal dt);  // advances T from time to time + dt
+  // With a moving interface: the Darcy term of the mushy zone and the solid metal (docs/physics.md F2) as a rate
+  // per face of the staggered grid, c = D_c s_f^2/((1 - s_f)^3 + D_cs)/rho_f (1/s; s = alpha (1 - f_l) the
+  // solid metal fraction, s_f the mean of the face's two cells, rho_f the face density of the momentum
+  // equation), +inf at the faces of a cell held at rest (alpha >= -energy_freeze_alpha and f_l = 0); and
+  // each cell's liquid share m (f_l where there is metal, 1 in gas) for the surface forces. rate[d]: global
+  // vectors of the staggered grid's Face(d); liquid: of its cells.
+  PetscErrorCode MushyDrag(Vec rate[3], Vec liquid);
+  PetscInt       HeldCells() const { return heldCells_; }  // in the last MushyDrag (all ranks)
   PetscErrorCode Summarize(EnergySummary *s);         // the last step's account, the state now
   PetscErrorCode View(PetscViewer viewer) const;
   PetscReal      ExplicitLimit() const { return explicitLimit_; }  // s: what an explicit scheme would need
@@ -109,6 +118,7 @@ private:
   std::string     metalName_ = "in718", gasName_ = "argon";
   Laser           laser_;
   EnergyFace      face_[6];
+  PetscReal       gradient0_[3] = {0, 0, 0};  // K/m: -energy_initial_gradient
   PetscReal       T0_ = 300, boxT_ = 300, substrateT_ = 300, substrateTop_ = -PETSC_MAX_REAL;
   PetscReal       boxLower_[3] = {0, 0, 0}, boxUpper_[3] = {0, 0, 0};
   bool            box_ = false;
@@ -119,6 +129,8 @@ private:
   PetscReal       tolerance_ = 1e-10;  // of a cell's residual, relative to rho_m (cp_m (T_l - T_s) + L)
   PetscInt        maxIterations_ = 50;
   PetscReal       boilingMargin_ = 0, poolIsotherm_ = -1;
+  PetscReal       mushyConstant_ = 1e8, mushyEpsilon_ = 1e-3, freezeAlpha_ = 0.5;  // the Darcy term (MushyDrag)
+  PetscBool       holdSolid_ = PETSC_TRUE;
   bool            pfmg_ = true;
   PetscReal       explicitLimit_ = 0, energyScale_ = 1;
 
@@ -140,7 +152,9 @@ private:
   std::function<Vec()> interfaceAlpha_;  // the interface's alpha (once it is set up)
   Vec                  Tsg_ = nullptr, TsgLocal_ = nullptr, Fsg_ = nullptr, FsgLocal_ = nullptr, AsgLocal_ = nullptr, uLocal_[3] = {nullptr, nullptr, nullptr},
                        fluxLocal_[3] = {nullptr, nullptr, nullptr}, Xstart_ = nullptr;
-  bool                 swept_ = false;  // this step's sweeps have begun (Xstart_ holds the step's dilatation enthalpy)
+  bool                 swept_ = false;
+  Vec                  sLocal_ = nullptr, rhoLocal_ = nullptr, sGlobal_ = nullptr, rhoGlobal_ = nullptr;  // MushyDrag: the solid fraction (held: -1) and the density, ghosted
+  PetscInt             heldCells_ = 0;  // this step's sweeps have begun (Xstart_ holds the step's dilatation enthalpy)
 
   PetscInt               outputEvery_ = 0;
   std::string            outputDir_;

@@ -18,7 +18,7 @@ public:
   const char    *LogStage() const override { return "Energy"; }
   PetscErrorCode SetFromOptions(const RunContext &run) override;
   PetscErrorCode Configure(ModuleSet &modules, const RunContext &run) override;
-  PetscErrorCode SetUp(ModuleSet &, const RunContext &) override { return energy_.SetUp(); }
+  PetscErrorCode SetUp(ModuleSet &, const RunContext &) override;
 
   std::vector<Stage> Stages() const override { return {Stage::Transport}; }
   PetscErrorCode     Run(Stage stage, StepState &step) override;
@@ -31,7 +31,7 @@ public:
   PetscErrorCode Save(PetscViewer viewer) override;  // group "energy"
   PetscErrorCode Load(PetscViewer viewer) override;
   PetscErrorCode SavedBytes(PetscInt64 *bytes) const override;
-  PetscErrorCode Destroy() override { return energy_.Destroy(); }
+  PetscErrorCode Destroy() override;
   PetscErrorCode SetOutputDir(const std::string &dir) override { return energy_.SetOutputDir(dir); }
   PetscErrorCode WriteOutput(PetscInt step, PetscReal time) override { return energy_.WriteOutput(step, time); }
 
@@ -39,6 +39,10 @@ private:
   Energy    energy_;
   Module   *flow_ = nullptr, *vof_ = nullptr;  // with a moving interface
   PetscReal time_ = 0;
+  // With a flow: the Darcy rates per face (Flow::SetFaceDamping) and the cells' liquid share (Vof::SetTemperature),
+  // from the state after each step (Energy::MushyDrag).
+  Vec       damping_[3] = {nullptr, nullptr, nullptr}, liquid_ = nullptr;
+  PetscErrorCode UpdateMushyDrag();
 };
 
 }  // namespace vofdem
