@@ -212,6 +212,10 @@ set_tests_properties(energy/moving_source PROPERTIES LABELS "quick;energy" PROCE
 # and the 3 kW spot (spot-on-plate.yaml) stops at the boiling point with one line on 2 ranks.
 add_test(NAME energy/pool_freezes COMMAND ${VOFDEM_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/test/energy/test_pool_freezes.py $<TARGET_FILE:vofdem_app>)
 set_tests_properties(energy/pool_freezes PROPERTIES LABELS "quick;energy" PROCESSORS 2 TIMEOUT 300)
+# The metal files of config/materials (in718, in625, 304l) as the module reads them: banner values, the cp table and L through the
+# initial energy (1e-12), the k table through the explicit diffusion limit.
+add_test(NAME energy/material_files COMMAND ${VOFDEM_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/test/energy/test_material_files.py $<TARGET_FILE:vofdem_app>)
+set_tests_properties(energy/material_files PROPERTIES LABELS "quick;energy" TIMEOUT 120)
 set(VOFDEM_ENERGY_BOX -physics energy -grid_cells 4,4,4 -dt 1e-3)
 set(VOFDEM_ENERGY_FLOW -options_file_yaml ${CMAKE_CURRENT_SOURCE_DIR}/config/scenes/dam-break.yaml -physics flow,vof,energy -grid_cells 16,8,1 -energy_metal_density 1000 -energy_gas_density 1 -energy_pc boomeramg -max_steps 1)
 vofdem_bad_input(vof_cells_per_rank "option -grid_cells: the VOF module needs at least 4 cells per rank along a split direction, but y has 4 cells on 2 ranks"
