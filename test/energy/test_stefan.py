@@ -49,14 +49,14 @@ CASES = {  # name: (St_l, St_s, lambda, expected lambda as the design quotes it)
 }
 
 
-def run(exe, tmp, name, ranks, stl, sts, lam, melted=100):
-    """Monitor rows of one case with `melted` cells across the final melted length (t_end, rows)."""
+def arguments(out, ranks, stl, sts, lam, melted=100):
+    """vofdem's arguments for one case with `melted` cells across the final melted length, monitor.csv in `out`:
+    (t_end, arguments). scripts/work-precision E1 runs them with -energy_time_scheme as its variant."""
     tw, ti = TM + stl * L / CP, TM - sts * L / CP
     dT = tw - TM
     s_end = (0.5 if sts == 0 else 0.2) * LZ  # two phases: the solid's thermal layer (about 2 s/lambda) stays inside the box
     cells = melted * (2 if sts == 0 else 5)
     t_end = (s_end / (2 * lam)) ** 2 / ALPHA
-    out = os.path.join(tmp, name.replace(" ", "_").replace(",", "") + "-%d-%d" % (ranks, melted))
     args = ["-physics", "energy", "-grid_cells", "1,1,%d" % cells, "-grid_upper", "0.001,0.001,%g" % LZ, "-grid_ranks", "1,1,%d" % ranks,
             "-energy_metal_density", "1000", "-energy_metal_specific_heat", "%g" % CP, "-energy_metal_conductivity", "1",
             "-energy_metal_latent_heat", "%g" % L, "-energy_metal_solidus", "%.12g" % TM, "-energy_metal_liquidus", "%.12g" % (TM + 0.01 * dT),
@@ -66,11 +66,23 @@ def run(exe, tmp, name, ranks, stl, sts, lam, melted=100):
             "-output_dir", out]
     if sts > 0:
         args += ["-energy_bc_zhi", "temperature", "-energy_bc_zhi_value", "%.12g" % ti]
-    run_vofdem(exe, ranks, args)
+    return t_end, args
+
+
+def monitor(out):
+    """The rows of out/monitor.csv as {column: value}."""
     with open(os.path.join(out, "monitor.csv")) as f:
         head, *rows = [line.strip().split(",") for line in f if line.strip()]
     col = {n: i for i, n in enumerate(head)}
-    return t_end, [{n: float(r[i]) for n, i in col.items()} for r in rows]
+    return [{n: float(r[i]) for n, i in col.items()} for r in rows]
+
+
+def run(exe, tmp, name, ranks, stl, sts, lam, melted=100):
+    """Monitor rows of one case with `melted` cells across the final melted length (t_end, rows)."""
+    out = os.path.join(tmp, name.replace(" ", "_").replace(",", "") + "-%d-%d" % (ranks, melted))
+    t_end, args = arguments(out, ranks, stl, sts, lam, melted)
+    run_vofdem(exe, ranks, args)
+    return t_end, monitor(out)
 
 
 def front_error(rows, lam):

@@ -1,8 +1,11 @@
 """scripts/work-precision: the F1 parser reads ex24's grid line (error and wall time of that grid only)
-and refuses lines without the time; every case entry is complete."""
+and refuses lines without the time; every case entry is complete; E1 and E4 pass the grid and the time scheme
+to vofdem and read their error and wall time from its monitor.csv (a stand-in for vofdem writes it here)."""
 import importlib.machinery
 import importlib.util
+import math
 import os
+import subprocess
 import unittest
 
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
@@ -43,11 +46,8 @@ class CasesTest(unittest.TestCase):
         for name, c in wp.CASES.items():
             with self.subTest(case=name):
                 self.assertTrue(c.program and c.grids and c.variants and c.error_name and c.variant_name)
-                self.assertTrue(callable(c.args) and callable(c.parse))
+                self.assertTrue(callable(c.run) or (callable(c.args) and callable(c.parse)))
 
-
-if __name__ == "__main__":
-    unittest.main()
 
 
 # ex28 -cells_list 32,64 -show_time, as printed (two lines per grid)
@@ -67,3 +67,81 @@ class V1ParseTest(unittest.TestCase):
 
     def test_without_time_is_none(self):
         self.assertIsNone(wp.v1_parse(V1_OUT.replace("  wall 3.451 s", ""), 64))
+
+
+class EnergyCasesTest(unittest.TestCase):
+    """E1 and E4 through a stand-in launcher that writes the monitor.csv vofdem would."""
+
+    @staticmethod
+    def launcher(seen, rows):
+        def launch(args):
+            seen.append(args)
+            with open(os.path.join(args[args.index("-output_dir") + 1], "monitor.csv"), "w") as f:
+                f.write("\n".join(",".join(str(v) for v in r) for r in rows) + "\n")
+            return subprocess.CompletedProcess(args, 0, "", "")
+        return launch
+
+    def test_e1_front_error_and_wall(self):
+        st = wp.test_module("test_stefan")
+        stl, sts, lam, _ = st.CASES["one phase St 1"]
+        t_end, _ = st.arguments("x", 2, stl, sts, lam, 50)
+        front = 1.01 * 2 * lam * math.sqrt(st.ALPHA * t_end)  # 1 % ahead of Neumann's at the end
+        seen = []
+        rows = [("step", "time_s", "melt_volume_m3", "wall_time_s"), (0, 0.0, 0.0, 0.0), (200, t_end / 4, 0.98 * front / 1.01 * 0.5 * st.AREA, 2.0),
+                (400, t_end / 2, front / 1.01 * math.sqrt(0.5) * st.AREA, 3.5), (801, t_end, front * st.AREA, 7.25)]
+        result, why = wp.CASES["E1"].run(50, "euler", 2, self.launcher(seen, rows), ["-extra", "1"])
+        self.assertEqual(why, "")
+        self.assertAlmostEqual(result["error"], 0.02, places=12)  # the largest from t_end/4 on: -2 % there, 0 and +1 % later
+        self.assertEqual((result["wall"], result["steps"]), (7.25, 801))
+        args = seen[0]
+        self.assertEqual(args[args.index("-grid_cells") + 1], "1,1,100")  # one phase: twice the melted cells
+        self.assertEqual(args[args.index("-energy_time_scheme") + 1], "euler")
+        self.assertEqual(args[args.index("-monitor_every", args.index("-monitor_every") + 1) + 1], "1")  # every step, after the test's 20
+        self.assertEqual(args[-2:], ["-extra", "1"])
+        self.assertEqual(wp.CASES["E1"].target, "vofdem_app")  # the program vofdem is CMake's vofdem_app (vofdem is the library)
+
+    def test_e1_short_run_and_unknown_case_fail(self):
+        rows = [("step", "time_s", "melt_volume_m3", "wall_time_s"), (0, 0.0, 0.0, 0.0), (10, 1.0, 1e-9, 0.5)]
+        result, why = wp.CASES["E1"].run(25, "bdf2", 1, self.launcher([], rows), [])
+        self.assertIsNone(result)
+        self.assertIn("stopped", why)
+        result, why = wp.CASES["E1"].run(25, "bdf2:three-phase", 1, self.launcher([], rows), [])
+        self.assertIsNone(result)
+
+    def test_e4_grid_keeps_the_box(self):
+        ms = wp.test_module("test_moving_source")
+        self.assertEqual(ms.grid(), ((64, 16, 16), 5e-4))  # the quick test's R_l/h = 2
+        self.assertEqual(ms.grid(1)[0], (32, 8, 8))
+        self.assertEqual(ms.grid(1.5)[0], (48, 12, 12))
+        self.assertEqual(ms.grid(4)[0], (128, 32, 32))
+        with self.assertRaises(ValueError):
+            ms.grid(1.3)
+        args = ms.arguments("out", 2, 825.0, 4)
+        self.assertEqual(args[args.index("-grid_cells") + 1], "128,32,32")
+        self.assertEqual(args[args.index("-grid_upper") + 1], "0.032,0.008,0.008")
+        self.assertEqual(args[args.index("-grid_ranks") + 1], "2,1,1")
+
+
+    def test_e4_largest_error_and_step(self):
+        ms = wp.test_module("test_moving_source")
+        saved = ms.exact, ms.exact_on_grid  # the exact solution takes seconds: stand-ins here
+        ms.exact = lambda xbeam, ratio: (1300.0, 600.0, 4e-3, 1e-3)
+        ms.exact_on_grid = lambda xbeam, iso, ratio: (4e-3, 1e-3)
+        try:
+            seen = []
+            rows = [("step", "time_s", "temperature_max_K", "pool_length_m", "pool_width_m", "wall_time_s"),
+                    (160, ms.T_END, 1310.0, 4.04e-3, 0.97e-3, 61.5)]  # rise +1 %, length +1 %, width -3 %
+            result, why = wp.CASES["E4"].run(4, "bdf2", 2, self.launcher(seen, rows), [])
+        finally:
+            ms.exact, ms.exact_on_grid = saved
+        self.assertEqual(why, "")
+        self.assertAlmostEqual(result["error"], 0.03, places=12)
+        self.assertEqual((result["wall"], result["steps"]), (61.5, 160))
+        args = seen[0]
+        self.assertEqual(args[args.index("-grid_cells") + 1], "128,32,32")
+        self.assertEqual(args[args.index("-laser_step_fraction") + 1], "0.125")  # the beam h/2 per step
+        self.assertEqual(args[args.index("-energy_time_scheme") + 1], "bdf2")
+
+
+if __name__ == "__main__":
+    unittest.main()
