@@ -99,6 +99,44 @@ class Meter:
         return False
 
 
+def children(pid):
+    out = []
+    for d in os.listdir("/proc"):
+        if d.isdigit():
+            try:
+                st = open("/proc/%s/stat" % d).read()
+            except OSError:
+                continue
+            if int(st[st.rindex(")") + 2:].split()[1]) == pid:
+                out.append(int(d))
+    return out
+
+
+def rank_zero(pid):
+    """The process of MPI rank 0 below mpiexec's pid (stdbuf execs mpiexec in place), or None."""
+    todo = [pid]
+    while todo:
+        q = todo.pop()
+        try:
+            env = open("/proc/%d/environ" % q, "rb").read().split(b"\0")
+        except OSError:
+            env = []
+        if b"OMPI_COMM_WORLD_RANK=0" in env:
+            return q
+        todo += children(q)
+    return None
+
+
+def proc_cpu(pid):
+    """utime + stime of a process, in seconds (None once it is gone)."""
+    try:
+        st = open("/proc/%d/stat" % pid).read()
+    except OSError:
+        return None
+    f = st[st.rindex(")") + 2:].split()
+    return (int(f[11]) + int(f[12])) / os.sysconf("SC_CLK_TCK")
+
+
 # ---------------------------------------------------------------- the analytic solution
 
 
@@ -168,14 +206,28 @@ def run_vofdem(exe, c, ranks, outdir, extra):
             "-dt", "%.17g" % c.dt, "-final_time", "%.17g" % c.t_end, "-max_steps", str(c.steps), "-monitor_every", str(c.w),
             "-energy_output_every", str(c.steps), "-output_dir", outdir, "-log_view", ":" + log] + extra
     cmd = mpi(ranks) + [exe] + args
+    # rank 0's CPU time at the monitor lines of steps w and last, read from /proc as each line arrives: the
+    # counterpart of OpenFOAM's ExecutionTime (rank 0's CPU time), which a busy machine inflates far less than wall time
+    cpu_at, text = {}, []
     with Meter() as meter:
-        p = subprocess.run(cmd, env=ENV, capture_output=True, text=True, cwd=ROOT)
+        p = subprocess.Popen(["stdbuf", "-oL"] + cmd, env=ENV, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True, bufsize=1, cwd=ROOT)
+        rank0 = None
+        for line in p.stdout:
+            text.append(line)
+            m = re.match(r"step\s+(\d+)\s", line)
+            if m and int(m.group(1)) in (c.w, c.last):
+                rank0 = rank0 or rank_zero(p.pid)
+                if rank0:
+                    cpu_at[int(m.group(1))] = proc_cpu(rank0)
+        rc = p.wait()
+    out = "".join(text)
     with open(os.path.join(outdir, "stdout.txt"), "w") as f:
-        f.write(" ".join(cmd) + "\n" + p.stdout + p.stderr)
-    if p.returncode != 0:
-        lines = [l.strip() for l in (p.stderr + p.stdout).splitlines() if l.strip().strip("-")]
+        f.write(" ".join(cmd) + "\n" + out)
+    if rc != 0:
+        lines = [l.strip() for l in out.splitlines() if l.strip().strip("-")]
         errors = [l for l in lines if "error" in l.lower()]
-        raise RuntimeError("vofdem exit %d: %s (%s)" % (p.returncode, (errors or lines or ["(no output)"])[0], os.path.join(outdir, "stdout.txt")))
+        raise RuntimeError("vofdem exit %d: %s (%s)" % (rc, (errors or lines or ["(no output)"])[0], os.path.join(outdir, "stdout.txt")))
+    cpu = (cpu_at[c.last] - cpu_at[c.w]) / (c.timed * c.n) * 1e6 if c.w in cpu_at and c.last in cpu_at and cpu_at[c.w] is not None and cpu_at[c.last] is not None else float("nan")
     lines = [l for l in open(os.path.join(outdir, "monitor.csv")).read().splitlines() if l.strip()]
     cols = lines[0].split(",")
     rows = {int(float(r["step"])): r for r in (dict(zip(cols, l.split(","))) for l in lines[1:])}
@@ -191,7 +243,7 @@ def run_vofdem(exe, c, ranks, outdir, extra):
         T = f["energy_temperature"][...]
     if T.shape != (c.cells[2], c.cells[1], c.cells[0]):
         raise RuntimeError("vofdem's temperature has shape %s" % (T.shape,))
-    return wall / (c.timed * c.n) * 1e6, lin, its, T[-1], log, meter.foreign
+    return wall / (c.timed * c.n) * 1e6, cpu, lin, its, T[-1], log, meter.foreign
 
 
 def run_openfoam(c, ranks, solver, tol, case):
@@ -299,6 +351,7 @@ def main():
 
     us = {}        # (code, ranks) -> [per repeat]; code "vofdem", "GAMG", "PCG"
     wall_us = {}   # OpenFOAM's wall-clock stamps
+    cpu_us = {}    # ranks -> vofdem's rank-0 CPU time per cell-step
     foreign = {}   # (code, ranks) -> [cores]
     iters = {}
     err = {}
@@ -310,15 +363,16 @@ def main():
             line = "  repeat %d, %d rank%s:" % (rep + 1, ranks, "s" if ranks > 1 else "")
             if "vofdem" not in failed:
                 try:
-                    u, lin, its, top, log, fl = run_vofdem(exe, c, ranks, os.path.join(WORK, "vofdem-%d" % ranks), extra)
+                    u, uc, lin, its, top, log, fl = run_vofdem(exe, c, ranks, os.path.join(WORK, "vofdem-%d" % ranks), extra)
                     us.setdefault(("vofdem", ranks), []).append(u)
+                    cpu_us.setdefault(ranks, []).append(uc)
                     foreign.setdefault(("vofdem", ranks), []).append(fl)
                     iters[("vofdem", ranks)] = (its, lin)
                     logs.setdefault(ranks, []).append(log_view_profile(log))
                     if ("vofdem", ranks) not in err:
                         err[("vofdem", ranks)] = errors(c, top, ex, (j0, i0))
                         tops[("vofdem", ranks)] = top
-                    line += " vofdem %.4f us (%d lin. its/step, other load %.2f)" % (u, lin, fl)
+                    line += " vofdem %.4f us (rank 0 CPU %.4f; %d lin. its/step, other load %.2f)" % (u, uc, lin, fl)
                 except RuntimeError as e:
                     failed["vofdem"] = str(e)
                     line += " vofdem FAILED"
@@ -372,8 +426,12 @@ def main():
             say("| %d | **OpenFOAM %s / vofdem** | | | **%.2f** (paired median of %d; %.2f-%.2f) | | | | | |" % (
                 ranks, best, rm, len(ratios), min(ratios), max(ratios)))
             wr = [f / v for f, v in zip(wall_us[(best, ranks)], us[("vofdem", ranks)])]
-            say("| %d | OpenFOAM %s / vofdem, OpenFOAM's wall-clock stamps | | | %.2f (paired median; %.2f-%.2f) | | | | | |" % (
+            say("| %d | OpenFOAM %s / vofdem, wall clock in both | | | %.2f (paired median; %.2f-%.2f) | | | | | |" % (
                 ranks, best, statistics.median(wr), min(wr), max(wr)))
+            cr = [f / v for f, v in zip(us[(best, ranks)], cpu_us[ranks]) if v == v]
+            if cr:
+                say("| %d | OpenFOAM %s / vofdem, rank 0's CPU time in both | | | %.2f (paired median; %.2f-%.2f) | | | | | |" % (
+                    ranks, best, statistics.median(cr), min(cr), max(cr)))
     say()
     say("error: code minus the semi-infinite solution on the %d x %d top-layer cell centres at t = %g s (analytic peak rise %.3f K; %% of it)"
         % (c.cells[0], c.cells[1], c.t_end, scale))
@@ -381,6 +439,9 @@ def main():
         ", ".join("%d rank(s) %g enthalpy / %g CG" % (r, *iters[("vofdem", r)]) for r in ranks_list if ("vofdem", r) in iters),
         ", ".join("%s %d rank(s) %g" % (s, r, iters[(s, r)]) for s in solvers for r in ranks_list if (s, r) in iters)))
     for ranks in ranks_list:
+        if cpu_us.get(ranks):
+            say("vofdem, %d rank(s): rank 0's CPU time %.4f us per cell-step (median) against its wall clock %.4f" % (
+                ranks, statistics.median(cpu_us[ranks]), med[("vofdem", ranks)]))
         for s in solvers:
             if (s, ranks) in wall_us and (s, ranks) in med:
                 say("OpenFOAM %s, %d rank(s): wall-clock stamps %.4f us per cell-step (median) against ExecutionTime %.4f" % (
