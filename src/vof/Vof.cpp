@@ -38,6 +38,11 @@ PetscErrorCode Vof::SetFromOptions(const Grid &grid) {
     PetscCall(opt.RealVector("-temperature_gradient", "Prescribed uniform temperature gradient (T = T0 + G.(x - lower corner), sigma holding at T0) for the Marangoni force without the energy module",
                              "K/m", gradT_, 3, RealRange::Any(), &gradSet));
     gradTGiven_ = gradSet;
+    std::vector<std::string> scaling = {"density"};
+    PetscCall(opt.NameList("-marangoni_scaling", "Marangoni force per face: density (times 2 rho_f/(rho_1 + rho_0): on the heavy side of the smeared interface, its sum unchanged) or none",
+                           {"density", "none"}, &scaling));
+    if (scaling.size() != 1) VofdemInputError(grid.Comm(), "option -vof_marangoni_scaling: give one of density, none");
+    marangoniScaling_ = scaling[0] == "density" ? 1 : 0;
     PetscCall(opt.Real("-surface_tension_temperature", "With the energy module: the temperature at which -vof_surface_tension holds (sigma(T) = sigma + dsigma/dT (T - this))", "K",
                        &sigmaTemperature_, RealRange::Any()));
     std::vector<std::string> mom = {momentum_ == VofMomentum::Consistent ? "consistent" : "advective"};

@@ -173,6 +173,8 @@ PetscErrorCode Vof::SurfaceTension(Flow &flow) {
   // from the jump across it and, across, the mean of the two cells' centred differences.
   const PetscReal *lower = grid_->Lower();
   const bool       computed  = (bool)temperature_;
+  const double     rho0 = flow.ReferenceDensity();
+  const bool       densityScaled = marangoniScaling_ == 1 && rho0 != density_;
   const bool       marangoni = dsigmadT_ != 0 && (computed || gradT_[0] != 0 || gradT_[1] != 0 || gradT_[2] != 0);
   const PetscScalar *tl = nullptr, *ml = nullptr;
   if (computed) PetscCall(TemperatureLocals(&tl, &ml));
@@ -217,6 +219,12 @@ PetscErrorCode Vof::SurfaceTension(Flow &flow) {
               const double kf = kL != kNone && kR != kNone ? 0.5 * (kL + kR) : kL != kNone ? kL : kR != kNone ? kR : 0;
               force           = (sigma_ + dsigmadT_ * dT) * kf * jump / h[d];
             }
+            // With the computed T a solid surface carries no capillary force: the normal force takes the smaller
+            // liquid share of L and R, the Marangoni force the smallest of every cell its grad alpha reads (a
+            // gas-gas face above solid metal reads that metal through its tangential differences).
+            double wN = 1, wM = 1;
+            if (computed) wN = wM = std::fmin(mc.at(L), mc.at(R));
+            force *= wN;
             if (marangoni) {
               double g[3], g2 = 0, nG = 0;
               for (int e = 0; e < 3; ++e) {
@@ -225,16 +233,23 @@ PetscErrorCode Vof::SurfaceTension(Flow &flow) {
                   PetscInt Rp[3] = {R[0], R[1], R[2]}, Rm[3] = {R[0], R[1], R[2]}, Lp[3] = {L[0], L[1], L[2]}, Lm[3] = {L[0], L[1], L[2]};
                   Rp[e] += 1, Rm[e] -= 1, Lp[e] += 1, Lm[e] -= 1;
                   g[e] = 0.25 * (c.at(Rp) - c.at(Rm) + c.at(Lp) - c.at(Lm)) / h[e];
+                  if (computed) wM = std::fmin(wM, std::fmin(std::fmin(mc.at(Rp), mc.at(Rm)), std::fmin(mc.at(Lp), mc.at(Lm))));
                 }
                 g2 += g[e] * g[e];
               }
-              if (g2 > 0) {
+              if (g2 > 0 && wM > 0) {
                 const double mag = std::sqrt(g2);
                 for (int e = 0; e < 3; ++e) nG += g[e] / mag * gT[e];
-                force += dsigmadT_ * (gT[d] - g[d] / mag * nG) * mag;
+                // -vof_marangoni_scaling density: 2 rho_f/(rho_1 + rho_0), the face density of the momentum equation
+                // (the mean of the cells' mixture densities), so that the smeared force lands on the heavy side (its
+                // sum across the interface is unchanged) instead of accelerating the light phase beside the interface.
+                if (densityScaled) {
+                  const double rL = c.at(L) * density_ + (1 - c.at(L)) * rho0, rR = c.at(R) * density_ + (1 - c.at(R)) * rho0;
+                  wM *= (rL + rR) / (density_ + rho0);
+                }
+                force += wM * dsigmadT_ * (gT[d] - g[d] / mag * nG) * mag;
               }
             }
-            if (computed) force *= std::fmin(mc.at(L), mc.at(R));  // a solid surface carries no capillary force
           }
           F.at(x, y, z) = force;
         }
@@ -252,7 +267,7 @@ PetscErrorCode Vof::SurfaceTension(Flow &flow) {
 
 // The computed temperature and liquid share on da_, ghosted (SetTemperature). Outside a non-periodic box the
 // temperature's first ghost layer is extrapolated linearly (the tangential differences of the cells at the box
-// are then those of the interior); the liquid share is read only inside the box.
+// are then those of the interior); the liquid share is 1 there (no solid).
 PetscErrorCode Vof::TemperatureLocals(const PetscScalar **T, const PetscScalar **m) {
   PetscInt     s[3], n[3], gs[3], gm[3];
   PetscScalar *t;
@@ -261,6 +276,7 @@ PetscErrorCode Vof::TemperatureLocals(const PetscScalar **T, const PetscScalar *
   PetscCall(VecCopy(temperature_(), tGlobal_));
   PetscCall(DMGlobalToLocal(da_, tGlobal_, INSERT_VALUES, tLocal_));
   PetscCall(VecCopy(liquid_(), tGlobal_));
+  PetscCall(VecSet(mLocal_, 1));  // outside a non-periodic box: no solid
   PetscCall(DMGlobalToLocal(da_, tGlobal_, INSERT_VALUES, mLocal_));
   PetscCall(DMDAGetCorners(da_, &s[0], &s[1], &s[2], &n[0], &n[1], &n[2]));
   PetscCall(DMDAGetGhostCorners(da_, &gs[0], &gs[1], &gs[2], &gm[0], &gm[1], &gm[2]));

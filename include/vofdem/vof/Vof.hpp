@@ -204,6 +204,7 @@ private:
   PetscReal   dsigmadT_ = 0, gradT_[3] = {0, 0, 0};   // Marangoni: dsigma/dT (N/(m K)), prescribed grad T (K/m)
   PetscReal   sigmaTemperature_ = -1;                 // K: where sigma holds (-vof_surface_tension_temperature; computed T)
   bool        gradTGiven_ = false;
+  int         marangoniScaling_ = 1;                 // -vof_marangoni_scaling: 0 none, 1 density
   std::function<Vec()> temperature_, liquid_;        // SetTemperature
   PetscErrorCode TemperatureLocals(const PetscScalar **T, const PetscScalar **m);  // VofSurfaceTension.cpp
   Vec         tGlobal_ = nullptr, tLocal_ = nullptr, mLocal_ = nullptr;  // SurfaceTension's copies of them, on da_
