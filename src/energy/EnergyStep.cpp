@@ -404,7 +404,10 @@ PetscErrorCode Energy::Step(PetscReal time, PetscReal dt) {
   PetscCall(VecSum(Ecur_, &total));
   const PetscReal *h = grid_->Spacing();
   total *= h[0] * h[1] * h[2];
-  const PetscReal W = (bcoef * W_ - c * Wold_ + dt * last_.inputRate) / a;
+  PetscReal advected = 0;  // what the interface's sweeps carried through the box's faces this step (TransportSweep)
+  PetscCallMPI(MPI_Allreduce(&advected_, &advected, 1, MPIU_REAL, MPIU_SUM, comm_));
+  advected_ = 0;
+  const PetscReal W = (bcoef * W_ - c * Wold_ + dt * last_.inputRate) / a + advected;
   Wold_ = W_, W_ = W;
   totalOlder_ = totalOld_, totalOld_ = total;
   PetscCall(VecCopy(E_, Eold_));

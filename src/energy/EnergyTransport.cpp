@@ -111,20 +111,28 @@ PetscErrorCode Energy::TransportSweep(int d, PetscReal dt, Vec u, Vec phaseFlux,
     const PetscReal fup = pos ? F.at(L1) : F.at(R1);
     return r * (fm * rm * (metal_.Sensible(tf) + L * fup) + (vel - fm) * rg * gas_.Sensible(tf));
   };
-  // Along d innermost, so that each face's flux is computed once and serves both its cells.
-  const int a = (d + 1) % 3, b = (d + 2) % 3;
+  // Along d innermost, so that each face's flux is computed once and serves both its cells. What crosses the box's
+  // faces (open ones: outflow, inflow) joins the account (energy_accounted_J) as input.
+  const int       a = (d + 1) % 3, b = (d + 2) % 3;
+  const PetscInt  N = grid_->Cells()[d];
+  const bool      open = !grid_->Periodic(d);
+  const PetscReal volume = grid_->Spacing()[0] * grid_->Spacing()[1] * grid_->Spacing()[2];
+  PetscReal       entered = 0;
   for (PetscInt qb = s[b]; qb < s[b] + n[b]; ++qb)
     for (PetscInt qa = s[a]; qa < s[a] + n[a]; ++qa) {
       PetscInt lo[3], hi[3];
       lo[a] = hi[a] = qa, lo[b] = hi[b] = qb, lo[d] = s[d];
       PetscReal below = flux(lo);
+      if (open && s[d] == 0) entered += below * volume;
       for (PetscInt q = s[d]; q < s[d] + n[d]; ++q) {
         lo[d] = q, hi[d] = q + 1;
         const PetscReal above = flux(hi);
         E.at(lo) += -(above - below) + r * (uf.at(hi) - uf.at(lo)) * X.at(lo);
+        if (open && q + 1 == N) entered -= above * volume;
         below = above;
       }
     }
+  advected_ += entered;  // this rank's; summed over ranks in Step
   PetscCall(sg.RestoreGlobal(3, Xstart_, &X));
   PetscCall(sg.RestoreGlobal(3, E_, &E));
   PetscCall(sg.RestoreLocal(d, fluxLocal_[d], &pf));

@@ -153,6 +153,7 @@ private:
   Vec                  Tsg_ = nullptr, TsgLocal_ = nullptr, Fsg_ = nullptr, FsgLocal_ = nullptr, AsgLocal_ = nullptr, uLocal_[3] = {nullptr, nullptr, nullptr},
                        fluxLocal_[3] = {nullptr, nullptr, nullptr}, Xstart_ = nullptr;
   bool                 swept_ = false;
+  PetscReal            advected_ = 0;  // J through the box's faces in this step's sweeps (this rank's; the account)
   Vec                  sLocal_ = nullptr, rhoLocal_ = nullptr, sGlobal_ = nullptr, rhoGlobal_ = nullptr;  // MushyDrag: the solid fraction (held: -1) and the density, ghosted
   PetscInt             heldCells_ = 0;  // this step's sweeps have begun (Xstart_ holds the step's dilatation enthalpy)
 
