@@ -20,20 +20,7 @@ import time
 
 import numpy as np
 
-HEADER = """FoamFile
-{
-    version     2.0;
-    format      ascii;
-    class       %s;
-    object      %s;
-}
-"""
-
-
-def write(path, cls, obj, body):
-    os.makedirs(os.path.dirname(path), exist_ok=True)
-    with open(path, "w") as f:
-        f.write(HEADER % (cls, obj) + body)
+from foam_cavity import write  # the FoamFile header and file writer
 
 
 def control_dict(dt, steps):
