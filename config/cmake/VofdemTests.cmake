@@ -223,6 +223,7 @@ vofdem_bad_input(vof_cells_per_rank "option -grid_cells: the VOF module needs at
 vofdem_bad_input(energy_marangoni_prescribed "option -vof_temperature_gradient: the temperature comes from the energy module here" ${VOFDEM_ENERGY_FLOW} -vof_dsigma_dT -1e-4 -vof_temperature_gradient 1,0,0)
 vofdem_bad_input(energy_marangoni_no_reference "option -vof_surface_tension_temperature: with -vof_dsigma_dT and the energy module, give the temperature" ${VOFDEM_ENERGY_FLOW} -vof_dsigma_dT -1e-4)
 vofdem_bad_input(energy_liquidus_below_solidus "option -energy_metal_liquidus: the liquidus 1500\\.? K must exceed the solidus 1533\\.? K" ${VOFDEM_ENERGY_BOX} -energy_metal_liquidus 1500)
+vofdem_bad_input(energy_pc_type_structured "option -energy_pc_type: jacobi cannot take the hypre structured matrix" ${VOFDEM_ENERGY_BOX} -energy_pc pfmg -energy_pc_type jacobi)
 vofdem_bad_input(energy_conductivity_zero "option -energy_metal_conductivity: the metal .* needs a positive conductivity" ${VOFDEM_ENERGY_BOX} -energy_metal_conductivity 0)
 vofdem_bad_input(energy_specific_heat_negative "option -energy_gas_specific_heat: the gas .* needs a positive specific heat" ${VOFDEM_ENERGY_BOX} -energy_gas_specific_heat -5)
 vofdem_bad_input(energy_density_zero "option -energy_metal_density: the metal .* needs a positive density" ${VOFDEM_ENERGY_BOX} -energy_metal_density 0)

@@ -64,8 +64,7 @@ PetscErrorCode Energy::SetFromOptions(const Grid &grid) {
   grid_ = &grid, comm_ = grid.Comm();
   for (int d = 0; d < 3; ++d) boxLower_[d] = boxUpper_[d] = grid.Lower()[d];
   metalTop_ = grid.Upper()[2];
-  pfmg_     = grid.Cells()[0] > 1 && grid.Cells()[1] > 1;  // docs/petsc-notes.md: hyprestruct with one cell across x or y
-  pc        = {pfmg_ ? "pfmg" : "boomeramg"};
+  pc        = {"auto"};
   // The materials first (their values are the defaults of the options below).
   PetscOptionsBegin(comm_, "energy_", "Energy: temperature, latent heat and the laser (docs/modules/energy.md)", "Energy");
   {
@@ -124,7 +123,13 @@ PetscErrorCode Energy::SetFromOptions(const Grid &grid) {
     PetscCall(opt.NameList("-time_scheme", "Time scheme: bdf2 (backward Euler on the first step) or euler (backward)", {"bdf2", "euler"}, &scheme));
     PetscCall(opt.Real("-tolerance", "Enthalpy iteration: every cell's balance residual below this, relative to rho_m (cp_m (T_l - T_s) + L)", "", &tolerance_, RealRange::Positive()));
     PetscCall(opt.Int("-max_iterations", "Enthalpy iteration: at most this many linear solves per step", &maxIterations_, 1, 10000));
-    PetscCall(opt.NameList("-pc", "Preconditioner: pfmg (hypre structured; default unless one cell across x or y) or boomeramg", {"pfmg", "boomeramg"}, &pc));
+    std::vector<std::string> rebuild = {pcRebuild_ == PcRebuild::Step ? "step" : "iteration"};
+    PetscCall(opt.NameList("-pc_rebuild", "Enthalpy iteration: build the preconditioner once per step (step) or for every iteration's Jacobian (iteration)", {"step", "iteration"}, &rebuild));
+    pcRebuild_ = rebuild[0] == "step" ? PcRebuild::Step : PcRebuild::Iteration;
+    PetscCall(opt.NameList("-pc",
+                           "Preconditioner: auto (jacobi while the longest step the module expects is below 20 explicit diffusion limits, else pfmg, or boomeramg with one cell across x or y), "
+                           "pfmg (hypre structured), boomeramg or jacobi",
+                           {"auto", "pfmg", "boomeramg", "jacobi"}, &pc));
     PetscCall(opt.Real("-boiling_margin", "Stop the run when the metal passes its boiling point by more than this", "K", &boilingMargin_, RealRange::NonNegative()));
     poolIsotherm_ = metal_.liquidus;
     PetscCall(opt.Int("-output_every", "ParaView files of T, the melt fraction and alpha every N steps (0: none; needs -output_dir)", &outputEvery_, 0));
@@ -138,7 +143,32 @@ PetscErrorCode Energy::SetFromOptions(const Grid &grid) {
   }
   PetscOptionsEnd();
   bdf2_ = scheme[0] == "bdf2";
-  pfmg_ = pc[0] == "pfmg";
+  PetscCall(laser_.SetFromOptions(grid, metal_.absorptivity));
+  // The explicit diffusion limit (printed; the scheme is implicit): min rho cp / (2 k sum 1/h^2) over both phases.
+  const PetscReal *h = grid.Spacing();
+  const PetscReal  sh = 1 / (h[0] * h[0]) + 1 / (h[1] * h[1]) + 1 / (h[2] * h[2]);
+  explicitLimit_      = PETSC_MAX_REAL;
+  for (const ThermalMaterial *m : {&metal_, &gas_}) {
+    PetscReal kmax = *std::max_element(m->k.v.begin(), m->k.v.end()), cmin = m->cp.Min();
+    explicitLimit_ = std::min(explicitLimit_, m->density * cmin / (2 * kmax * sh));
+  }
+  // auto: the correction's system is I + (dt/C) div k grad, within about 1 + 2 dt/dt_explicit of the identity
+  // after Jacobi scaling; CG with Jacobi then needs a few iterations and no set-up, which beats multigrid's
+  // set-up each step up to about 20 limits (docs/modules/energy.md). The longest step expected: the laser's
+  // limit, or -dt; without either (a flow sets it) multigrid.
+  stepEstimate_ = laser_.StepLimit() > 0 ? laser_.StepLimit() : 0;
+  {
+    PetscReal dt  = 0;
+    PetscBool set = PETSC_FALSE;
+    PetscCall(PetscOptionsGetReal(nullptr, nullptr, "-dt", &dt, &set));
+    if (set && dt > 0) stepEstimate_ = stepEstimate_ > 0 ? std::min(stepEstimate_, dt) : dt;
+  }
+  if (pc[0] == "auto") {
+    const bool oneAcross = grid.Cells()[0] == 1 || grid.Cells()[1] == 1;  // docs/petsc-notes.md: hyprestruct with one cell across x or y
+    pc = {stepEstimate_ > 0 && stepEstimate_ < 20 * explicitLimit_ ? "jacobi" : oneAcross ? "boomeramg" : "pfmg"};
+  }
+  pfmg_   = pc[0] == "pfmg";
+  jacobi_ = pc[0] == "jacobi";
   if (pfmg_ && (grid.Cells()[0] == 1 || grid.Cells()[1] == 1))
     VofdemInputError(comm_, "option -energy_pc: pfmg cannot take one cell across x or y (docs/petsc-notes.md); use boomeramg");
   box_ = boxLo || boxHi;
@@ -146,7 +176,6 @@ PetscErrorCode Energy::SetFromOptions(const Grid &grid) {
   if (!(metal_.solidus > 0) || !(metal_.liquidus > 0)) VofdemInputError(comm_, "option -energy_metal_solidus: the metal (%s) needs a solidus and a liquidus", metal_.path.c_str());
   if (!(metal_.liquidus > metal_.solidus))
     VofdemInputError(comm_, "option -energy_metal_liquidus: the liquidus %g K must exceed the solidus %g K", (double)metal_.liquidus, (double)metal_.solidus);
-  PetscCall(laser_.SetFromOptions(grid, metal_.absorptivity));
   energyScale_ = metal_.density * (metal_.cp.At(metal_.liquidus) * (metal_.liquidus - metal_.solidus) + metal_.latentHeat);
   PetscFunctionReturn(0);
 }
@@ -156,6 +185,13 @@ PetscErrorCode Energy::SetUp() {
 
   PetscFunctionBeginUser;
   dm_ = grid_->CellDM();
+  PetscCall(PetscLogEventRegister("EnergyLaser", DM_CLASSID, &evLaser_));
+  PetscCall(PetscLogEventRegister("EnergyProperties", DM_CLASSID, &evProperties_));
+  PetscCall(PetscLogEventRegister("EnergyResidual", DM_CLASSID, &evResidual_));
+  PetscCall(PetscLogEventRegister("EnergyAssemble", DM_CLASSID, &evAssemble_));
+  PetscCall(PetscLogEventRegister("EnergyClose", DM_CLASSID, &evClose_));
+  PetscCall(PetscLogEventRegister("EnergyTransport", DM_CLASSID, &evTransport_));
+  PetscCall(PetscLogEventRegister("EnergyMushyDrag", DM_CLASSID, &evMushy_));
   for (Vec *v : {&T_, &E_, &Eold_, &H_, &C_, &Ecur_, &k_, &q_, &alpha_, &r_, &rhs_, &Tstar_, &fl_, &F_, &slope_, &TF_, &Tbase_, &Fbase_, &Xstart_}) PetscCall(DMCreateGlobalVector(dm_, v));
   for (Vec *v : {&TLocal_, &kLocal_, &alphaLocal_}) PetscCall(DMCreateLocalVector(dm_, v));
   PetscCall(PetscObjectSetName((PetscObject)T_, "energy_temperature"));
@@ -178,23 +214,27 @@ PetscErrorCode Energy::SetUp() {
   PetscCall(KSPSetOptionsPrefix(ksp_, "energy_"));
   PetscCall(KSPSetOperators(ksp_, A_, A_));
   PetscCall(KSPSetType(ksp_, KSPCG));
-  PetscCall(KSPSetTolerances(ksp_, 1e-10, 1e-300, PETSC_DEFAULT, 500));  // of a correction: the Newton-like iteration does the rest
+  // Of a correction, in the unpreconditioned norm: rtol 1e-10, and an absolute tolerance each solve sets from
+  // -energy_tolerance (Step), so that a solve goes as far as the enthalpy iteration needs and no further.
+  PetscCall(KSPSetTolerances(ksp_, 1e-10, 0, PETSC_DEFAULT, 500));
+  PetscCall(KSPSetNormType(ksp_, KSP_NORM_UNPRECONDITIONED));
   PC pcx;
   PetscCall(KSPGetPC(ksp_, &pcx));
   if (pfmg_) PetscCall(PCSetType(pcx, PCPFMG));
+  else if (jacobi_) PetscCall(PCSetType(pcx, PCJACOBI));
   else {
     PetscCall(PCSetType(pcx, PCHYPRE));
     PetscCall(PCHYPRESetType(pcx, "boomeramg"));
   }
   PetscCall(KSPSetFromOptions(ksp_));
-  // The explicit diffusion limit, printed (the scheme is implicit): min rho cp / (2 k sum 1/h^2) over both phases.
-  const PetscReal *h = grid_->Spacing();
-  const PetscReal  s = 1 / (h[0] * h[0]) + 1 / (h[1] * h[1]) + 1 / (h[2] * h[2]);
-  explicitLimit_     = PETSC_MAX_REAL;
-  for (const ThermalMaterial *m : {&metal_, &gas_}) {
-    PetscReal kmax = *std::max_element(m->k.v.begin(), m->k.v.end()), cmin = m->cp.Min();
-    explicitLimit_ = std::min(explicitLimit_, m->density * cmin / (2 * kmax * s));
+  if (pfmg_) {  // hypre's structured matrix serves hypre's structured preconditioners alone (no diagonal, no rows)
+    PCType type;
+    PetscCall(PCGetType(pcx, &type));
+    const std::string t = type ? type : "";
+    if (t != PCPFMG && t != PCSMG && t != PCSYSPFMG && t != PCNONE)
+      VofdemInputError(comm_, "option -energy_pc_type: %s cannot take the hypre structured matrix that -energy_pc pfmg builds; give -energy_pc jacobi or boomeramg instead", t.c_str());
   }
+  PetscCall(KSPGetTolerances(ksp_, nullptr, &kspAtol_, nullptr, nullptr));  // the user's -energy_ksp_atol, a floor
   PetscFunctionReturn(0);
 }
 
@@ -246,8 +286,9 @@ PetscErrorCode Energy::View(PetscViewer viewer) const {
   PetscCall(PetscViewerASCIIPrintf(viewer, "energy: metal %s (rho %g kg/m^3, T_s %g K, T_l %g K, L %g J/kg, melt law %s), gas %s (rho %g kg/m^3); %s, implicit, enthalpy iteration to %g; CG + %s (prefix energy_)\n",
                                    metal_.path.c_str(), (double)metal_.density, (double)metal_.solidus, (double)metal_.liquidus, (double)metal_.latentHeat,
                                    metal_.melt == MeltLaw::Erf ? "erf" : "linear", gas_.path.c_str(), (double)gas_.density, bdf2_ ? "BDF2" : "backward Euler",
-                                   (double)tolerance_, pfmg_ ? "hypre PFMG" : "hypre BoomerAMG"));
-  PetscCall(PetscViewerASCIIPrintf(viewer, "energy: box faces %s; explicit diffusion limit %g s (not binding: the scheme is implicit)\n", faces.c_str(), (double)explicitLimit_));
+                                   (double)tolerance_, pfmg_ ? "hypre PFMG" : jacobi_ ? "Jacobi" : "hypre BoomerAMG"));
+  PetscCall(PetscViewerASCIIPrintf(viewer, "energy: box faces %s; explicit diffusion limit %g s (not binding: the scheme is implicit); longest step expected %g s (%.3g limits)\n", faces.c_str(),
+                                   (double)explicitLimit_, (double)stepEstimate_, (double)(stepEstimate_ / explicitLimit_)));
   PetscCall(laser_.View(viewer));
   PetscFunctionReturn(0);
 }

@@ -33,7 +33,15 @@ PetscErrorCode EnergyModule::Configure(ModuleSet &modules, const RunContext &run
       VofdemInputError(run.comm, "option -energy_gas_density: %g kg/m^3 (%s) differs from the flow's -flow_density %g kg/m^3; give them one value", (double)rg,
                        energy_.Gas().path.c_str(), (double)flow->Get().ReferenceDensity());
     energy_.AttachInterface(flow->Get().Staggered(), [&v]() { return v.Fraction(); });
-    v.AddSweepObserver([this, &v](int d, PetscReal dt, Vec u, Vec phaseFlux) { return energy_.TransportSweep(d, dt, u, phaseFlux, v.FullAtStart()); });
+    // The energy's sweeps run inside the interface's; -log_view counts them in the energy's stage.
+    v.AddSweepObserver([this, &v](int d, PetscReal dt, Vec u, Vec phaseFlux) -> PetscErrorCode {
+      PetscFunctionBeginUser;
+      if (logStage_ < 0) PetscCall(PetscLogStageGetId(LogStage(), &logStage_));
+      if (logStage_ >= 0) PetscCall(PetscLogStagePush(logStage_));
+      PetscCall(energy_.TransportSweep(d, dt, u, phaseFlux, v.FullAtStart()));
+      if (logStage_ >= 0) PetscCall(PetscLogStagePop());
+      PetscFunctionReturn(0);
+    });
     // The surface forces take the computed temperature: sigma(T) and Marangoni (docs/physics.md F2).
     v.SetTemperature([this]() { return energy_.Temperature(); }, [this]() { return liquid_; });
     flow_ = flow, vof_ = vof;

@@ -24,6 +24,7 @@ PetscErrorCode Energy::MushyDrag(Vec rate[3], Vec liquid) {
   PetscInt             s[3], n[3];
 
   PetscFunctionBeginUser;
+  PetscCall(PetscLogEventBegin(evMushy_, 0, 0, 0, 0));
   if (!sLocal_) {
     PetscCall(DMCreateLocalVector(sg.Cells(), &sLocal_));
     PetscCall(VecDuplicate(sLocal_, &rhoLocal_));
@@ -90,6 +91,7 @@ PetscErrorCode Energy::MushyDrag(Vec rate[3], Vec liquid) {
   }
   PetscCall(sg.RestoreLocal(3, rhoLocal_, &R));
   PetscCall(sg.RestoreLocal(3, sLocal_, &S));
+  PetscCall(PetscLogEventEnd(evMushy_, 0, 0, 0, 0));
   PetscFunctionReturn(0);
 }
 

@@ -15,6 +15,8 @@ namespace vofdem {
 namespace {
 constexpr PetscReal kStefanBoltzmann = 5.670374419e-8;  // W/(m^2 K^4)
 
+inline PetscReal Pow4(PetscReal t) { return (t * t) * (t * t); }
+
 struct Box {
   PetscInt s[3], m[3];
 };
@@ -54,6 +56,7 @@ PetscErrorCode Energy::Properties() {
   const Box     b = Owned(dm_);
 
   PetscFunctionBeginUser;
+  PetscCall(PetscLogEventBegin(evProperties_, 0, 0, 0, 0));
   PetscCall(DMDAVecGetArrayRead(dm_, T_, &T));
   PetscCall(DMDAVecGetArrayRead(dm_, F_, &F));
   PetscCall(DMDAVecGetArrayRead(dm_, alpha_, &al));
@@ -83,6 +86,7 @@ PetscErrorCode Energy::Properties() {
   PetscCall(DMDAVecRestoreArrayRead(dm_, T_, &T));
   PetscCall(DMGlobalToLocal(dm_, k_, INSERT_VALUES, kLocal_));
   PetscCall(DMGlobalToLocal(dm_, T_, INSERT_VALUES, TLocal_));
+  PetscCall(PetscLogEventEnd(evProperties_, 0, 0, 0, 0));
   PetscFunctionReturn(0);
 }
 
@@ -99,9 +103,13 @@ PetscErrorCode Energy::LaserSource(PetscReal t) {
   PetscReal        sums[2] = {0, 0};  // beam into the box, absorbed
 
   PetscFunctionBeginUser;
+  PetscCall(PetscLogEventBegin(evLaser_, 0, 0, 0, 0));
   PetscCall(VecSet(q_, 0));
   last_.beam = last_.absorbed = 0;
-  if (!laser_.On() || laser_.Power(t) == 0) PetscFunctionReturn(0);
+  if (!laser_.On() || laser_.Power(t) == 0) {
+    PetscCall(PetscLogEventEnd(evLaser_, 0, 0, 0, 0));
+    PetscFunctionReturn(0);
+  }
   const PetscInt        n = b.m[0] * b.m[1];
   std::vector<PetscReal> slab(n, 0), above(n, 0), total(n, 0), power(n, 0);
   PetscCall(DMDAVecGetArrayRead(dm_, alphaLocal_, &al));
@@ -151,6 +159,7 @@ PetscErrorCode Energy::LaserSource(PetscReal t) {
   PetscCall(DMDAVecRestoreArrayRead(dm_, alphaLocal_, &al));
   PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, sums, 2, MPIU_REAL, MPI_SUM, comm_));
   last_.beam = sums[0], last_.absorbed = sums[1];
+  PetscCall(PetscLogEventEnd(evLaser_, 0, 0, 0, 0));
   PetscFunctionReturn(0);
 }
 
@@ -186,6 +195,7 @@ PetscErrorCode Energy::Assemble(PetscReal a, PetscReal dt) {
   PetscScalar   ***T, ***k, ***al, ***C;
 
   PetscFunctionBeginUser;
+  PetscCall(PetscLogEventBegin(evAssemble_, 0, 0, 0, 0));
   for (int d = 0; d < 3; ++d) periodic[d] = grid_->Periodic(d);
   PetscCall(MatZeroEntries(A_));
   PetscCall(DMDAVecGetArrayRead(dm_, TLocal_, &T));
@@ -234,6 +244,7 @@ PetscErrorCode Energy::Assemble(PetscReal a, PetscReal dt) {
   PetscCall(DMDAVecRestoreArrayRead(dm_, TLocal_, &T));
   PetscCall(MatAssemblyBegin(A_, MAT_FINAL_ASSEMBLY));
   PetscCall(MatAssemblyEnd(A_, MAT_FINAL_ASSEMBLY));
+  PetscCall(PetscLogEventEnd(evAssemble_, 0, 0, 0, 0));
   PetscFunctionReturn(0);
 }
 
@@ -249,6 +260,7 @@ PetscErrorCode Energy::Residual(PetscReal a, PetscReal dt, PetscReal *maxResidua
   PetscReal        rates[3] = {0, 0, 0}, rmax = 0;  // box faces, losses, residual sum (J)
 
   PetscFunctionBeginUser;
+  PetscCall(PetscLogEventBegin(evResidual_, 0, 0, 0, 0));
   for (int d = 0; d < 3; ++d) periodic[d] = grid_->Periodic(d);
   PetscCall(DMDAVecGetArrayRead(dm_, TLocal_, &T));
   PetscCall(DMDAVecGetArrayRead(dm_, kLocal_, &k));
@@ -273,7 +285,7 @@ PetscErrorCode Energy::Residual(PetscReal a, PetscReal dt, PetscReal *maxResidua
               if (f.type == EnergyBoundary::Temperature) flux = 2 * kc * (f.value - t) / h[d];
               else if (f.type == EnergyBoundary::Flux) flux = f.value;
               else if (f.type == EnergyBoundary::Convective)
-                flux = f.value * (f.ambient - t) + f.emissivity * kStefanBoltzmann * (std::pow(f.ambient, 4) - std::pow(t, 4));
+                flux = f.value * (f.ambient - t) + f.emissivity * kStefanBoltzmann * (Pow4(f.ambient) - Pow4(t));
               boundary += flux / h[d];
               continue;
             }
@@ -284,7 +296,7 @@ PetscErrorCode Energy::Residual(PetscReal a, PetscReal dt, PetscReal *maxResidua
         if (interfaceConvection_ > 0 || (interfaceRadiation_ && metal_.emissivity > 0)) {
           const PetscReal ds = InterfaceDensity(const_cast<PetscScalar ***>(al), x, y, z, n, h, periodic);
           const PetscReal e  = interfaceRadiation_ ? metal_.emissivity : 0;
-          loss               = ds * (interfaceConvection_ * (t - ambient_) + e * kStefanBoltzmann * (std::pow(t, 4) - std::pow(ambient_, 4)));
+          loss               = ds * (interfaceConvection_ * (t - ambient_) + e * kStefanBoltzmann * (Pow4(t) - Pow4(ambient_)));
         }
         R += boundary - loss;
         rates[0] += boundary * V, rates[1] += loss * V;
@@ -304,6 +316,7 @@ PetscErrorCode Energy::Residual(PetscReal a, PetscReal dt, PetscReal *maxResidua
   PetscCallMPI(MPI_Allreduce(&rmax, maxResidual, 1, MPIU_REAL, MPI_MAX, comm_));
   last_.boundaryRate = rates[0], last_.lossRate = rates[1], last_.balance = rates[2];
   last_.inputRate    = rates[0] - rates[1] + last_.absorbed;
+  PetscCall(PetscLogEventEnd(evResidual_, 0, 0, 0, 0));
   PetscFunctionReturn(0);
 }
 
@@ -336,6 +349,43 @@ PetscErrorCode Energy::Update(PetscReal lambda) {
   PetscFunctionReturn(0);
 }
 
+// The conservative close (docs/physics.md F7 b): whatever residual the iteration left, each cell's energy becomes
+// E = E(T^k, f^k) - r/a = (H + dt R(T^k))/a, the balance with the fluxes, losses and deposit of the last iterate
+// (Residual) exactly, so that the energy moved between cells and through the box's faces is conserved to round-off
+// at any -energy_tolerance. T and f take the change dE = -r/a as one more update with the apparent capacity C
+// (dT = dE/C, f moved with its slope, as in Update): they match E to second order in dE, and the next step's
+// iteration starts from that (its H is this E). The tolerance bounds T's error alone.
+PetscErrorCode Energy::CloseBalance(PetscReal a) {
+  const Box     bx = Owned(dm_);
+  PetscScalar ***T, ***F, ***E, ***r, ***C, ***S;
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscLogEventBegin(evClose_, 0, 0, 0, 0));
+  PetscCall(DMDAVecGetArray(dm_, T_, &T));
+  PetscCall(DMDAVecGetArray(dm_, F_, &F));
+  PetscCall(DMDAVecGetArray(dm_, Ecur_, &E));
+  PetscCall(DMDAVecGetArrayRead(dm_, r_, &r));
+  PetscCall(DMDAVecGetArrayRead(dm_, C_, &C));
+  PetscCall(DMDAVecGetArrayRead(dm_, slope_, &S));
+  for (PetscInt z = bx.s[2]; z < bx.s[2] + bx.m[2]; ++z)
+    for (PetscInt y = bx.s[1]; y < bx.s[1] + bx.m[1]; ++y)
+      for (PetscInt x = bx.s[0]; x < bx.s[0] + bx.m[0]; ++x) {
+        if (r[z][y][x] == 0) continue;
+        const PetscReal dE = -r[z][y][x] / a, dT = dE / C[z][y][x];
+        E[z][y][x] += dE;
+        T[z][y][x] += dT;
+        if (S[z][y][x] > 0) F[z][y][x] = std::min((PetscReal)1, std::max((PetscReal)0, F[z][y][x] + S[z][y][x] * dT));
+      }
+  PetscCall(DMDAVecRestoreArrayRead(dm_, slope_, &S));
+  PetscCall(DMDAVecRestoreArrayRead(dm_, C_, &C));
+  PetscCall(DMDAVecRestoreArrayRead(dm_, r_, &r));
+  PetscCall(DMDAVecRestoreArray(dm_, Ecur_, &E));
+  PetscCall(DMDAVecRestoreArray(dm_, F_, &F));
+  PetscCall(DMDAVecRestoreArray(dm_, T_, &T));
+  PetscCall(PetscLogEventEnd(evClose_, 0, 0, 0, 0));
+  PetscFunctionReturn(0);
+}
+
 // One step from time to time + dt: BDF2 a E^{n+1} - b E^n + c E^{n-1} = dt R(T^{n+1}) with the variable-step
 // coefficients (w = dt/dt_old) a = (1 + 2w)/(1 + w), b = 1 + w, c = w^2/(1 + w); backward Euler (a = b = 1,
 // c = 0) on the first step or with -energy_time_scheme euler.
@@ -357,6 +407,9 @@ PetscErrorCode Energy::Step(PetscReal time, PetscReal dt) {
     PetscInt its;
     PetscCall(Assemble(a, dt));
     PetscCall(KSPSetOperators(ksp_, A_, A_));
+    // The preconditioner of the step's first Jacobian serves its later iterations (-energy_pc_rebuild step):
+    // the operator changes there only through the mushy cells' slopes and k(T).
+    if (pcRebuild_ == PcRebuild::Step) PetscCall(KSPSetReusePreconditioner(ksp_, it > 0 ? PETSC_TRUE : PETSC_FALSE));
     // J d = -(r + a alpha rho_m L F' (T^k - T_F))/dt: the latent share linearised about T_F (LatentSlope)
     {
       const Box    bx = Owned(dm_);
@@ -380,6 +433,10 @@ PetscErrorCode Energy::Step(PetscReal time, PetscReal dt) {
       PetscCall(DMDAVecRestoreArray(dm_, rhs_, &rhs));
     }
     PetscCall(VecSet(Tstar_, 0));
+    // The correction's system is the balance per time: a linear residual of e (W/m^3) leaves dt e in a cell's
+    // balance, so a 2-norm below a tenth of the tolerance per dt leaves every cell well inside it (the rest is the
+    // linearisation's error, which the next iteration takes).
+    PetscCall(KSPSetTolerances(ksp_, PETSC_DEFAULT, std::max(kspAtol_, 0.1 * tolerance_ * energyScale_ / dt), PETSC_DEFAULT, PETSC_DEFAULT));
     PetscCall(KSPSolve(ksp_, rhs_, Tstar_));
     PetscCall(KSPGetIterationNumber(ksp_, &its));
     linear += its;
@@ -399,6 +456,7 @@ PetscErrorCode Energy::Step(PetscReal time, PetscReal dt) {
   if (rmax > tolerance_ * energyScale_)
     VofdemInputError(comm_, "option -energy_max_iterations: the enthalpy balance did not close in %d iterations at t = %g s (largest residual %.3e of the tolerance %.3e J/m^3); lower -dt or raise -energy_max_iterations",
                      (int)maxIterations_, (double)(time + dt), (double)rmax, (double)(tolerance_ * energyScale_));
+  PetscCall(CloseBalance(a));
   // The account: a W^{n+1} - b W^n + c W^{n-1} = dt (input at n+1), the integrated input the scheme itself implies.
   PetscReal total;
   PetscCall(VecSum(Ecur_, &total));

@@ -22,6 +22,19 @@ namespace vofdem {
 PetscReal Energy::CellTemperature(PetscReal E, PetscReal a, PetscReal guess) const {
   auto f  = [&](PetscReal T) { return CellEnergy(a, T, metal_.MeltFraction(T)) - E; };
   auto df = [&](PetscReal T) { return CellSensibleCapacity(a, T) + a * metal_.density * metal_.latentHeat * metal_.MeltSlope(T); };
+  {  // Newton from the guess first: away from the ramp's ends it closes in a step or two
+    PetscReal T = guess, fT = f(T);
+    for (int it = 0; it < 4 && fT != 0; ++it) {
+      const PetscReal d = df(T);
+      if (!(d > 0)) break;
+      const PetscReal n = T - fT / d, fn = f(n);
+      if (!(std::fabs(fn) < std::fabs(fT))) break;  // not converging: bracket below
+      if (n == T || std::fabs(n - T) <= 4 * PETSC_MACHINE_EPSILON * std::fabs(T)) return n;
+      T = n, fT = fn;
+    }
+    if (fT == 0) return T;
+    guess = T;
+  }
   PetscReal lo = guess, hi = guess, step = 1e-6 * std::max((PetscReal)1, std::fabs(guess));
   while (f(lo) > 0) lo -= step, step *= 2;
   step = 1e-6 * std::max((PetscReal)1, std::fabs(guess));
@@ -47,6 +60,7 @@ PetscErrorCode Energy::TransportSweep(int d, PetscReal dt, Vec u, Vec phaseFlux,
   PetscInt             s[3], n[3];
 
   PetscFunctionBeginUser;
+  PetscCall(PetscLogEventBegin(evTransport_, 0, 0, 0, 0));
   if (!Tsg_) {
     PetscCall(DMCreateGlobalVector(sg.Cells(), &Tsg_));
     PetscCall(VecDuplicate(Tsg_, &Fsg_));
@@ -118,6 +132,7 @@ PetscErrorCode Energy::TransportSweep(int d, PetscReal dt, Vec u, Vec phaseFlux,
   const bool      open = !grid_->Periodic(d);
   const PetscReal volume = grid_->Spacing()[0] * grid_->Spacing()[1] * grid_->Spacing()[2];
   PetscReal       entered = 0;
+  touched_.assign((size_t)n[0] * n[1] * n[2], 0);  // cells whose E (and alpha) this sweep changed: T, f follow for them alone
   for (PetscInt qb = s[b]; qb < s[b] + n[b]; ++qb)
     for (PetscInt qa = s[a]; qa < s[a] + n[a]; ++qa) {
       PetscInt lo[3], hi[3];
@@ -127,6 +142,12 @@ PetscErrorCode Energy::TransportSweep(int d, PetscReal dt, Vec u, Vec phaseFlux,
       for (PetscInt q = s[d]; q < s[d] + n[d]; ++q) {
         lo[d] = q, hi[d] = q + 1;
         const PetscReal above = flux(hi);
+        if (uf.at(hi) == 0 && pf.at(hi) == 0 && uf.at(lo) == 0 && pf.at(lo) == 0) {  // no flux, no dilatation: E, alpha unchanged
+          if (open && q + 1 == N) entered -= above * volume;
+          below = above;
+          continue;
+        }
+        touched_[(size_t)((lo[0] - s[0]) + n[0] * ((lo[1] - s[1]) + n[1] * (lo[2] - s[2])))] = 1;
         E.at(lo) += -(above - below) + r * (uf.at(hi) - uf.at(lo)) * X.at(lo);
         if (open && q + 1 == N) entered -= above * volume;
         below = above;
@@ -152,6 +173,7 @@ PetscErrorCode Energy::TransportSweep(int d, PetscReal dt, Vec u, Vec phaseFlux,
     for (PetscInt k = s[2]; k < s[2] + n[2]; ++k)
       for (PetscInt j = s[1]; j < s[1] + n[1]; ++j)
         for (PetscInt i = s[0]; i < s[0] + n[0]; ++i) {
+          if (!touched_[(size_t)((i - s[0]) + n[0] * ((j - s[1]) + n[1] * (k - s[2])))]) continue;
           Tg[k][j][i] = CellTemperature(Eg[k][j][i], al[k][j][i], Tg[k][j][i]);  // alpha as the sweep left it (E'' was moved with it)
           Fg[k][j][i]       = metal_.MeltFraction(Tg[k][j][i]);
         }
@@ -160,6 +182,7 @@ PetscErrorCode Energy::TransportSweep(int d, PetscReal dt, Vec u, Vec phaseFlux,
     PetscCall(DMDAVecRestoreArray(dm_, F_, &Fg));
     PetscCall(DMDAVecRestoreArray(dm_, T_, &Tg));
   }
+  PetscCall(PetscLogEventEnd(evTransport_, 0, 0, 0, 0));
   PetscFunctionReturn(0);
 }
 

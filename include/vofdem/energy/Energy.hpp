@@ -103,8 +103,9 @@ private:
   PetscErrorCode LaserSource(PetscReal time);       // q_ (W/m^3), absorbed_, beam_
   PetscErrorCode Assemble(PetscReal a, PetscReal dt);  // matrix and rhs at the current iterate
   PetscErrorCode Residual(PetscReal a, PetscReal dt, PetscReal *maxResidual);  // r = a E - H - dt R(T)
-  PetscErrorCode Update(PetscReal lambda);
-  PetscReal      CellTemperature(PetscReal E, PetscReal alpha, PetscReal guess) const;  // T with E(T, f_l(T)) = E         // the enthalpy update with a fraction lambda of the correction
+  PetscErrorCode Update(PetscReal lambda);          // the enthalpy update with a fraction lambda of the correction
+  PetscErrorCode CloseBalance(PetscReal a);         // E = (H + dt R)/a exactly from the last Residual; T, f from E
+  PetscReal      CellTemperature(PetscReal E, PetscReal alpha, PetscReal guess) const;  // T with E(T, f_l(T)) = E
   XdmfEntry      OutputEntry(PetscInt step, PetscReal time) const;
   PetscErrorCode PoolExtent(PetscReal iso, PetscReal ext[3]);
   PetscReal      CellEnergy(PetscReal alpha, PetscReal T, PetscReal f) const;
@@ -126,13 +127,15 @@ private:
   PetscReal       ambient_ = 300, interfaceConvection_ = 0;
   PetscBool       interfaceRadiation_ = PETSC_TRUE;
   bool            bdf2_ = true;
-  PetscReal       tolerance_ = 1e-10;  // of a cell's residual, relative to rho_m (cp_m (T_l - T_s) + L)
+  PetscReal       tolerance_ = 1e-6;  // of a cell's residual, relative to rho_m (cp_m (T_l - T_s) + L)
   PetscInt        maxIterations_ = 50;
+  PetscReal       kspAtol_ = 0;  // -energy_ksp_atol: the floor of each solve's absolute tolerance
+  enum class PcRebuild { Iteration, Step } pcRebuild_ = PcRebuild::Step;  // -energy_pc_rebuild
   PetscReal       boilingMargin_ = 0, poolIsotherm_ = -1;
   PetscReal       mushyConstant_ = 1e8, mushyEpsilon_ = 1e-3, freezeAlpha_ = 0.5;  // the Darcy term (MushyDrag)
   PetscBool       holdSolid_ = PETSC_TRUE;
-  bool            pfmg_ = true;
-  PetscReal       explicitLimit_ = 0, energyScale_ = 1;
+  bool            pfmg_ = true, jacobi_ = false;
+  PetscReal       explicitLimit_ = 0, energyScale_ = 1, stepEstimate_ = 0;  // s, J/m^3, s (the longest step expected: -energy_pc auto)
 
   DM        dm_ = nullptr;
   Vec       T_ = nullptr, E_ = nullptr, Eold_ = nullptr, H_ = nullptr, C_ = nullptr, Ecur_ = nullptr, k_ = nullptr, q_ = nullptr, alpha_ = nullptr;
@@ -150,6 +153,8 @@ private:
 
   const StaggeredGrid *sg_ = nullptr;  // with a moving interface
   std::function<Vec()> interfaceAlpha_;  // the interface's alpha (once it is set up)
+  std::vector<char>    touched_;  // TransportSweep: the owned cells a sweep changed
+  PetscLogEvent        evLaser_ = 0, evProperties_ = 0, evResidual_ = 0, evAssemble_ = 0, evClose_ = 0, evTransport_ = 0, evMushy_ = 0;  // -log_view
   Vec                  Tsg_ = nullptr, TsgLocal_ = nullptr, Fsg_ = nullptr, FsgLocal_ = nullptr, AsgLocal_ = nullptr, uLocal_[3] = {nullptr, nullptr, nullptr},
                        fluxLocal_[3] = {nullptr, nullptr, nullptr}, Xstart_ = nullptr;
   bool                 swept_ = false;

@@ -38,6 +38,7 @@ public:
 private:
   Energy    energy_;
   Module   *flow_ = nullptr, *vof_ = nullptr;  // with a moving interface
+  PetscLogStage logStage_ = -1;                 // the sweeps' share of the energy is logged in its own stage
   PetscReal time_ = 0;
   // With a flow: the Darcy rates per face (Flow::SetFaceDamping) and the cells' liquid share (Vof::SetTemperature),
   // from the state after each step (Energy::MushyDrag).
