@@ -154,21 +154,11 @@ PetscErrorCode Energy::SetFromOptions(const Grid &grid) {
   }
   // auto: the correction's system is I + (dt/C) div k grad, within about 1 + 2 dt/dt_explicit of the identity
   // after Jacobi scaling; CG with Jacobi then needs a few iterations and no set-up, which beats multigrid's
-  // set-up each step up to about 20 limits (docs/modules/energy.md). The longest step expected: the laser's
-  // limit, or -dt; without either (a flow sets it) multigrid.
-  stepEstimate_ = laser_.StepLimit() > 0 ? laser_.StepLimit() : 0;
-  {
-    PetscReal dt  = 0;
-    PetscBool set = PETSC_FALSE;
-    PetscCall(PetscOptionsGetReal(nullptr, nullptr, "-dt", &dt, &set));
-    if (set && dt > 0) stepEstimate_ = stepEstimate_ > 0 ? std::min(stepEstimate_, dt) : dt;
-  }
-  if (pc[0] == "auto") {
-    const bool oneAcross = grid.Cells()[0] == 1 || grid.Cells()[1] == 1;  // docs/petsc-notes.md: hyprestruct with one cell across x or y
-    pc = {stepEstimate_ > 0 && stepEstimate_ < 20 * explicitLimit_ ? "jacobi" : oneAcross ? "boomeramg" : "pfmg"};
-  }
-  pfmg_   = pc[0] == "pfmg";
-  jacobi_ = pc[0] == "jacobi";
+  // set-up each step up to about 20 explicit limits (docs/modules/energy.md). Chosen step by step from the step.
+  const bool oneAcross = grid.Cells()[0] == 1 || grid.Cells()[1] == 1;  // docs/petsc-notes.md: hyprestruct with one cell across x or y
+  autoPc_   = pc[0] == "auto";
+  jacobiPc_ = pc[0] == "jacobi";
+  pfmg_     = pc[0] == "pfmg" || (autoPc_ && !oneAcross);
   if (pfmg_ && (grid.Cells()[0] == 1 || grid.Cells()[1] == 1))
     VofdemInputError(comm_, "option -energy_pc: pfmg cannot take one cell across x or y (docs/petsc-notes.md); use boomeramg");
   box_ = boxLo || boxHi;
@@ -207,35 +197,52 @@ PetscErrorCode Energy::SetUp() {
   PetscCall(DMDAGetInfo(dm_, nullptr, nullptr, nullptr, nullptr, &px, &py, &pz, nullptr, nullptr, nullptr, nullptr, nullptr, nullptr));
   const int xy = rank % (px * py), zr = rank / (px * py);
   PetscCallMPI(MPI_Comm_split(comm_, xy, (int)pz - 1 - zr, &column_));
-  // The matrix: hypre's structured type for PFMG (grid/CellMatrix.hpp).
-  PetscCall(CreateCellMatrix(dm_, pfmg_, &A_));
-  PetscCall(MatSetOption(A_, MAT_NEW_NONZERO_ALLOCATION_ERR, PETSC_FALSE));
-  PetscCall(KSPCreate(comm_, &ksp_));
-  PetscCall(KSPSetOptionsPrefix(ksp_, "energy_"));
-  PetscCall(KSPSetOperators(ksp_, A_, A_));
-  PetscCall(KSPSetType(ksp_, KSPCG));
+  // The solvers: multigrid (hypre PFMG on its structured matrix, grid/CellMatrix.hpp, or BoomerAMG) and CG with
+  // Jacobi on an AIJ matrix; -energy_pc auto keeps both and takes one per step (SolverFor).
+  if (!jacobiPc_) PetscCall(CreateSolver(kMultigrid, pfmg_ ? "pfmg" : "boomeramg"));
+  if (jacobiPc_ || autoPc_) PetscCall(CreateSolver(kJacobi, "jacobi"));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode Energy::CreateSolver(int slot, const std::string &pc) {
+  Mat &A   = A_[slot];
+  KSP &ksp = ksp_[slot];
+  PC   pcx;
+
+  PetscFunctionBeginUser;
+  PetscCall(CreateCellMatrix(dm_, pc == "pfmg", &A));
+  PetscCall(MatSetOption(A, MAT_NEW_NONZERO_ALLOCATION_ERR, PETSC_FALSE));
+  PetscCall(KSPCreate(comm_, &ksp));
+  PetscCall(KSPSetOptionsPrefix(ksp, "energy_"));
+  PetscCall(KSPSetOperators(ksp, A, A));
+  PetscCall(KSPSetType(ksp, KSPCG));
   // Of a correction, in the unpreconditioned norm: rtol 1e-10, and an absolute tolerance each solve sets from
   // -energy_tolerance (Step), so that a solve goes as far as the enthalpy iteration needs and no further.
-  PetscCall(KSPSetTolerances(ksp_, 1e-10, 0, PETSC_DEFAULT, 500));
-  PetscCall(KSPSetNormType(ksp_, KSP_NORM_UNPRECONDITIONED));
-  PC pcx;
-  PetscCall(KSPGetPC(ksp_, &pcx));
-  if (pfmg_) PetscCall(PCSetType(pcx, PCPFMG));
-  else if (jacobi_) PetscCall(PCSetType(pcx, PCJACOBI));
+  PetscCall(KSPSetTolerances(ksp, 1e-10, 0, PETSC_DEFAULT, 500));
+  PetscCall(KSPSetNormType(ksp, KSP_NORM_UNPRECONDITIONED));
+  PetscCall(KSPGetPC(ksp, &pcx));
+  if (pc == "pfmg") PetscCall(PCSetType(pcx, PCPFMG));
+  else if (pc == "jacobi") PetscCall(PCSetType(pcx, PCJACOBI));
   else {
     PetscCall(PCSetType(pcx, PCHYPRE));
     PetscCall(PCHYPRESetType(pcx, "boomeramg"));
   }
-  PetscCall(KSPSetFromOptions(ksp_));
-  if (pfmg_) {  // hypre's structured matrix serves hypre's structured preconditioners alone (no diagonal, no rows)
+  PetscCall(KSPSetFromOptions(ksp));
+  if (pc == "pfmg") {  // hypre's structured matrix serves hypre's structured preconditioners alone (no diagonal, no rows)
     PCType type;
     PetscCall(PCGetType(pcx, &type));
     const std::string t = type ? type : "";
     if (t != PCPFMG && t != PCSMG && t != PCSYSPFMG && t != PCNONE)
-      VofdemInputError(comm_, "option -energy_pc_type: %s cannot take the hypre structured matrix that -energy_pc pfmg builds; give -energy_pc jacobi or boomeramg instead", t.c_str());
+      VofdemInputError(comm_, "option -energy_pc_type: %s cannot take the hypre structured matrix that -energy_pc pfmg (or auto) builds; give -energy_pc jacobi or boomeramg instead", t.c_str());
   }
-  PetscCall(KSPGetTolerances(ksp_, nullptr, &kspAtol_, nullptr, nullptr));  // the user's -energy_ksp_atol, a floor
+  PetscCall(KSPGetTolerances(ksp, nullptr, &kspAtol_, nullptr, nullptr));  // the user's -energy_ksp_atol, a floor
   PetscFunctionReturn(0);
+}
+
+// The step's solver: Jacobi for short steps (-energy_pc auto, SetFromOptions), multigrid for long ones.
+int Energy::SolverFor(PetscReal dt) const {
+  if (jacobiPc_) return kJacobi;
+  return autoPc_ && dt < 20 * explicitLimit_ ? kJacobi : kMultigrid;
 }
 
 PetscErrorCode Energy::SetInitial() {
@@ -280,15 +287,17 @@ PetscErrorCode Energy::View(PetscViewer viewer) const {
   static const char *types[] = {"adiabatic", "temperature", "flux", "convective"};
   std::string        faces;
 
+  const std::string multigrid = pfmg_ ? "hypre PFMG" : "hypre BoomerAMG";
+  const std::string solver    = jacobiPc_ ? "Jacobi" : autoPc_ ? "Jacobi while dt < 20 explicit diffusion limits, else " + multigrid : multigrid;
+
   PetscFunctionBeginUser;
   for (int f = 0; f < 6; ++f)
     if (!grid_->Periodic(f / 2)) faces += std::string(f ? ", " : "") + kFaces[f] + " " + types[(int)face_[f].type];
   PetscCall(PetscViewerASCIIPrintf(viewer, "energy: metal %s (rho %g kg/m^3, T_s %g K, T_l %g K, L %g J/kg, melt law %s), gas %s (rho %g kg/m^3); %s, implicit, enthalpy iteration to %g; CG + %s (prefix energy_)\n",
                                    metal_.path.c_str(), (double)metal_.density, (double)metal_.solidus, (double)metal_.liquidus, (double)metal_.latentHeat,
                                    metal_.melt == MeltLaw::Erf ? "erf" : "linear", gas_.path.c_str(), (double)gas_.density, bdf2_ ? "BDF2" : "backward Euler",
-                                   (double)tolerance_, pfmg_ ? "hypre PFMG" : jacobi_ ? "Jacobi" : "hypre BoomerAMG"));
-  PetscCall(PetscViewerASCIIPrintf(viewer, "energy: box faces %s; explicit diffusion limit %g s (not binding: the scheme is implicit); longest step expected %g s (%.3g limits)\n", faces.c_str(),
-                                   (double)explicitLimit_, (double)stepEstimate_, (double)(stepEstimate_ / explicitLimit_)));
+                                   (double)tolerance_, solver.c_str()));
+  PetscCall(PetscViewerASCIIPrintf(viewer, "energy: box faces %s; explicit diffusion limit %g s (not binding: the scheme is implicit)\n", faces.c_str(), (double)explicitLimit_));
   PetscCall(laser_.View(viewer));
   PetscFunctionReturn(0);
 }
@@ -339,8 +348,10 @@ PetscErrorCode Energy::Load(PetscViewer viewer) {
 PetscErrorCode Energy::Destroy() {
   PetscFunctionBeginUser;
   for (Vec *v : {&T_, &E_, &Eold_, &H_, &C_, &Ecur_, &k_, &q_, &alpha_, &r_, &rhs_, &Tstar_, &fl_, &F_, &slope_, &TF_, &Tbase_, &Fbase_, &Xstart_, &TLocal_, &kLocal_, &alphaLocal_, &Tsg_, &Fsg_, &sLocal_, &rhoLocal_, &sGlobal_, &rhoGlobal_, &TsgLocal_, &FsgLocal_, &AsgLocal_, &uLocal_[0], &uLocal_[1], &uLocal_[2], &fluxLocal_[0], &fluxLocal_[1], &fluxLocal_[2]}) PetscCall(VecDestroy(v));
-  PetscCall(MatDestroy(&A_));
-  PetscCall(KSPDestroy(&ksp_));
+  for (int slot = 0; slot < 2; ++slot) {
+    PetscCall(MatDestroy(&A_[slot]));
+    PetscCall(KSPDestroy(&ksp_[slot]));
+  }
   if (column_ != MPI_COMM_NULL) PetscCallMPI(MPI_Comm_free(&column_));
   PetscFunctionReturn(0);
 }

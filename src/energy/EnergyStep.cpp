@@ -57,6 +57,7 @@ PetscErrorCode Energy::Properties() {
 
   PetscFunctionBeginUser;
   PetscCall(PetscLogEventBegin(evProperties_, 0, 0, 0, 0));
+  cacheValid_ = false;  // Residual fills the face conductances of the new state
   PetscCall(DMDAVecGetArrayRead(dm_, T_, &T));
   PetscCall(DMDAVecGetArrayRead(dm_, F_, &F));
   PetscCall(DMDAVecGetArrayRead(dm_, alpha_, &al));
@@ -187,63 +188,97 @@ PetscReal InterfaceDensity(PetscScalar ***al, PetscInt x, PetscInt y, PetscInt z
 //   J d = (a C/dt) d - div(k grad d) + (the slopes of the box faces' and the interfaces' losses) d,
 // solved for the correction d with J d = -r/dt (Residual): in corrections, so that the system's round-off
 // is that of the correction, not of C T/dt (about 1e12 W/m^3 in metal near its melting point).
-PetscErrorCode Energy::Assemble(PetscReal a, PetscReal dt) {
+PetscErrorCode Energy::Assemble(PetscReal a, PetscReal dt, int slot) {
   const Box        b = Owned(dm_);
   const PetscReal *h = grid_->Spacing();
   const PetscInt  *n = grid_->Cells();
   bool             periodic[3];
   PetscScalar   ***T, ***k, ***al, ***C;
+  const bool       losses = interfaceConvection_ > 0 || (interfaceRadiation_ && metal_.emissivity > 0);
+  const PetscReal  ih2[3] = {1 / (h[0] * h[0]), 1 / (h[1] * h[1]), 1 / (h[2] * h[2])};
 
   PetscFunctionBeginUser;
   PetscCall(PetscLogEventBegin(evAssemble_, 0, 0, 0, 0));
   for (int d = 0; d < 3; ++d) periodic[d] = grid_->Periodic(d);
-  PetscCall(MatZeroEntries(A_));
   PetscCall(DMDAVecGetArrayRead(dm_, TLocal_, &T));
   PetscCall(DMDAVecGetArrayRead(dm_, kLocal_, &k));
   PetscCall(DMDAVecGetArrayRead(dm_, alphaLocal_, &al));
   PetscCall(DMDAVecGetArrayRead(dm_, C_, &C));
-  for (PetscInt z = b.s[2]; z < b.s[2] + b.m[2]; ++z)
-    for (PetscInt y = b.s[1]; y < b.s[1] + b.m[1]; ++y)
-      for (PetscInt x = b.s[0]; x < b.s[0] + b.m[0]; ++x) {
-        const PetscReal t = T[z][y][x], kc = k[z][y][x];
-        PetscReal       diag = a * C[z][y][x] / dt;
-        MatStencil      row = {z, y, x, 0}, col[7];
-        PetscScalar     val[7];
-        PetscInt        nc = 1;
-        for (int d = 0; d < 3; ++d)
-          for (int side = 0; side < 2; ++side) {
-            PetscInt nb[3] = {x, y, z};
-            nb[d] += side ? 1 : -1;
-            if (!periodic[d] && (nb[d] < 0 || nb[d] >= n[d])) {  // a box face
-              const EnergyFace &f = face_[2 * d + side];
-              switch (f.type) {
-              case EnergyBoundary::Adiabatic: break;
-              case EnergyBoundary::Flux: break;
-              case EnergyBoundary::Temperature: diag += 2 * kc / (h[d] * h[d]); break;
-              case EnergyBoundary::Convective: diag += (f.value + 4 * f.emissivity * kStefanBoltzmann * t * t * t) / h[d]; break;
-              }
-              continue;
-            }
-            const PetscReal kf = FaceConductivity(kc, k[nb[2]][nb[1]][nb[0]]) / (h[d] * h[d]);
-            diag += kf;
-            col[nc] = {nb[2], nb[1], nb[0], 0}, val[nc] = -kf, ++nc;
+  // One cell's row: the diagonal first, then its neighbours across the faces that are not the box's.
+  const bool cached = cacheValid_;  // Residual at this state left the faces' k/h^2 and the interface densities
+  size_t     c      = 0;
+  auto row = [&](PetscInt x, PetscInt y, PetscInt z, MatStencil col[7], PetscScalar val[7]) {
+    const PetscReal t = T[z][y][x], kc = k[z][y][x];
+    const size_t    cell = c++;
+    PetscReal       diag = a * C[z][y][x] / dt;
+    PetscInt        nc   = 1;
+    for (int d = 0; d < 3; ++d)
+      for (int side = 0; side < 2; ++side) {
+        PetscInt nb[3] = {x, y, z};
+        nb[d] += side ? 1 : -1;
+        if (!periodic[d] && (nb[d] < 0 || nb[d] >= n[d])) {  // a box face
+          const EnergyFace &f = face_[2 * d + side];
+          switch (f.type) {
+          case EnergyBoundary::Adiabatic: break;
+          case EnergyBoundary::Flux: break;
+          case EnergyBoundary::Temperature: diag += 2 * kc / (h[d] * h[d]); break;
+          case EnergyBoundary::Convective: diag += (f.value + 4 * f.emissivity * kStefanBoltzmann * t * t * t) / h[d]; break;
           }
-        if (interfaceConvection_ > 0 || (interfaceRadiation_ && metal_.emissivity > 0)) {
-          const PetscReal ds = InterfaceDensity(const_cast<PetscScalar ***>(al), x, y, z, n, h, periodic);
-          if (ds > 0) {
-            const PetscReal e = interfaceRadiation_ ? metal_.emissivity : 0;
-            diag += ds * (interfaceConvection_ + 4 * e * kStefanBoltzmann * t * t * t);
+          continue;
+        }
+        const PetscReal kf = cached ? faceConductance_[6 * cell + 2 * d + side] : FaceConductivity(kc, k[nb[2]][nb[1]][nb[0]]) * ih2[d];
+        diag += kf;
+        col[nc] = {nb[2], nb[1], nb[0], 0}, val[nc] = -kf, ++nc;
+      }
+    if (losses) {
+      const PetscReal ds = cached ? interfaceDensity_[cell] : InterfaceDensity(const_cast<PetscScalar ***>(al), x, y, z, n, h, periodic);
+      if (ds > 0) {
+        const PetscReal e = interfaceRadiation_ ? metal_.emissivity : 0;
+        diag += ds * (interfaceConvection_ + 4 * e * kStefanBoltzmann * t * t * t);
+      }
+    }
+    col[0] = {z, y, x, 0}, val[0] = diag;
+    return nc;
+  };
+  // In place once the writer knows the rows (grid/AijRowWriter.hpp: AIJ matrices, the same bits), else through
+  // MatSetValuesStencil, recording them; the hypre structured matrix always takes the second way.
+  Mat           A      = A_[slot];
+  AijRowWriter &writer = writer_[slot];
+  const bool    inPlace = writer.Ready();
+  for (int pass = inPlace ? 0 : 1; pass < 2; ++pass) {
+    if (pass == 0) PetscCall(writer.Begin(A));
+    else {
+      PetscCall(MatZeroEntries(A));
+      writer.Reset();
+    }
+    bool fits = true;
+    c         = 0;
+    for (PetscInt z = b.s[2]; z < b.s[2] + b.m[2]; ++z)
+      for (PetscInt y = b.s[1]; y < b.s[1] + b.m[1]; ++y)
+        for (PetscInt x = b.s[0]; x < b.s[0] + b.m[0]; ++x) {
+          MatStencil     col[7];
+          PetscScalar    val[7];
+          const PetscInt nc = row(x, y, z, col, val);
+          if (pass == 0) fits = fits && writer.Put(nc, col, val);
+          else {
+            PetscCall(MatSetValuesStencil(A, 1, col, nc, col, val, INSERT_VALUES));
+            PetscCall(writer.Note(A, dm_, col[0], nc, col));
           }
         }
-        col[0] = row, val[0] = diag;
-        PetscCall(MatSetValuesStencil(A_, 1, &row, nc, col, val, INSERT_VALUES));
-      }
+    if (pass == 0) {
+      bool complete;
+      PetscCall(writer.End(A, &complete));
+      if (fits && complete) break;
+      continue;
+    }
+    PetscCall(MatAssemblyBegin(A, MAT_FINAL_ASSEMBLY));
+    PetscCall(MatAssemblyEnd(A, MAT_FINAL_ASSEMBLY));
+    PetscCall(writer.Finish(A));
+  }
   PetscCall(DMDAVecRestoreArrayRead(dm_, C_, &C));
   PetscCall(DMDAVecRestoreArrayRead(dm_, alphaLocal_, &al));
   PetscCall(DMDAVecRestoreArrayRead(dm_, kLocal_, &k));
   PetscCall(DMDAVecRestoreArrayRead(dm_, TLocal_, &T));
-  PetscCall(MatAssemblyBegin(A_, MAT_FINAL_ASSEMBLY));
-  PetscCall(MatAssemblyEnd(A_, MAT_FINAL_ASSEMBLY));
   PetscCall(PetscLogEventEnd(evAssemble_, 0, 0, 0, 0));
   PetscFunctionReturn(0);
 }
@@ -270,11 +305,17 @@ PetscErrorCode Energy::Residual(PetscReal a, PetscReal dt, PetscReal *maxResidua
   PetscCall(DMDAVecGetArrayRead(dm_, q_, &q));
   PetscCall(DMDAVecGetArray(dm_, r_, &r));
   PetscReal rsum = 0;
+  const PetscReal ih2[3] = {1 / (h[0] * h[0]), 1 / (h[1] * h[1]), 1 / (h[2] * h[2])};
+  const bool      losses = interfaceConvection_ > 0 || (interfaceRadiation_ && metal_.emissivity > 0);
+  const size_t    cells  = (size_t)b.m[0] * b.m[1] * b.m[2];
+  faceConductance_.resize(6 * cells), interfaceDensity_.resize(cells);  // for Assemble at this state
+  size_t c = 0;
   for (PetscInt z = b.s[2]; z < b.s[2] + b.m[2]; ++z)
     for (PetscInt y = b.s[1]; y < b.s[1] + b.m[1]; ++y)
-      for (PetscInt x = b.s[0]; x < b.s[0] + b.m[0]; ++x) {
+      for (PetscInt x = b.s[0]; x < b.s[0] + b.m[0]; ++x, ++c) {
         const PetscReal t = T[z][y][x], kc = k[z][y][x];
         PetscReal       R = q[z][y][x], boundary = 0;
+        PetscReal      *G = &faceConductance_[6 * c];
         for (int d = 0; d < 3; ++d)
           for (int side = 0; side < 2; ++side) {
             PetscInt nb[3] = {x, y, z};
@@ -287,14 +328,17 @@ PetscErrorCode Energy::Residual(PetscReal a, PetscReal dt, PetscReal *maxResidua
               else if (f.type == EnergyBoundary::Convective)
                 flux = f.value * (f.ambient - t) + f.emissivity * kStefanBoltzmann * (Pow4(f.ambient) - Pow4(t));
               boundary += flux / h[d];
+              G[2 * d + side] = 0;
               continue;
             }
             const PetscReal tn = T[nb[2]][nb[1]][nb[0]];
-            R += FaceConductivity(kc, k[nb[2]][nb[1]][nb[0]]) * (tn - t) / (h[d] * h[d]);
+            G[2 * d + side]    = FaceConductivity(kc, k[nb[2]][nb[1]][nb[0]]) * ih2[d];
+            R += G[2 * d + side] * (tn - t);
           }
         PetscReal loss = 0;
-        if (interfaceConvection_ > 0 || (interfaceRadiation_ && metal_.emissivity > 0)) {
-          const PetscReal ds = InterfaceDensity(const_cast<PetscScalar ***>(al), x, y, z, n, h, periodic);
+        interfaceDensity_[c] = 0;
+        if (losses) {
+          const PetscReal ds = interfaceDensity_[c] = InterfaceDensity(const_cast<PetscScalar ***>(al), x, y, z, n, h, periodic);
           const PetscReal e  = interfaceRadiation_ ? metal_.emissivity : 0;
           loss               = ds * (interfaceConvection_ * (t - ambient_) + e * kStefanBoltzmann * (Pow4(t) - Pow4(ambient_)));
         }
@@ -316,6 +360,7 @@ PetscErrorCode Energy::Residual(PetscReal a, PetscReal dt, PetscReal *maxResidua
   PetscCallMPI(MPI_Allreduce(&rmax, maxResidual, 1, MPIU_REAL, MPI_MAX, comm_));
   last_.boundaryRate = rates[0], last_.lossRate = rates[1], last_.balance = rates[2];
   last_.inputRate    = rates[0] - rates[1] + last_.absorbed;
+  cacheValid_        = true;
   PetscCall(PetscLogEventEnd(evResidual_, 0, 0, 0, 0));
   PetscFunctionReturn(0);
 }
@@ -402,14 +447,16 @@ PetscErrorCode Energy::Step(PetscReal time, PetscReal dt) {
   PetscCall(Properties());  // the iteration starts from the state at n
   PetscReal rmax  = 0;
   PetscInt  it    = 0, linear = 0;
+  const int slot  = SolverFor(dt);
+  KSP       ksp   = ksp_[slot];
   PetscCall(Residual(a, dt, &rmax));
   while (rmax > tolerance_ * energyScale_ && it < maxIterations_) {
     PetscInt its;
-    PetscCall(Assemble(a, dt));
-    PetscCall(KSPSetOperators(ksp_, A_, A_));
+    PetscCall(Assemble(a, dt, slot));
+    PetscCall(KSPSetOperators(ksp, A_[slot], A_[slot]));
     // The preconditioner of the step's first Jacobian serves its later iterations (-energy_pc_rebuild step):
     // the operator changes there only through the mushy cells' slopes and k(T).
-    if (pcRebuild_ == PcRebuild::Step) PetscCall(KSPSetReusePreconditioner(ksp_, it > 0 ? PETSC_TRUE : PETSC_FALSE));
+    if (pcRebuild_ == PcRebuild::Step) PetscCall(KSPSetReusePreconditioner(ksp, it > 0 ? PETSC_TRUE : PETSC_FALSE));
     // J d = -(r + a alpha rho_m L F' (T^k - T_F))/dt: the latent share linearised about T_F (LatentSlope)
     {
       const Box    bx = Owned(dm_);
@@ -436,9 +483,9 @@ PetscErrorCode Energy::Step(PetscReal time, PetscReal dt) {
     // The correction's system is the balance per time: a linear residual of e (W/m^3) leaves dt e in a cell's
     // balance, so a 2-norm below a tenth of the tolerance per dt leaves every cell well inside it (the rest is the
     // linearisation's error, which the next iteration takes).
-    PetscCall(KSPSetTolerances(ksp_, PETSC_DEFAULT, std::max(kspAtol_, 0.1 * tolerance_ * energyScale_ / dt), PETSC_DEFAULT, PETSC_DEFAULT));
-    PetscCall(KSPSolve(ksp_, rhs_, Tstar_));
-    PetscCall(KSPGetIterationNumber(ksp_, &its));
+    PetscCall(KSPSetTolerances(ksp, PETSC_DEFAULT, std::max(kspAtol_, 0.1 * tolerance_ * energyScale_ / dt), PETSC_DEFAULT, PETSC_DEFAULT));
+    PetscCall(KSPSolve(ksp, rhs_, Tstar_));
+    PetscCall(KSPGetIterationNumber(ksp, &its));
     linear += its;
     // The update (Update), with lambda halved while the largest residual grows.
     PetscCall(VecCopy(T_, Tbase_));

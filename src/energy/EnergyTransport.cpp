@@ -123,7 +123,8 @@ PetscErrorCode Energy::TransportSweep(int d, PetscReal dt, Vec u, Vec phaseFlux,
     const bool      pure = (a1 == a2 && a2 == a3) && (a2 == 0 || a2 == 1);
     const PetscReal tf   = pure ? VanLeerFaceValue(T.at(s1), T.at(s2), T.at(s3)) : T.at(s2);
     const PetscReal fup = pos ? F.at(L1) : F.at(R1);
-    return r * (fm * rm * (metal_.Sensible(tf) + L * fup) + (vel - fm) * rg * gas_.Sensible(tf));
+    const PetscReal gas = vel - fm;  // a face that carries one phase needs that phase's enthalpy alone
+    return r * ((fm != 0 ? fm * rm * (metal_.Sensible(tf) + L * fup) : 0) + (gas != 0 ? gas * rg * gas_.Sensible(tf) : 0));
   };
   // Along d innermost, so that each face's flux is computed once and serves both its cells. What crosses the box's
   // faces (open ones: outflow, inflow) joins the account (energy_accounted_J) as input.

@@ -1,7 +1,7 @@
 // AijRowWriter: values written in place equal, entry for entry, a fresh MatSetValuesStencil assembly of the
 // same rows, with stencils that wrap (periodic x) and that leave the box (dropped, as MatSetValuesStencil
 // drops them); a row whose shape changed is refused, and nothing is written past it.
-#include "vofdem/flow/AijRowWriter.hpp"
+#include "vofdem/grid/AijRowWriter.hpp"
 
 #include "PetscTestEnvironment.hpp"
 

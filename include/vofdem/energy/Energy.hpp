@@ -16,6 +16,7 @@
 
 #include "vofdem/energy/Laser.hpp"
 #include "vofdem/energy/ThermalMaterial.hpp"
+#include "vofdem/grid/AijRowWriter.hpp"
 #include "vofdem/grid/Grid.hpp"
 #include "vofdem/grid/StaggeredGrid.hpp"
 #include "vofdem/io/Xdmf.hpp"
@@ -101,7 +102,9 @@ private:
   PetscErrorCode SetInitial();
   PetscErrorCode Properties();                      // E(T, f), C, F', F^{-1}(f), k at the state; T, k scattered to the local vectors
   PetscErrorCode LaserSource(PetscReal time);       // q_ (W/m^3), absorbed_, beam_
-  PetscErrorCode Assemble(PetscReal a, PetscReal dt);  // matrix and rhs at the current iterate
+  PetscErrorCode Assemble(PetscReal a, PetscReal dt, int slot);  // the Jacobian at the current iterate into A_[slot]
+  PetscErrorCode CreateSolver(int slot, const std::string &pc);
+  int            SolverFor(PetscReal dt) const;  // kJacobi or kMultigrid
   PetscErrorCode Residual(PetscReal a, PetscReal dt, PetscReal *maxResidual);  // r = a E - H - dt R(T)
   PetscErrorCode Update(PetscReal lambda);          // the enthalpy update with a fraction lambda of the correction
   PetscErrorCode CloseBalance(PetscReal a);         // E = (H + dt R)/a exactly from the last Residual; T, f from E
@@ -134,16 +137,17 @@ private:
   PetscReal       boilingMargin_ = 0, poolIsotherm_ = -1;
   PetscReal       mushyConstant_ = 1e8, mushyEpsilon_ = 1e-3, freezeAlpha_ = 0.5;  // the Darcy term (MushyDrag)
   PetscBool       holdSolid_ = PETSC_TRUE;
-  bool            pfmg_ = true, jacobi_ = false;
-  PetscReal       explicitLimit_ = 0, energyScale_ = 1, stepEstimate_ = 0;  // s, J/m^3, s (the longest step expected: -energy_pc auto)
+  bool            pfmg_ = true, autoPc_ = true, jacobiPc_ = false;  // -energy_pc
+  PetscReal       explicitLimit_ = 0, energyScale_ = 1;
 
   DM        dm_ = nullptr;
   Vec       T_ = nullptr, E_ = nullptr, Eold_ = nullptr, H_ = nullptr, C_ = nullptr, Ecur_ = nullptr, k_ = nullptr, q_ = nullptr, alpha_ = nullptr;
   Vec       r_ = nullptr, rhs_ = nullptr, Tstar_ = nullptr, fl_ = nullptr;
   Vec       F_ = nullptr, slope_ = nullptr, TF_ = nullptr, Tbase_ = nullptr, Fbase_ = nullptr;  // f, F', F^{-1}(f), the iterate before an update
   Vec       TLocal_ = nullptr, kLocal_ = nullptr, alphaLocal_ = nullptr;
-  Mat       A_ = nullptr;
-  KSP       ksp_ = nullptr;
+  static constexpr int kMultigrid = 0, kJacobi = 1;  // the solver slots
+  Mat       A_[2]   = {nullptr, nullptr};
+  KSP       ksp_[2] = {nullptr, nullptr};
   MPI_Comm  column_ = MPI_COMM_NULL;  // the ranks of one process column in z, top first
 
   // The account: steps done, the previous step, the accounted energy of the last two steps.
@@ -153,6 +157,9 @@ private:
 
   const StaggeredGrid *sg_ = nullptr;  // with a moving interface
   std::function<Vec()> interfaceAlpha_;  // the interface's alpha (once it is set up)
+  AijRowWriter         writer_[2];  // Assemble: the rows in place after the first (AIJ matrices)
+  std::vector<PetscReal> faceConductance_, interfaceDensity_;  // Residual's k_f/h^2 per cell face and delta_s, for Assemble
+  bool                 cacheValid_ = false;                   // they belong to the current state (Properties clears it)   // Assemble: the rows in place after the first (AIJ matrices)
   std::vector<char>    touched_;  // TransportSweep: the owned cells a sweep changed
   PetscLogEvent        evLaser_ = 0, evProperties_ = 0, evResidual_ = 0, evAssemble_ = 0, evClose_ = 0, evTransport_ = 0, evMushy_ = 0;  // -log_view
   Vec                  Tsg_ = nullptr, TsgLocal_ = nullptr, Fsg_ = nullptr, FsgLocal_ = nullptr, AsgLocal_ = nullptr, uLocal_[3] = {nullptr, nullptr, nullptr},

@@ -7,7 +7,7 @@
 // the matrix is diagonally dominant by (eps rho)/dt), one KSP per component.
 #pragma once
 
-#include "vofdem/flow/AijRowWriter.hpp"
+#include "vofdem/grid/AijRowWriter.hpp"
 #include "vofdem/flow/FlowBoundary.hpp"
 #include "vofdem/flow/SolidMask.hpp"
 #include "vofdem/grid/StaggeredGrid.hpp"

@@ -1,4 +1,4 @@
-#include "vofdem/flow/AijRowWriter.hpp"
+#include "vofdem/grid/AijRowWriter.hpp"
 
 #include <algorithm>
 
