@@ -90,9 +90,10 @@ PetscErrorCode Darcy::Assemble(PetscReal pIn, PetscReal pOut, Vec source) {
   PetscFunctionReturn(0);
 }
 
-// Per cell and direction the two face gradients dp/dx (interior: (p_N - p_C)/h; a fixed-head face: half a cell;
-// a closed face: 0) and fluxes q_f = -beta_f dp/dx: the cell's -grad p is minus their mean, its q their mean (its
-// speed |q| the nonlinear laws read), and the boundary faces' fluxes are the inlet's and the outlet's flows.
+// Per cell and direction the two face fluxes q_f = -beta_f dp/dx (interior: (p_N - p_C)/h, harmonic beta_f; a
+// fixed-head face: half a cell, beta_C; a closed face: 0): the cell's q is their mean (its speed |q| the nonlinear
+// laws read), its -grad p is q/beta_C, the drop of the flux-continuous pressure across the cell's own two halves
+// over h, and the boundary faces' fluxes are the inlet's and the outlet's flows.
 PetscErrorCode Darcy::Fluxes(PetscReal pIn, PetscReal pOut) {
   const PetscScalar ***p, ***b;
   PetscScalar       ***g[3], ***u;
@@ -116,21 +117,21 @@ PetscErrorCode Darcy::Fluxes(PetscReal pIn, PetscReal pOut) {
         const PetscReal pc = PetscRealPart(p[k][j][i]), bc = PetscRealPart(b[k][j][i]);
         PetscReal       q2 = 0;
         for (int d = 0; d < 3; ++d) {
-          PetscReal grad[2], flux[2];
+          PetscReal grad, flux[2];
           for (int side = 0; side < 2; ++side) {
             PetscInt q[3] = {i, j, k};
             q[d] += side ? 1 : -1;
             const PetscReal sign = side ? 1 : -1;  // dp/dx = sign (p_other - p_C)/distance
             if (grid_->Periodic(d) || (q[d] >= 0 && q[d] < N[d])) {
-              grad[side] = sign * (PetscRealPart(p[q[2]][q[1]][q[0]]) - pc) / h[d];
-              flux[side] = -Harmonic(bc, PetscRealPart(b[q[2]][q[1]][q[0]])) * grad[side];
+              grad       = sign * (PetscRealPart(p[q[2]][q[1]][q[0]]) - pc) / h[d];
+              flux[side] = -Harmonic(bc, PetscRealPart(b[q[2]][q[1]][q[0]])) * grad;
             } else if (Open(2 * d + side)) {
-              grad[side] = sign * ((side ? pOut : pIn) - pc) / (0.5 * h[d]);
-              flux[side] = -bc * grad[side];
-            } else grad[side] = flux[side] = 0;
+              grad       = sign * ((side ? pOut : pIn) - pc) / (0.5 * h[d]);
+              flux[side] = -bc * grad;
+            } else flux[side] = 0;
           }
-          g[d][k][j][i] = -0.5 * (grad[0] + grad[1]);
           const PetscReal qc = 0.5 * (flux[0] + flux[1]);
+          g[d][k][j][i]      = qc / bc;  // -grad p = q/beta in the cell: the drops of its two halves, q_f (h/2)/beta_C, over h
           q2 += qc * qc;
           if (d == axis_) {
             const PetscReal area = h[(d + 1) % 3] * h[(d + 2) % 3];

@@ -41,9 +41,10 @@ public:
   PetscErrorCode SetUp(const Grid &grid);
   // Solves for p at time t (the head difference of the ramp at t), with the source s (a cell vector, 1/s) or none.
   PetscErrorCode Solve(PetscReal time, Vec source = nullptr);
-  // -grad p at the cells (Pa/m, 3 global cell vectors): each component the mean of the cell's two face gradients
-  // (a fixed-head face half a cell away, none through a closed one), so that sum_cells (-grad p) V over a
-  // column is exactly A (p_inlet - p_outlet) (docs/physics.md (F11)). From the last Solve.
+  // -grad p at the cells (Pa/m, 3 global cell vectors): q_C/beta_C, q_C the mean of the cell's two face fluxes,
+  // i.e. the drop of the flux-continuous pressure across the cell's own two halves over h, so that
+  // sum_cells (-grad p) V along a column is exactly A (p_inlet - p_outlet), and a packed stretch of it holds its
+  // own drop (docs/physics.md (F11)). From the last Solve.
   const Vec     *PressureGradient() const { return gradient_; }
   Vec            FluidFraction() const { return eps_; }  // global cell vector; a coupling writes it before Solve
   Vec            Pressure() const { return p_; }
