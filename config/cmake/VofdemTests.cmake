@@ -41,6 +41,9 @@ set_tests_properties(dem/periodic_seam PROPERTIES LABELS "quick;dem" PROCESSORS 
 # G4's column (docs/verification.md): -physics darcy with fixed eps against Darcy's law (and Ergun's), 1 and 2 ranks.
 add_test(NAME darcy/column COMMAND ${VOFDEM_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/test/darcy/test_darcy_column.py $<TARGET_FILE:vofdem_app>)
 set_tests_properties(darcy/column PROPERTIES LABELS "quick;darcy" PROCESSORS 2 TIMEOUT 300)
+# -physics dem,darcy: the seepage force's exchange and the bed's share of the head loss, and G5's heave at Terzaghi's gradient.
+add_test(NAME darcy/seepage_bed COMMAND ${VOFDEM_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/test/darcy/test_seepage_bed.py $<TARGET_FILE:vofdem_app>)
+set_tests_properties(darcy/seepage_bed PROPERTIES LABELS "quick;darcy" PROCESSORS 2 TIMEOUT 300)
 
 # ---- example tests: one CTest test per /*TEST*/ block -----------------------------------------
 set(_runner ${CMAKE_CURRENT_SOURCE_DIR}/scripts/run-examples)
@@ -78,6 +81,7 @@ vofdem_bad_input(scalar_sine_walls  "option -scalar_sine_periods: a sine along x
 vofdem_bad_input(darcy_unknown_law  "option -darcy_permeability_law: unknown name 'carman' \\(known: kozenycarman, kozenycarman_d10, evolving, ergun\\)" -physics darcy -dt 1 -darcy_permeability_law carman)
 vofdem_bad_input(darcy_closed_box   "option -darcy_head_difference: a head difference needs open faces, and the box has none" -physics darcy -dt 1 -darcy_head_difference 0.5)
 vofdem_bad_input(darcy_with_flow    "option -physics: 'darcy' and 'flow' are two models of the same pore water" -physics flow,darcy)
+vofdem_bad_input(darcy_eps_with_dem "option -darcy_fluid_fraction: with particles \\(dem,darcy\\) eps comes from them" -physics dem,darcy -grid_upper 0.01,0.01,0.01 -darcy_fluid_fraction 0.4)
 vofdem_bad_input(darcy_layers       "option -darcy_fluid_fraction: 3 layers do not split the 8 cells along z into whole cells" -physics darcy -dt 1 -darcy_axis z -darcy_fluid_fraction 0.3,0.4,0.5)
 vofdem_bad_input(scalar_box_corner  "option -scalar_box_upper: give both corners of the box" -physics flow,scalar -scalar_box_lower 0,0,0)
 # A grid PETSc cannot split over the ranks: one line naming -grid_cells and -grid_ranks, not PETSc's trace.
