@@ -50,7 +50,7 @@ private:
   MPI_Comm         comm_ = MPI_COMM_NULL;
   StaggeredGrid    sg_;  // the kernel's layout (its cells have the grid's ownership, BOX ghosts)
   KernelAverager   avg_;
-  KernelAverager::Settings kernel_;
+  KernelAverager::Settings kernel_ = {kernel::Shape::Smooth, 1.5, "seepage"};
   std::string      kernelName_ = "smooth";
   PetscReal        kappa_ = 1.5, minWidthCells_ = 1.0, minEps_ = 0.1;
   PetscBool        buoyancy_ = PETSC_TRUE;
