@@ -44,6 +44,9 @@ set_tests_properties(darcy/column PROPERTIES LABELS "quick;darcy" PROCESSORS 2 T
 # -physics dem,darcy: the seepage force's exchange and the bed's share of the head loss, and G5's heave at Terzaghi's gradient.
 add_test(NAME darcy/seepage_bed COMMAND ${VOFDEM_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/test/darcy/test_seepage_bed.py $<TARGET_FILE:vofdem_app>)
 set_tests_properties(darcy/seepage_bed PROPERTIES LABELS "quick;darcy" PROCESSORS 2 TIMEOUT 300)
+# A darcy and a dem,darcy run continued from a checkpoint end where the uninterrupted run ends (1 and 2 ranks).
+add_test(NAME darcy/restart COMMAND ${VOFDEM_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/test/darcy/test_darcy_restart.py $<TARGET_FILE:vofdem_app>)
+set_tests_properties(darcy/restart PROPERTIES LABELS "quick;darcy;checkpoint" PROCESSORS 2 TIMEOUT 300)
 
 # ---- example tests: one CTest test per /*TEST*/ block -----------------------------------------
 set(_runner ${CMAKE_CURRENT_SOURCE_DIR}/scripts/run-examples)

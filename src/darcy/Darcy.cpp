@@ -131,10 +131,13 @@ PetscErrorCode Darcy::SetUp(const Grid &grid) {
   for (Vec *v : {&b_, &eps_, &beta_, &betaOld_, &speed_}) PetscCall(VecDuplicate(p_, v));
   for (Vec &g : gradient_) PetscCall(VecDuplicate(p_, &g));
   PetscCall(PetscObjectSetName((PetscObject)eps_, "darcy_fluid_fraction"));
+  PetscCall(PetscObjectSetName((PetscObject)beta_, "darcy_coefficient"));
+  PetscCall(PetscObjectSetName((PetscObject)speed_, "darcy_speed"));
   PetscCall(DMCreateLocalVector(dm_, &pLocal_));
   PetscCall(VecDuplicate(pLocal_, &betaLocal_));
   PetscCall(VecSet(p_, rhoG() * outletHead_));
   PetscCall(VecSet(speed_, 0));
+  PetscCall(VecSet(beta_, 0));
   for (Vec g : gradient_) PetscCall(VecSet(g, 0));
   if (!fromParticles_) PetscCall(FixedFluidFraction());
   else PetscCall(VecSet(eps_, 1));
@@ -188,15 +191,17 @@ PetscErrorCode Darcy::View(PetscViewer viewer) const {
   PetscFunctionReturn(0);
 }
 
+// What the next solve starts from: p (the initial guess), and for a nonlinear law the coefficient and the cell
+// speeds of the last iterate (the next step's first Picard iterate), so that a restart repeats the arithmetic.
 PetscErrorCode Darcy::Save(PetscViewer viewer) const {
   PetscFunctionBeginUser;
-  PetscCall(VecView(p_, viewer));
+  for (Vec v : {p_, beta_, speed_}) PetscCall(VecView(v, viewer));
   PetscFunctionReturn(0);
 }
 
 PetscErrorCode Darcy::Load(PetscViewer viewer) {
   PetscFunctionBeginUser;
-  PetscCall(VecLoad(p_, viewer));
+  for (Vec v : {p_, beta_, speed_}) PetscCall(VecLoad(v, viewer));
   PetscFunctionReturn(0);
 }
 

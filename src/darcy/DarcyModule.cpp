@@ -63,7 +63,7 @@ PetscErrorCode DarcyModule::SavedBytes(PetscInt64 *bytes) const {
 
   PetscFunctionBeginUser;
   PetscCall(VecGetSize(darcy_.Pressure(), &n));
-  *bytes = 8 * (PetscInt64)n + 4096;
+  *bytes = 3 * 8 * (PetscInt64)n + 4096;  // p, the coefficient, the speeds
   PetscFunctionReturn(0);
 }
 

@@ -56,7 +56,7 @@ public:
   PetscInt       SolveEvery() const { return every_; }
   PetscErrorCode Summarize(DarcySummary *s) const;
   PetscErrorCode View(PetscViewer viewer) const;
-  PetscErrorCode Save(PetscViewer viewer) const;  // p (the next solve's initial guess)
+  PetscErrorCode Save(PetscViewer viewer) const;  // p, k/mu and |q| (where the next solve starts)
   PetscErrorCode Load(PetscViewer viewer);
   PetscErrorCode Destroy();
 
