@@ -86,6 +86,7 @@ vofdem_bad_input(darcy_closed_box   "option -darcy_head_difference: a head diffe
 vofdem_bad_input(darcy_with_flow    "option -physics: 'darcy' and 'flow' are two models of the same pore water" -physics flow,darcy)
 vofdem_bad_input(darcy_eps_with_dem "option -darcy_fluid_fraction: with particles \\(dem,darcy\\) eps comes from them" -physics dem,darcy -grid_upper 0.01,0.01,0.01 -darcy_fluid_fraction 0.4)
 vofdem_bad_input(seepage_kernel     "seepage: the kernel reaches 6 cells, more than the 4 periodic cells in x. use a narrower kernel \\(-seepage_kernel_width\\)" -physics dem,darcy -grid_cells 4,4,16 -grid_upper 0.004,0.004,0.016 -grid_periodic x,y -dem_radius 0.5e-3 -dem_fill_count 10)
+vofdem_bad_input(darcy_ramp_alone   "option -darcy_head_ramp: give the final head difference too" -physics darcy -dt 1 -darcy_axis z -darcy_head_ramp 0.1,1)
 vofdem_bad_input(darcy_layers       "option -darcy_fluid_fraction: 3 layers do not split the 8 cells along z into whole cells" -physics darcy -dt 1 -darcy_axis z -darcy_fluid_fraction 0.3,0.4,0.5)
 vofdem_bad_input(scalar_box_corner  "option -scalar_box_upper: give both corners of the box" -physics flow,scalar -scalar_box_lower 0,0,0)
 # A grid PETSc cannot split over the ranks: one line naming -grid_cells and -grid_ranks, not PETSc's trace.

@@ -76,7 +76,8 @@ PetscErrorCode Darcy::SetFromOptions(const Grid &grid, const PetscReal gravity[3
   if (axis_ >= 0 && grid.Periodic(axis_))
     VofdemInputError(comm_, "option -darcy_axis: %c is periodic (-grid_periodic); the fixed-head faces need a non-periodic direction", "xyz"[axis_]);
   if (rampSet && !(ramp_[0] != 0 && ramp_[1] > 0)) VofdemInputError(comm_, "option -darcy_head_ramp: give a non-zero step and a positive period (step,period in m,s)");
-  if (rampSet && ramp_[0] * headDifference_ <= 0) VofdemInputError(comm_, "option -darcy_head_ramp: the step must have the sign of -darcy_head_difference (its final value)");
+  if (rampSet && headDifference_ == 0) VofdemInputError(comm_, "option -darcy_head_ramp: give the final head difference too (-darcy_head_difference)");
+  if (rampSet && ramp_[0] * headDifference_ < 0) VofdemInputError(comm_, "option -darcy_head_ramp: the step must have the sign of -darcy_head_difference (its final value)");
   if (epsLayers_.size() > 1) {
     if (axis_ < 0) VofdemInputError(comm_, "option -darcy_fluid_fraction: layers lie along -darcy_axis; give one value for a closed box");
     if (grid.Cells()[axis_] % (PetscInt)epsLayers_.size())
