@@ -2,7 +2,7 @@
 // for slow flow the pore water's excess (piezometric) pressure p = rho_w g H, H the head above the outlet's,
 // solves the steady head equation
 //     div((k(eps)/mu) grad p) = s,      q = -(k/mu) grad p   (the Darcy, i.e. superficial, velocity),
-// s = d(eps)/dt where a coupling hands in the particles' displacement rate (else 0), with k from the cell's
+// s a source (1/s) a caller may pass to Solve (no module does yet: docs/modules/darcy.md, limits), with k from the cell's
 // fluid fraction eps through a law of Permeability.hpp. Finite volumes on the grid's cell DMDA: the face
 // coefficient is the harmonic mean of its two cells' k/mu (the flux is continuous through a change of
 // packing, and a layered column is exact), fixed head on the two box faces normal to -darcy_axis
