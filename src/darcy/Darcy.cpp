@@ -60,6 +60,7 @@ PetscErrorCode Darcy::SetFromOptions(const Grid &grid, const PetscReal gravity[3
     PetscCall(opt.Real("-outlet_head", "Head on the outlet face (the excess pressure there is rho_w g times it)", "m", &outletHead_));
     PetscCall(opt.RealVector("-head_ramp", "Raise the head difference in steps: step,period (m,s): the difference is min(final, step (1 + floor(t/period))) (default: none, the final difference at once)", "m,s",
                              ramp_, 2, RealRange::Any(), &rampSet));
+    PetscCall(opt.Real("-head_start", "No head difference before this time (a bed settles first); the ramp's steps count from it", "s", &start_, RealRange::NonNegative()));
     PetscCall(opt.RealList("-fluid_fraction", "Fixed fluid fraction eps: one value for the whole box, or n values for n equal layers along -darcy_axis from the inlet (not with particles)", "-", &epsLayers_,
                            1024, RealRange::LeftOpen(0, 1), &epsSet_));
     PetscCall(opt.Real("-max_fluid_fraction", "Cap of eps in the permeability laws (an empty cell would have infinite k)", "-", &maxEps_, RealRange::LeftOpen(0, 1)));
@@ -94,8 +95,9 @@ PetscErrorCode Darcy::TakeFluidFractionFromParticles() {
 }
 
 PetscReal Darcy::HeadDifference(PetscReal time) const {
+  if (time < start_ * (1 - 1e-12)) return 0;
   if (!(ramp_[1] > 0)) return headDifference_;
-  const PetscReal steps = std::floor(time / ramp_[1] * (1 + 1e-12)) + 1;  // a step's start lands on its own level
+  const PetscReal steps = std::floor((time - start_) / ramp_[1] * (1 + 1e-12)) + 1;  // a step's start lands on its own level
   const PetscReal dH    = ramp_[0] * steps;
   return std::fabs(dH) < std::fabs(headDifference_) ? dH : headDifference_;
 }
@@ -181,7 +183,8 @@ PetscErrorCode Darcy::View(PetscViewer viewer) const {
     const PetscReal L = grid_->Upper()[axis_] - grid_->Lower()[axis_];
     PetscCall(PetscViewerASCIIPrintf(viewer, "darcy: fixed head on the %clo (inlet) and %chi (outlet) faces, no flux elsewhere; head difference %g m (gradient %g)%s, outlet head %g m, g %g m/s^2\n",
                                      "xyz"[axis_], "xyz"[axis_], (double)headDifference_, (double)(headDifference_ / L),
-                                     ramp_[1] > 0 ? (", reached in steps of " + std::to_string((double)ramp_[0]) + " m every " + std::to_string((double)ramp_[1]) + " s").c_str() : "",
+                                     ((start_ > 0 ? ", from t = " + std::to_string((double)start_) + " s" : std::string()) +
+                                      (ramp_[1] > 0 ? ", reached in steps of " + std::to_string((double)ramp_[0]) + " m every " + std::to_string((double)ramp_[1]) + " s" : std::string())).c_str(),
                                      (double)outletHead_, (double)g_));
   }
   if (!fromParticles_) {

@@ -7,7 +7,7 @@
 // coefficient is the harmonic mean of its two cells' k/mu (the flux is continuous through a change of
 // packing, and a layered column is exact), fixed head on the two box faces normal to -darcy_axis
 // (half a cell from the boundary cell's centre), no flux through the other faces. The head difference
-// H_inlet - H_outlet (inlet: the lower face) may rise in steps (-darcy_head_ramp). CG + hypre BoomerAMG
+// H_inlet - H_outlet (inlet: the lower face) may start late (-darcy_head_start) and rise in steps (-darcy_head_ramp). CG + hypre BoomerAMG
 // with its own prefix, -darcy_ksp_*, -darcy_pc_* (as the flow's pressure solve). Ergun's law depends on
 // |q|: Picard iterations, k from the last iterate's speed, until k changes less than -darcy_picard_rtol.
 #pragma once
@@ -81,6 +81,7 @@ private:
   int                      axis_ = -1;    // -darcy_axis: the open faces' normal; -1 none (a closed box)
   PetscReal                headDifference_ = 0, outletHead_ = 0;  // m
   PetscReal                ramp_[2] = {0, 0};  // -darcy_head_ramp: the step (m) and its period (s); 0: none
+  PetscReal                start_ = 0;         // -darcy_head_start, s
   std::vector<PetscReal>   epsLayers_ = {0.4};  // -darcy_fluid_fraction
   PetscReal                maxEps_ = 0.99;      // -darcy_max_fluid_fraction
   PetscReal                picardRtol_ = 1e-12;
