@@ -38,6 +38,16 @@ set_tests_properties(dem/contact_step PROPERTIES LABELS "quick;dem" PROCESSORS 2
 add_test(NAME dem/periodic_seam COMMAND ${VOFDEM_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/test/dem/test_periodic_seam.py $<TARGET_FILE:vofdem_app>)
 set_tests_properties(dem/periodic_seam PROPERTIES LABELS "quick;dem" PROCESSORS 2 TIMEOUT 300)
 
+# G4's column (docs/verification.md): -physics darcy with fixed eps against Darcy's law (and Ergun's), 1 and 2 ranks.
+add_test(NAME darcy/column COMMAND ${VOFDEM_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/test/darcy/test_darcy_column.py $<TARGET_FILE:vofdem_app>)
+set_tests_properties(darcy/column PROPERTIES LABELS "quick;darcy" PROCESSORS 2 TIMEOUT 300)
+# -physics dem,darcy: the seepage force's exchange and the bed's share of the head loss, and G5's heave at Terzaghi's gradient.
+add_test(NAME darcy/seepage_bed COMMAND ${VOFDEM_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/test/darcy/test_seepage_bed.py $<TARGET_FILE:vofdem_app>)
+set_tests_properties(darcy/seepage_bed PROPERTIES LABELS "quick;darcy" PROCESSORS 2 TIMEOUT 300)
+# A darcy and a dem,darcy run continued from a checkpoint end where the uninterrupted run ends (1 and 2 ranks).
+add_test(NAME darcy/restart COMMAND ${VOFDEM_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/test/darcy/test_darcy_restart.py $<TARGET_FILE:vofdem_app>)
+set_tests_properties(darcy/restart PROPERTIES LABELS "quick;darcy;checkpoint" PROCESSORS 2 TIMEOUT 300)
+
 # ---- example tests: one CTest test per /*TEST*/ block -----------------------------------------
 set(_runner ${CMAKE_CURRENT_SOURCE_DIR}/scripts/run-examples)
 file(GLOB _example_sources ${CMAKE_CURRENT_SOURCE_DIR}/examples/ex*.cpp)
@@ -65,11 +75,19 @@ vofdem_bad_input(malformed_yaml     "malformed\\.yaml:4:[0-9]+: malformed YAML" 
 vofdem_bad_input(scene_not_mapping  "not-a-mapping\\.yaml:1:1: a scene must be a mapping" -options_file_yaml ${_bad}/not-a-mapping.yaml)
 vofdem_bad_input(typo_in_scene      "unknown or unused option -dem_restitusion \\(did you mean -dem_restitution\\?\\)" -options_file_yaml ${_bad}/typo.yaml)
 vofdem_bad_input(unknown_physics    "option -physics: unknown name 'magic'"        -physics dem,magic)
-vofdem_bad_input(physics_not_built  "option -physics: unknown name 'magnetism' \\(known: dem, flow, vof, scalar, energy\\)" -physics flow,magnetism)
+vofdem_bad_input(physics_not_built  "option -physics: unknown name 'magnetism' \\(known: dem, flow, vof, darcy, scalar, energy\\)" -physics flow,magnetism)
 # The registry's needs, and the passive scalar's own checks.
 vofdem_bad_input(scalar_needs_flow  "option -physics: 'scalar' needs 'flow' \\(the scalar moves with the fluid\\)" -physics scalar)
 vofdem_bad_input(scalar_with_dem    "option -physics: 'scalar' does not take particles into account yet" -physics dem,flow,scalar -grid_upper 0.01,0.01,0.01)
 vofdem_bad_input(scalar_sine_walls  "option -scalar_sine_periods: a sine along x needs a periodic box in x" -physics flow,scalar -scalar_initial sine)
+# The Darcy seepage's own checks (docs/modules/darcy.md).
+vofdem_bad_input(darcy_unknown_law  "option -darcy_permeability_law: unknown name 'carman' \\(known: kozenycarman, kozenycarman_d10, evolving, ergun\\)" -physics darcy -dt 1 -darcy_permeability_law carman)
+vofdem_bad_input(darcy_closed_box   "option -darcy_head_difference: a head difference needs open faces, and the box has none" -physics darcy -dt 1 -darcy_head_difference 0.5)
+vofdem_bad_input(darcy_with_flow    "option -physics: 'darcy' and 'flow' are two models of the same pore water" -physics flow,darcy)
+vofdem_bad_input(darcy_eps_with_dem "option -darcy_fluid_fraction: with particles \\(dem,darcy\\) eps comes from them" -physics dem,darcy -grid_upper 0.01,0.01,0.01 -darcy_fluid_fraction 0.4)
+vofdem_bad_input(seepage_kernel     "seepage: the kernel reaches 6 cells, more than the 4 periodic cells in x. use a narrower kernel \\(-seepage_kernel_width\\)" -physics dem,darcy -grid_cells 4,4,16 -grid_upper 0.004,0.004,0.016 -grid_periodic x,y -dem_radius 0.5e-3 -dem_fill_count 10)
+vofdem_bad_input(darcy_ramp_alone   "option -darcy_head_ramp: give the final head difference too" -physics darcy -dt 1 -darcy_axis z -darcy_head_ramp 0.1,1)
+vofdem_bad_input(darcy_layers       "option -darcy_fluid_fraction: 3 layers do not split the 8 cells along z into whole cells" -physics darcy -dt 1 -darcy_axis z -darcy_fluid_fraction 0.3,0.4,0.5)
 vofdem_bad_input(scalar_box_corner  "option -scalar_box_upper: give both corners of the box" -physics flow,scalar -scalar_box_lower 0,0,0)
 # A grid PETSc cannot split over the ranks: one line naming -grid_cells and -grid_ranks, not PETSc's trace.
 vofdem_bad_input(grid_too_few_cells "options -grid_cells 1,1,1 and -grid_ranks: the cells cannot be split over 2 ranks \\(PETSc: Partition in . direction is too fine" -physics dem -grid_upper 0.004,0.004,0.004 -grid_cells 1,1,1 -dem_fill_count 1 -dem_radius 5e-4)

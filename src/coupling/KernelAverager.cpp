@@ -42,11 +42,11 @@ PetscErrorCode KernelAverager::Layout(int loc, DM *dm) const {
     for (PetscInt r = 0; r < m[d] && m[d] > 1; ++r)
       if (l[d][r] < width_)
         VofdemInputError(grid.Comm(),
-                         "coupling: the kernel reaches %" PetscInt_FMT " cells, more than the %" PetscInt_FMT " cells a rank owns in %c; use fewer ranks in %c (-grid_ranks), more cells, or a narrower kernel (-coupling_kernel_width)",
-                         width_, l[d][r], "xyz"[d], "xyz"[d]);
+                         "%s: the kernel reaches %" PetscInt_FMT " cells, more than the %" PetscInt_FMT " cells a rank owns in %c; use fewer ranks in %c (-grid_ranks), more cells, or a narrower kernel (-%s_kernel_width)",
+                         settings_.owner, width_, l[d][r], "xyz"[d], "xyz"[d], settings_.owner);
     if (m[d] == 1 && grid.Periodic(d) && N[d] < width_)
-      VofdemInputError(grid.Comm(), "coupling: the kernel reaches %" PetscInt_FMT " cells, more than the %" PetscInt_FMT " periodic cells in %c; use a narrower kernel (-coupling_kernel_width)",
-                       width_, N[d], "xyz"[d]);
+      VofdemInputError(grid.Comm(), "%s: the kernel reaches %" PetscInt_FMT " cells, more than the %" PetscInt_FMT " periodic cells in %c; use a narrower kernel (-%s_kernel_width)",
+                       settings_.owner, width_, N[d], "xyz"[d], settings_.owner);
   }
   PetscCall(DMDACreate3d(grid.Comm(), bt[0], bt[1], bt[2], DMDA_STENCIL_BOX, N[0], N[1], N[2], m[0], m[1], m[2], 1, width_, l[0], l[1], l[2], dm));
   PetscCall(DMSetUp(*dm));

@@ -30,7 +30,8 @@ ALLOWED = {
 INCLUDE = re.compile(r'^\s*#\s*include\s*"vofdem/([A-Za-z0-9_]+)/')
 # A module added later (a vofdem_add_module line of CMakeLists.txt naming a folder not above) is a physics
 # module: it may build on base, io, grid and the other physics modules, never on coupling or the floors above;
-# sim, app and the examples may include it.
+# the coupling (which bridges particles and any fluid: the seepage coupling and darcy), sim, app and the examples
+# may include it.
 NEW_MODULE = {"base", "io", "grid", "dem", "flow", "vof"}
 
 
@@ -41,7 +42,7 @@ def floors(root):
     for name in names:
         if name not in allowed:
             allowed[name] = set(NEW_MODULE)
-            for top in ("sim", "app", "examples"):
+            for top in ("coupling", "sim", "app", "examples"):
                 allowed[top].add(name)
     return allowed
 

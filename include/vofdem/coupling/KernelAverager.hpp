@@ -27,6 +27,7 @@ public:
   struct Settings {
     kernel::Shape shape      = kernel::Shape::Smooth;
     PetscReal     truncation = 1.5;  // cut-off of the truncated Gaussian, in widths H
+    const char   *owner      = "coupling";  // whose options set the kernel (-<owner>_kernel_width), for the input errors
   };
 
   // maxCutoff: the largest support radius any particle will use (m; ignored when unresolved);
