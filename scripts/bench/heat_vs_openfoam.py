@@ -331,7 +331,7 @@ def main():
            c.dt, c.steps, c.t_end, c.t_end * A / R ** 2, c.scheme, "vofdem bdf2 / OpenFOAM backward" if c.scheme == "bdf2" else "both backward Euler",
            c.w + 1, c.last, c.timed))
     say("OpenFOAM laplacianFoam: top fixedGradient (nonuniform List, exact face integrals of the beam / k), solvers %s to %g (relTol 0); "
-        "vofdem: CG + PFMG at its defaults (enthalpy tolerance 1e-10, KSP rtol 1e-10)" % ("/".join(solvers), a.foam_tolerance))
+        "vofdem: CG at its defaults (-energy_pc auto: Jacobi below 20 explicit limits, else PFMG; enthalpy tolerance 1e-6, each solve to a tenth of it)" % ("/".join(solvers), a.foam_tolerance))
 
     # the analytic solution on the top layer's centres, its quadrature checked, and the nearest images
     X, Y = np.meshgrid(c.xc, c.yc)  # [y, x]
@@ -414,7 +414,7 @@ def main():
                 say("| %d | %s | %d | %d (%d) | failed | | | | | |" % (ranks, code, c.n, c.steps, c.timed))
                 continue
             e = err[(code, ranks)]
-            name = ("vofdem (%s)" % (a.vofdem_options or "CG + PFMG, its defaults")) if code == "vofdem" else "OpenFOAM laplacianFoam, %s%s%s" % (
+            name = ("vofdem (%s)" % (a.vofdem_options or "CG, its defaults")) if code == "vofdem" else "OpenFOAM laplacianFoam, %s%s%s" % (
                 code, " + DIC" if code == "PCG" else "", " (faster)" if code == best else "")
             say("| %d | %s | %d | %d (%d) | %.4f | %.0f %% | %.2f | %s | %s | %+.3f K |" % (
                 ranks, name, c.n, c.steps, c.timed, med[(code, ranks)], spread(us[(code, ranks)]), max(foreign[(code, ranks)]),

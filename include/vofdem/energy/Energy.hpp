@@ -8,8 +8,10 @@
 // cell's state is its temperature T and its metal's melt fraction f, E = E(T, f); each iteration solves the
 // balance linearised in T with the latent heat's share f = f^k + F' (T - F^{-1}(f^k)) (the source-based
 // scheme of Voller and Swaminathan, 1991; F' the mushy slope unless the cell is consistently solid or
-// liquid), then clamps f to [0, 1], until every cell's balance closes to -energy_tolerance. The linear systems
-// are symmetric: CG with hypre PFMG (structured) or BoomerAMG, options prefix energy_.
+// liquid), then clamps f to [0, 1], until every cell's balance closes to -energy_tolerance; the step's close then
+// sets E from the last iterate's fluxes exactly (CloseBalance: conservative at any tolerance). The linear systems
+// are symmetric: CG with Jacobi for short steps, hypre PFMG (structured) or BoomerAMG for long ones (-energy_pc),
+// options prefix energy_.
 // With a flow: transport by the VOF sweeps' phase fluxes (F7 a), the Darcy term and held solid metal (F2, MushyDrag).
 // Not yet: particles (eps < 1, F9).
 #pragma once
@@ -46,7 +48,7 @@ struct EnergySummary {
   PetscReal lossRate = 0;       // W lost at interfaces (convection and radiation)
   PetscReal absorbed = 0;       // W of the laser deposited in the cells
   PetscReal beam = 0;           // W of the laser entering the box
-  PetscReal balance = 0;        // J: the step's energy balance error, sum of the cells' residuals
+  PetscReal balance = 0;        // J: the residuals the step's close put back into the cells (the iteration's remainder)
   PetscReal balanceRelative = 0;  // balance / |total|
   PetscReal accounted = 0;      // J: the integrated input by the scheme's own quadrature, plus the initial total
   PetscReal peak = 0, minimum = 0;  // K
