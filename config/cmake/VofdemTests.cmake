@@ -35,6 +35,9 @@ set_tests_properties(dem/epsd_rest PROPERTIES LABELS "quick;dem;rolling" PROCESS
 add_test(NAME dem/contact_step COMMAND ${VOFDEM_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/test/dem/test_contact_step.py $<TARGET_FILE:vofdem_app>)
 set_tests_properties(dem/contact_step PROPERTIES LABELS "quick;dem" PROCESSORS 2 TIMEOUT 300)
 # A random fill and an insertion region across periodic x and y: centres up to the faces, no overlap through them.
+# G1: two bonded spheres pulled, sheared, bent and twisted to just below and above their break loads (P13).
+add_test(NAME dem/bond_break COMMAND ${VOFDEM_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/test/dem/test_bond_break.py $<TARGET_FILE:vofdem_app>)
+set_tests_properties(dem/bond_break PROPERTIES LABELS "quick;dem;bonds" PROCESSORS 2 TIMEOUT 300)
 add_test(NAME dem/periodic_seam COMMAND ${VOFDEM_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/test/dem/test_periodic_seam.py $<TARGET_FILE:vofdem_app>)
 set_tests_properties(dem/periodic_seam PROPERTIES LABELS "quick;dem" PROCESSORS 2 TIMEOUT 300)
 
