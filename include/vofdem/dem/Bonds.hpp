@@ -31,7 +31,8 @@ public:
   PetscReal AtTime() const { return atTime_; }
   // The bonds are made at the first force evaluation at or after -dem_bond_at_time (once).
   bool Due(PetscReal time) const { return on_ && !made_ && time >= atTime_; }
-  void SetMade() { made_ = true; }
+  void SetMade(bool made = true) { made_ = made; }
+  bool Made() const { return made_; }
   // Stable step (s) of the lightest sphere (mass m_min) held by 12 bonds of the largest section (spheres of r_max).
   PetscReal StepLimit(PetscReal rMax, PetscReal mMin) const;
 
