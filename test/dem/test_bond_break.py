@@ -11,6 +11,8 @@ twisted, and pulled and bent at once, each to just below and just above its brea
   read back from its velocity change over the step's last half kick, 2 m dv/dt and 2 (0.4 m r^2) dw/dt, equal
   (1 - 1e-10) F* (M*) to 1e-12, and the monitor's sigma/sigma_t (tau/tau_s) is 1 - 1e-10 to 1e-12; at
   (1 + 1e-10) it breaks (1 broken, 0 intact) and gives no force. So the break load is F* (M*) to 1e-10.
+  The contact bond (-dem_bond_model contact: no moments, strengths as forces) alike in tension and shear, its break
+  loads the strengths themselves; bent 10 times past the parallel bond's break rotation it holds and gives no torque.
   On 1 and 2 ranks (on 2 the bond is between spheres of different ranks).
   test_bond_break.py VOFDEM"""
 import math
@@ -30,6 +32,8 @@ A, I, J = math.pi * R**2, math.pi * R**4 / 4, math.pi * R**4 / 2
 m = rho * 4.0 / 3.0 * math.pi * r**3
 Isphere = 0.4 * m * r * r
 EPS = 1e-10
+F_t, F_s = 3.0, 2.0  # the contact bond's strengths, N
+CONTACT = ["-dem_bond_model", "contact", "-dem_bond_tensile_strength", "%.17g" % F_t, "-dem_bond_shear_strength", "%.17g" % F_s]
 SCENE = ["-physics", "dem", "-grid_upper", "0.01,0.01,0.01", "-grid_cells", "2,2,2", "-gravity", "0,0,0", "-dem_radius", "%.17g" % r,
          "-dem_density", "%.17g" % rho, "-dem_cohesion", "bond", "-dem_bond_radius_ratio", "%.17g" % lam, "-dem_bond_normal_stiffness", "%.17g" % kn,
          "-dem_bond_shear_stiffness", "%.17g" % ks, "-dem_bond_tensile_strength", "%.17g" % sigma_t, "-dem_bond_shear_strength", "%.17g" % tau_s,
@@ -51,6 +55,11 @@ CASES = {
     "tension+bending": dict(load=sigma_t, unit="Pa", column="bond_sigma_per_strength",
                             motion=lambda f: dict(v=(0, 0, -0.5 * f * sigma_t / kn / dt), w=(0, 0.5 * f * sigma_t / (kn * R) / dt, 0)),
                             measure=lambda dv, dw: 2 * m * dv[2] / dt / A - 2 * Isphere * dw[1] / dt * R / I),
+    # The contact bond (-dem_bond_model contact): the same springs, no moments, strengths as forces (N).
+    "contact tension": dict(load=F_t, unit="N", column="bond_sigma_per_strength", args=CONTACT,
+                            motion=lambda f: dict(v=(0, 0, -f * F_t / (kn * A) / dt)), measure=lambda dv, dw: 2 * m * dv[2] / dt),
+    "contact shear": dict(load=F_s, unit="N", column="bond_tau_per_strength", args=CONTACT,
+                          motion=lambda f: dict(v=(f * F_s / (ks * A) / dt, 0, 0)), measure=lambda dv, dw: -2 * m * dv[0] / dt),
 }
 
 
@@ -61,14 +70,14 @@ def run(exe, ranks, tmp, name, f):
     z0, z1 = 0.005 - r - gap / 2, 0.005 + r + gap / 2
     rows = [(0.005, 0.005, z0) + tuple(0.5 * c for c in v) + tuple(0.5 * c for c in w),
             (0.005, 0.005, z1) + tuple(-0.5 * c for c in v) + tuple(-0.5 * c for c in w)]
-    out = os.path.join(tmp, "%s-%s-%d" % (name.replace("+", "_"), "below" if f < 1 else "above", ranks))
+    out = os.path.join(tmp, "%s-%s-%d" % (name.replace("+", "_").replace(" ", "_"), "below" if f < 1 else "above" if f < 2 else "far", ranks))
     os.makedirs(out)
     path = os.path.join(out, "pair.csv")
     with open(path, "w") as fh:
         fh.write("x,y,z,vx,vy,vz,wx,wy,wz\n")
         for row in rows:
             fh.write(",".join("%.17g" % c for c in row) + "\n")
-    args = SCENE + ["-dem_particles_file", path, "-dem_save_particles", os.path.join(out, "after.csv"), "-output_dir", out]
+    args = SCENE + CASES[name].get("args", []) + ["-dem_particles_file", path, "-dem_save_particles", os.path.join(out, "after.csv"), "-output_dir", out]
     if ranks == 2:
         args += ["-grid_ranks", "1,1,2"]
     run_vofdem(exe, ranks, args)
@@ -90,7 +99,7 @@ def main():
     print("bond radius R = %.6g m, A = %.6e m^2, I = %.6e m^4, J = %.6e m^4" % (R, A, I, J))
     try:
         for ranks in (1, 2):
-            for name, case in CASES.items():
+            for name, case in [(k, c) for k, c in CASES.items() if k != "contact bending"]:
                 last, dv, dw = run(exe, ranks, tmp, name, 1 - EPS)
                 if last is None:
                     check(False, "%s on %d rank(s): the run wrote its monitor and particles" % (name, ranks))
@@ -100,8 +109,8 @@ def main():
                 ratio = float(last[case["column"]]) - (1 - EPS)
                 check(int(last["bonds_intact"]) == 1 and int(last["bonds_broken"]) == 0,
                       "%s, %d rank(s), at (1 - 1e-10) of the break load: the bond holds (intact %s, broken %s)" % (name, ranks, last["bonds_intact"], last["bonds_broken"]))
-                check(abs(rel) < 1e-12, "%s, %d rank(s): it carries %.15e %s, break load %.15e %s (eqs 18-19) times (1 - 1e-10) to %.1e (tolerance 1e-12)"
-                      % (name, ranks, load, case["unit"], case["load"], case["unit"], abs(rel)))
+                check(abs(rel) < 1e-12, "%s, %d rank(s): it carries %.15e %s, break load %.15e %s (%s) times (1 - 1e-10) to %.1e (tolerance 1e-12)"
+                      % (name, ranks, load, case["unit"], case["load"], case["unit"], "the strength" if "args" in case else "eqs 18-19", abs(rel)))
                 check(abs(ratio) < 1e-12, "%s, %d rank(s): the monitor's %s is %s, 1 - 1e-10 to %.1e" % (name, ranks, case["column"], last[case["column"]], abs(ratio)))
                 last, dv, dw = run(exe, ranks, tmp, name, 1 + EPS)
                 if last is None:
@@ -110,6 +119,14 @@ def main():
                 check(int(last["bonds_intact"]) == 0 and int(last["bonds_broken"]) == 1 and max(abs(c) for c in dv + dw) == 0,
                       "%s, %d rank(s), at (1 + 1e-10) of it: the bond breaks (intact %s, broken %s) and gives no force (|dv|, |dw| <= %.1e)"
                       % (name, ranks, last["bonds_intact"], last["bonds_broken"], max(abs(c) for c in dv + dw)))
+            # A contact bond has no moments: turned 10 times past the parallel bond's break rotation it holds and
+            # gives no torque (the check that the contact bond is not the parallel one).
+            CASES["contact bending"] = dict(CASES["bending"], args=CONTACT)
+            last, dv, dw = run(exe, ranks, tmp, "contact bending", 10)
+            if last is not None:
+                check(int(last["bonds_intact"]) == 1 and max(abs(c) for c in dw) == 0,
+                      "contact bending, %d rank(s), 10 times the parallel bond's break rotation: the contact bond holds (intact %s) with no torque (|dw| %.1e)"
+                      % (ranks, last["bonds_intact"], max(abs(c) for c in dw)))
     finally:
         shutil.rmtree(tmp, ignore_errors=True)
     finish()
