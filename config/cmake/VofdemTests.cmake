@@ -38,6 +38,9 @@ set_tests_properties(dem/contact_step PROPERTIES LABELS "quick;dem" PROCESSORS 2
 # G1: two bonded spheres pulled, sheared, bent and twisted to just below and above their break loads (P13).
 add_test(NAME dem/bond_break COMMAND ${VOFDEM_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/test/dem/test_bond_break.py $<TARGET_FILE:vofdem_app>)
 set_tests_properties(dem/bond_break PROPERTIES LABELS "quick;dem;bonds" PROCESSORS 2 TIMEOUT 300)
+# A bonded pair vibrating as it flies across the rank boundary: its bond's history through ~280 rebuilds and a migration.
+add_test(NAME dem/bond_rebuilds COMMAND ${VOFDEM_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/test/dem/test_bond_rebuilds.py $<TARGET_FILE:vofdem_app>)
+set_tests_properties(dem/bond_rebuilds PROPERTIES LABELS "quick;dem;bonds" PROCESSORS 2 TIMEOUT 300)
 add_test(NAME dem/periodic_seam COMMAND ${VOFDEM_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/test/dem/test_periodic_seam.py $<TARGET_FILE:vofdem_app>)
 set_tests_properties(dem/periodic_seam PROPERTIES LABELS "quick;dem" PROCESSORS 2 TIMEOUT 300)
 
