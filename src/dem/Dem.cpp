@@ -267,13 +267,7 @@ PetscErrorCode Dem::SetUp(Grid &grid, const PetscReal gravity[3], std::uint64_t 
   }
   if (vdw_.hamaker > 0) adhesionRange_ = vdw_.range;
   if (lubrication_.viscosity > 0) adhesionRange_ = std::max(adhesionRange_, lubrication_.maxGap);
-  // Bonds (P13) hold up to -dem_bond_reach apart, and their springs may bind the step (Bonds::StepLimit).
-  adhesionRange_ = std::max(adhesionRange_, bonds_.Reach());
-  {
-    PetscReal rhoMin = PETSC_MAX_REAL;
-    for (const DemMaterial &m : types_) rhoMin = std::min(rhoMin, m.density);
-    bondStepLimit_ = bonds_.StepLimit(rMax_, rhoMin * 4.0 / 3.0 * PETSC_PI * rMin_ * rMin_ * rMin_);
-  }
+  SetUpBonds();  // DemBonds.cpp: their reach and step (P13)
   PetscCall(Rebuild());
   record_.on = out_.NeedsContacts(steps_);
   PetscCall(ComputeForces(0));
@@ -515,12 +509,7 @@ PetscErrorCode Dem::View(PetscViewer viewer) const {
     PetscCall(PetscViewerASCIIPrintf(viewer, "dem: adhesion: JKR (P6), surface energies per type (work of adhesion %g J/m^2 between type 0's spheres), walls %g J/m^2; bonds break up to %g m apart; bonds at rest allow steps up to %g s (HertzMindlin.hpp SpinStep)\n",
                                      (double)pair_.w, (double)wall_.w, (double)adhesionRange_, (double)jkrStepLimit_));
   if (sjkr_) PetscCall(PetscViewerASCIIPrintf(viewer, "dem: adhesion: SJKR (LIGGGHTS' cohesion sjkr, P6), cohesion energy density %g J/m^3\n", (double)sjkrDensity_));
-  if (bonds_.On()) {
-    const bond::Params &b = bonds_.Law();
-    PetscCall(PetscViewerASCIIPrintf(viewer, "dem: bonds (P13): %s bonds of radius %g min(r_i, r_j), k_n %g Pa/m, k_s %g Pa/m, strengths %g (tensile), %g (shear) %s; made at t = %g s between pairs closer than %g m, given up beyond a gap of %g m\n",
-                                     b.moments ? "parallel" : "contact", (double)b.lambda, (double)b.kn, (double)b.ks, (double)b.tensile, (double)b.shear, b.moments ? "Pa" : "N",
-                                     (double)bonds_.AtTime(), (double)bonds_.Gap(), (double)bonds_.Reach()));
-  }
+  PetscCall(ViewBonds(viewer));  // DemBonds.cpp (P13)
   if (surfaceEnergyModulus_ > 0)
     for (size_t t = 0; t < types_.size(); ++t)
       PetscCall(PetscViewerASCIIPrintf(viewer, "dem: surface energy of type '%s': %g J/m^2 measured at E = %g Pa, scaled to %g J/m^2 for E' = %g Pa (P9: (E'/E)^(2/5), keeps the energy of separation, not the pull-off force)\n",

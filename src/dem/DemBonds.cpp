@@ -3,9 +3,30 @@
 // are carried through rebuilds and across ranks like the springs (Bonds.hpp, HistoryExchange.hpp).
 #include "vofdem/dem/Dem.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 namespace vofdem {
+
+// At SetUp: the lists reach -dem_bond_reach beyond touching (Dem's adhesion range), and the bonds' springs may
+// bind the step (Bonds::StepLimit, for the lightest sphere present).
+void Dem::SetUpBonds() {
+  adhesionRange_ = std::max(adhesionRange_, bonds_.Reach());
+  PetscReal rhoMin = PETSC_MAX_REAL;
+  for (const DemMaterial &m : types_) rhoMin = std::min(rhoMin, m.density);
+  bondStepLimit_ = bonds_.StepLimit(rMax_, rhoMin * 4.0 / 3.0 * PETSC_PI * rMin_ * rMin_ * rMin_);
+}
+
+// The banner's line of the bonds (none without -dem_cohesion bond).
+PetscErrorCode Dem::ViewBonds(PetscViewer viewer) const {
+  PetscFunctionBeginUser;
+  if (!bonds_.On()) PetscFunctionReturn(0);
+  const bond::Params &b = bonds_.Law();
+  PetscCall(PetscViewerASCIIPrintf(viewer, "dem: bonds (P13): %s bonds of radius %g min(r_i, r_j), k_n %g Pa/m, k_s %g Pa/m, strengths %g (tensile), %g (shear) %s; made at t = %g s between pairs closer than %g m, given up beyond a gap of %g m\n",
+                                   b.moments ? "parallel" : "contact", (double)b.lambda, (double)b.kn, (double)b.ks, (double)b.tensile, (double)b.shear, b.moments ? "Pa" : "N",
+                                   (double)bonds_.AtTime(), (double)bonds_.Gap(), (double)bonds_.Reach()));
+  PetscFunctionReturn(0);
+}
 
 // After a force evaluation (hot_ holds the positions, ghosts' as their owners'): every pair of the list whose
 // gap is below -dem_bond_gap (overlapping ones too) gets a new bond with no force, seen at its normal now.

@@ -5,7 +5,7 @@
 // sigma = -F_n/A + |M_s| R/I or the largest shear stress tau = |F_s|/A + |M_n| R/J passes its strength.
 // A contact bond is the same springs at the contact point without the moments, its strengths forces.
 // Pure inline functions: they run inside the pair loop (DemContacts.cpp) and are tested through the app
-// (test/dem/test_bond_break.py, examples/ex50_bonded_beam.cpp).
+// (test/dem/test_bond_break.py, examples/ex56_bonded_beam.cpp).
 #pragma once
 
 #include "vofdem/dem/HertzMindlin.hpp"

@@ -2,7 +2,7 @@
 // pair of the neighbour list (structure of arrays beside the list's springs; empty without bonds), the
 // intact bonds carried by the pair's global ids while the list is rebuilt (as the springs, ContactHistory),
 // and the counts the monitor shows. The law itself is BondLaw.hpp; the pair loop (DemContacts.cpp) applies it,
-// DemBonds.cpp makes the bonds at -dem_bond_at_time and carries them across ranks.
+// DemBonds.cpp makes the bonds at -dem_bond_at_time and counts them; HistoryExchange.hpp carries them across ranks.
 #pragma once
 
 #include "vofdem/base/Options.hpp"

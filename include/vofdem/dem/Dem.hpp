@@ -153,6 +153,8 @@ private:
   void           JkrPairConstants();                    // DemContacts.cpp: jkrPairs_ for the list as it is
   PetscErrorCode ComputeForces(PetscReal dt);           // DemContacts.cpp
   PetscErrorCode UpdateContactStepLimit();              // DemContacts.cpp: contactStepLimit_ from the contacts (collective)
+  void           SetUpBonds();                          // DemBonds.cpp: the bonds' reach and step limit (SetUp)
+  PetscErrorCode ViewBonds(PetscViewer viewer) const;   // DemBonds.cpp: the banner's line
   void           MakeBonds();                           // DemBonds.cpp: bonds between the list's close pairs (-dem_bond_at_time)
   PetscErrorCode SummarizeBonds(DemSummary *s) const;   // DemBonds.cpp (collective)
   // cohesion: 0 none, 1 JKR, 2 SJKR; near: forces across a gap (van der Waals and/or lubrication)
