@@ -35,6 +35,12 @@ set_tests_properties(dem/epsd_rest PROPERTIES LABELS "quick;dem;rolling" PROCESS
 add_test(NAME dem/contact_step COMMAND ${VOFDEM_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/test/dem/test_contact_step.py $<TARGET_FILE:vofdem_app>)
 set_tests_properties(dem/contact_step PROPERTIES LABELS "quick;dem" PROCESSORS 2 TIMEOUT 300)
 # A random fill and an insertion region across periodic x and y: centres up to the faces, no overlap through them.
+# G1: two bonded spheres pulled, sheared, bent and twisted to just below and above their break loads (P13).
+add_test(NAME dem/bond_break COMMAND ${VOFDEM_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/test/dem/test_bond_break.py $<TARGET_FILE:vofdem_app>)
+set_tests_properties(dem/bond_break PROPERTIES LABELS "quick;dem;bonds" PROCESSORS 2 TIMEOUT 300)
+# A bonded pair vibrating as it flies across the rank boundary: its bond's history through ~280 rebuilds and a migration.
+add_test(NAME dem/bond_rebuilds COMMAND ${VOFDEM_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/test/dem/test_bond_rebuilds.py $<TARGET_FILE:vofdem_app>)
+set_tests_properties(dem/bond_rebuilds PROPERTIES LABELS "quick;dem;bonds" PROCESSORS 2 TIMEOUT 300)
 add_test(NAME dem/periodic_seam COMMAND ${VOFDEM_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/test/dem/test_periodic_seam.py $<TARGET_FILE:vofdem_app>)
 set_tests_properties(dem/periodic_seam PROPERTIES LABELS "quick;dem" PROCESSORS 2 TIMEOUT 300)
 
@@ -250,6 +256,9 @@ vofdem_bad_input(energy_absorptivity_range "option -laser_absorptivity: .*1.5" $
 vofdem_bad_input(energy_laser_without_energy "unknown or unused option -laser_power" -physics dem -grid_upper 0.01,0.01,0.01 -laser_power 100)
 vofdem_bad_input(energy_material_missing "option -energy_metal: .*no_solidus.yaml: .*needs a solidus|option -energy_metal_solidus: the metal .*no_solidus.yaml.* needs a solidus and a liquidus" ${VOFDEM_ENERGY_BOX} -energy_metal ${CMAKE_CURRENT_SOURCE_DIR}/test/energy/no_solidus.yaml)
 vofdem_bad_input(energy_flow_without_vof "option -physics: 'energy' with 'flow' needs 'vof'" -physics flow,energy)
+# Bonds (P13): a bond law without its strengths.
+vofdem_bad_input(bond_without_tensile "option -dem_bond_tensile_strength: -dem_cohesion bond needs the bonds' tensile strength \\(Pa\\)" ${_dem} -dem_cohesion bond -dem_bond_normal_stiffness 1e12 -dem_bond_shear_strength 1e6)
+vofdem_bad_input(bond_without_shear "option -dem_bond_shear_strength: -dem_cohesion bond needs the bonds' shear strength \\(N\\)" ${_dem} -dem_cohesion bond -dem_bond_model contact -dem_bond_normal_stiffness 1e12 -dem_bond_tensile_strength 1)
 vofdem_bad_input(energy_with_dem "option -physics: 'energy' with 'dem' is not built yet" -physics dem,energy -grid_upper 0.01,0.01,0.01 -dt 1e-5)
 vofdem_bad_input(energy_density_mismatch "option -energy_metal_density: 8380\\.? kg/m\\^3 .* differs from the interface's -vof_density 1000\\.? kg/m\\^3" -physics flow,vof,energy -grid_cells 4,4,4)
 vofdem_bad_input(energy_needs_dt "option -dt: the energy equation is implicit and sets no step of its own without a moving laser" -physics energy -grid_cells 4,4,4)

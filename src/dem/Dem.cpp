@@ -62,6 +62,7 @@ PetscErrorCode Dem::SetFromOptions(MPI_Comm comm) {
       cohesionRow_ = contact::Find(contact::kCohesionLaws, chosen[0]);
       jkr_         = (PetscBool)(contact::kCohesionLaws[cohesionRow_].model == kJkr);
       sjkr_        = (PetscBool)(contact::kCohesionLaws[cohesionRow_].model == kSjkr);
+      PetscCall(bonds_.SetFromOptions(opt, comm, contact::kCohesionLaws[cohesionRow_].model == kBond, radius_));  // -dem_bond_* (Bonds.cpp, P13)
       PetscCall(opt.Real("-cohesion_energy_density", "SJKR cohesion energy density k: F = k A_overlap (P6; LIGGGHTS' cohesionEnergyDensity)", "J/m^3", &sjkrDensity_,
                          RealRange::NonNegative()));
       if (sjkr_ && sjkrDensity_ == 0) VofdemInputError(comm, "option -dem_cohesion sjkr needs -dem_cohesion_energy_density > 0");
@@ -266,6 +267,7 @@ PetscErrorCode Dem::SetUp(Grid &grid, const PetscReal gravity[3], std::uint64_t 
   }
   if (vdw_.hamaker > 0) adhesionRange_ = vdw_.range;
   if (lubrication_.viscosity > 0) adhesionRange_ = std::max(adhesionRange_, lubrication_.maxGap);
+  SetUpBonds();  // DemBonds.cpp: their reach and step (P13)
   PetscCall(Rebuild());
   record_.on = out_.NeedsContacts(steps_);
   PetscCall(ComputeForces(0));
@@ -431,6 +433,7 @@ PetscErrorCode Dem::Summarize(DemSummary *s) const {
   s->inserted = sources_.Inserted(), s->deleted = sources_.Deleted();
   s->massInserted = sources_.MassInserted(), s->massDeleted = sources_.MassDeleted();
   PetscCall(wallSet_.Summarize(comm_, &s->walls));
+  PetscCall(SummarizeBonds(s));
   PetscFunctionReturn(0);
 }
 
@@ -506,6 +509,7 @@ PetscErrorCode Dem::View(PetscViewer viewer) const {
     PetscCall(PetscViewerASCIIPrintf(viewer, "dem: adhesion: JKR (P6), surface energies per type (work of adhesion %g J/m^2 between type 0's spheres), walls %g J/m^2; bonds break up to %g m apart; bonds at rest allow steps up to %g s (HertzMindlin.hpp SpinStep)\n",
                                      (double)pair_.w, (double)wall_.w, (double)adhesionRange_, (double)jkrStepLimit_));
   if (sjkr_) PetscCall(PetscViewerASCIIPrintf(viewer, "dem: adhesion: SJKR (LIGGGHTS' cohesion sjkr, P6), cohesion energy density %g J/m^3\n", (double)sjkrDensity_));
+  PetscCall(ViewBonds(viewer));  // DemBonds.cpp (P13)
   if (surfaceEnergyModulus_ > 0)
     for (size_t t = 0; t < types_.size(); ++t)
       PetscCall(PetscViewerASCIIPrintf(viewer, "dem: surface energy of type '%s': %g J/m^2 measured at E = %g Pa, scaled to %g J/m^2 for E' = %g Pa (P9: (E'/E)^(2/5), keeps the energy of separation, not the pull-off force)\n",

@@ -8,6 +8,7 @@
 // vertex DMDA, the halo the new rank boxes, and every particle goes straight to its new owner.
 // Coupled scenes must not do this: there the fluid cells decide the decomposition (docs/architecture.md).
 #include "vofdem/dem/Dem.hpp"
+#include "vofdem/dem/HistoryExchange.hpp"
 
 #include "vofdem/base/Options.hpp"
 #include "vofdem/base/Runtime.hpp"
@@ -244,37 +245,12 @@ PetscErrorCode Dem::Balance(PetscBool *repartitioned) {
 }
 
 // After a repartition a particle may have moved to a rank that is not among its old rank's halo
-// ranks, so ExchangeSprings may miss its springs: every rank gets all of them (rare, and the map is
-// small: touching pairs only). Keys as in ExchangeSprings: the two ids' bits, then the springs.
+// ranks, so ExchangeSprings may miss its springs: every rank gets all of them, and all intact bonds
+// (rare, and the maps are small: touching pairs and bonds only; HistoryExchange.hpp).
 PetscErrorCode Dem::GatherSprings() {
-  constexpr int width = 2 + kSpringWidth;
-  PetscMPIInt   size;
-
   PetscFunctionBeginUser;
-  PetscCallMPI(MPI_Comm_size(comm_, &size));
-  std::vector<PetscReal> out;
-  out.reserve(springs_.size() * width);
-  for (const auto &[key, s] : springs_) {
-    PetscReal rec[width];
-    std::memcpy(&rec[0], &key.lo, sizeof(PetscInt64));
-    std::memcpy(&rec[1], &key.hi, sizeof(PetscInt64));
-    std::copy(s.begin(), s.end(), &rec[2]);
-    out.insert(out.end(), rec, rec + width);
-  }
-  int              count = (int)out.size();
-  std::vector<int> counts(size), offsets(size + 1, 0);
-  PetscCallMPI(MPI_Allgather(&count, 1, MPI_INT, counts.data(), 1, MPI_INT, comm_));
-  for (int q = 0; q < size; ++q) offsets[q + 1] = offsets[q] + counts[q];
-  std::vector<PetscReal> in(offsets[size]);
-  PetscCallMPI(MPI_Allgatherv(out.data(), count, MPIU_REAL, in.data(), counts.data(), offsets.data(), MPIU_REAL, comm_));
-  for (size_t r = 0; r + width <= in.size(); r += width) {
-    PairKey key;
-    std::memcpy(&key.lo, &in[r], sizeof(PetscInt64));
-    std::memcpy(&key.hi, &in[r + 1], sizeof(PetscInt64));
-    std::array<PetscReal, kSpringWidth> h;
-    std::copy(&in[r + 2], &in[r + 2] + kSpringWidth, h.begin());
-    springs_.emplace(key, h);
-  }
+  PetscCall(GatherHistory<kSpringWidth>(comm_, &springs_));
+  if (bonds_.On()) PetscCall(GatherHistory<bond::kWidth>(comm_, &bonds_.carried));
   PetscFunctionReturn(0);
 }
 

@@ -3,12 +3,11 @@
 #include "vofdem/dem/Dem.hpp"
 #include "vofdem/dem/ContactLaw.hpp"
 #include "vofdem/dem/ContactLawTable.hpp"
+#include "vofdem/dem/HistoryExchange.hpp"
 #include "vofdem/dem/WallContacts.hpp"
 
 #include <algorithm>
-#include <cstring>
 #include <type_traits>
-#include <unordered_set>
 
 namespace vofdem {
 
@@ -40,6 +39,7 @@ PetscErrorCode Dem::Rebuild() {
     auto &h = springs_[{idOf(list_.first[k]), idOf(list_.second[k])}];  // lower id first
     std::copy(s, s + kSpringWidth, h.begin());
   }
+  bonds_.Collect(list_, idOf);  // intact bonds (P13), touching or not
   for (size_t k = 0; k < walls_.Size(); ++k) {
     if (!walls_.touching[k]) continue;
     const PetscReal *s = &walls_.spring[kSpringWidth * k];
@@ -93,6 +93,7 @@ PetscErrorCode Dem::Rebuild() {
       list_.touching[k] = 1;
     }
   }
+  bonds_.Attach(list_, idOf);
   // 6. Wall candidates: particles that can reach a face before the next rebuild (they move at most
   // half the skin); their springs from the carried ones.
   walls_.Clear();
@@ -119,60 +120,12 @@ PetscErrorCode Dem::Rebuild() {
   PetscFunctionReturn(0);
 }
 
-// Each rank sends a spring to a neighbour when the neighbour now holds one of the pair as a ghost,
-// or when one of the pair has left this rank (it is somewhere among the neighbours); a wall spring
-// goes only when its particle has left. Receivers keep what they lack; springs of contacts that are
-// not in the new lists are dropped at steps 5 and 6.
+// The springs, then the intact bonds, to the ranks that need them (HistoryExchange.hpp); receivers keep what they
+// lack, and histories of contacts that are not in the new lists are dropped at steps 5 and 6 of Rebuild().
 PetscErrorCode Dem::ExchangeSprings(const std::vector<PetscInt64> &localIds) {
-  const auto &ranks = halo_.Ranks();
-  const auto &send  = halo_.SendLists();
-  const int   nq    = (int)ranks.size();
-  constexpr int width = 2 + kSpringWidth;  // lo id, hi id (bits), springs
-
   PetscFunctionBeginUser;
-  if (nq == 0) PetscFunctionReturn(0);
-  std::unordered_set<PetscInt64> local(localIds.begin(), localIds.end());
-  std::vector<std::vector<PetscReal>> out(nq);
-  std::vector<PetscInt>               outCount(nq), inCount(nq);
-  for (int q = 0; q < nq; ++q) {
-    std::unordered_set<PetscInt64> sent;
-    for (PetscInt p : send[q]) sent.insert(localIds[p]);
-    for (const auto &[key, s] : springs_) {
-      // A wall contact travels only with its particle; a pair also to where its partner is a ghost.
-      const bool left = !local.count(key.lo) || (!key.IsWall() && !local.count(key.hi));
-      if (!left && (key.IsWall() || (!sent.count(key.lo) && !sent.count(key.hi)))) continue;
-      PetscReal rec[width];
-      std::memcpy(&rec[0], &key.lo, sizeof(PetscInt64));
-      std::memcpy(&rec[1], &key.hi, sizeof(PetscInt64));
-      std::copy(s.begin(), s.end(), &rec[2]);
-      out[q].insert(out[q].end(), rec, rec + width);
-    }
-    outCount[q] = (PetscInt)(out[q].size() / width);
-  }
-  std::vector<MPI_Request> req(2 * nq);
-  MPI_Comm                 comm = halo_.Comm();
-  for (int q = 0; q < nq; ++q) {
-    PetscCallMPI(MPI_Irecv(&inCount[q], 1, MPIU_INT, ranks[q], 73, comm, &req[q]));
-    PetscCallMPI(MPI_Isend(&outCount[q], 1, MPIU_INT, ranks[q], 73, comm, &req[nq + q]));
-  }
-  PetscCallMPI(MPI_Waitall(2 * nq, req.data(), MPI_STATUSES_IGNORE));
-  std::vector<std::vector<PetscReal>> in(nq);
-  for (int q = 0; q < nq; ++q) {
-    in[q].resize((size_t)width * inCount[q]);
-    PetscCallMPI(MPI_Irecv(in[q].data(), width * (int)inCount[q], MPIU_REAL, ranks[q], 74, comm, &req[q]));
-    PetscCallMPI(MPI_Isend(out[q].data(), width * (int)outCount[q], MPIU_REAL, ranks[q], 74, comm, &req[nq + q]));
-  }
-  PetscCallMPI(MPI_Waitall(2 * nq, req.data(), MPI_STATUSES_IGNORE));
-  for (int q = 0; q < nq; ++q)
-    for (PetscInt r = 0; r < inCount[q]; ++r) {
-      const PetscReal *rec = &in[q][(size_t)width * r];
-      PairKey          key;
-      std::memcpy(&key.lo, &rec[0], sizeof(PetscInt64));
-      std::memcpy(&key.hi, &rec[1], sizeof(PetscInt64));
-      std::array<PetscReal, kSpringWidth> h;
-      std::copy(&rec[2], &rec[2] + kSpringWidth, h.begin());
-      springs_.emplace(key, h);
-    }
+  PetscCall(ExchangeHistory<kSpringWidth>(halo_, localIds, 73, &springs_));
+  if (bonds_.On()) PetscCall(ExchangeHistory<bond::kWidth>(halo_, localIds, 75, &bonds_.carried));
   PetscFunctionReturn(0);
 }
 
@@ -204,6 +157,7 @@ PetscErrorCode Dem::ComputeForces(PetscReal dt) {
       });
     });
   }));
+  if (bonds_.Due(time_)) MakeBonds();  // -dem_bond_at_time (P13): they act from the next evaluation on
   PetscFunctionReturn(0);
 }
 
@@ -214,7 +168,7 @@ PetscErrorCode Dem::ComputeForces(PetscReal dt) {
 // keeps them in registers for the whole loop.
 template <hertz::Rolling RM, int COH, bool NEAR, bool LIN, bool MULTI>
 PetscErrorCode Dem::ComputeForcesWith(PetscReal dt) {
-  constexpr bool JKR = COH == kJkr, SJKR = COH == kSjkr;
+  constexpr bool JKR = COH == kJkr, SJKR = COH == kSjkr, BOND = COH == kBond;
   ParticleArrays a;
 
   PetscFunctionBeginUser;
@@ -285,6 +239,11 @@ PetscErrorCode Dem::ComputeForcesWith(PetscReal dt) {
   }
   PetscReal *__restrict__ force = a.f, *__restrict__ torque = a.torque;
   const PeriodicImages &images = halo_.Images();
+  // Bonds (P13): the law and reach in registers, the histories beside the list's springs.
+  const bond::Params bondLaw = bonds_.Law();
+  const PetscReal    bondReach = bonds_.Reach();
+  PetscReal         *bondState = BOND ? bonds_.state.data() : nullptr, bondsBroken = 0;
+  PetscCheck(!BOND || bonds_.state.size() == bond::kWidth * list_.Size(), PETSC_COMM_SELF, PETSC_ERR_PLIB, "bond histories for %zu pairs, the list has %zu", bonds_.state.size() / bond::kWidth, list_.Size());
   // Prefetches a few pairs ahead: the springs' line (loaded for touching pairs only, so the hardware
   // does not see a stream) and the second particle's x and r (two lines of HotParticle).
   constexpr size_t kSpringsAhead = 8, kParticleAhead = 16;
@@ -319,6 +278,37 @@ PetscErrorCode Dem::ComputeForcesWith(PetscReal dt) {
           for (int e = 0; e < 3; ++e) force[3 * ia + e] -= fv * dx[e];
         if (ib < n)
           for (int e = 0; e < 3; ++e) force[3 * ib + e] += fv * dx[e];
+      }
+    }
+    if constexpr (BOND) {  // beside the contact law, touching or not (P13)
+      PetscReal *h = &bondState[bond::kWidth * k];
+      if (h[bond::kState] != 0) {
+        const HotParticle &A = hot_[ia], &B = hot_[ib];
+        // Lever arms from the centres to the bond's plane, in the ratio of the radii: a pair turning as one
+        // rigid body moves its two contact points alike (no spurious shear across a gap or an overlap).
+        const PetscReal dist = std::sqrt(dist2), inv = 1 / dist, la = A.r * dist / rsum, lb = B.r * dist / rsum;
+        const PetscReal nb[3] = {dx[0] * inv, dx[1] * inv, dx[2] * inv};
+        PetscReal       rw[3], wxn[3], du[3], dth[3], Fb[3], nxFs[3];
+        for (int e = 0; e < 3; ++e) rw[e] = la * A.w[e] + lb * B.w[e];
+        Cross(rw, nb, wxn);
+        for (int e = 0; e < 3; ++e) du[e] = (A.v[e] - B.v[e] - wxn[e]) * dt, dth[e] = (A.w[e] - B.w[e]) * dt;
+        const PetscReal     spin = 0.5 * dt * ((A.w[0] + B.w[0]) * nb[0] + (A.w[1] + B.w[1]) * nb[1] + (A.w[2] + B.w[2]) * nb[2]);
+        const bond::Section sec  = bond::SectionOf(bondLaw, A.r, B.r);
+        bond::Load          load;
+        if (dist - rsum > bondReach || bond::Update(bondLaw, sec, nb, du, dth, spin, h, &load)) {
+          std::fill(h, h + bond::kWidth, 0);  // broken, for good
+          bondsBroken += ia < n && ib < n ? 2 : 1;
+        } else {
+          const PetscReal *Fs = &h[bond::kFs], *Ms = &h[bond::kMs];
+          for (int e = 0; e < 3; ++e) Fb[e] = h[bond::kFn] * nb[e] + Fs[e];
+          Cross(nb, Fs, nxFs);
+          if (ia < n)
+            for (int e = 0; e < 3; ++e) force[3 * ia + e] += Fb[e], torque[3 * ia + e] += h[bond::kMn] * nb[e] + Ms[e] - la * nxFs[e];
+          if (ib < n)
+            for (int e = 0; e < 3; ++e) force[3 * ib + e] -= Fb[e], torque[3 * ib + e] -= h[bond::kMn] * nb[e] + Ms[e] + lb * nxFs[e];
+          stats_.bondSigma = std::max(stats_.bondSigma, load.sigma / bondLaw.tensile);
+          stats_.bondTau   = std::max(stats_.bondTau, load.tau / bondLaw.shear);
+        }
       }
     }
     if (!inContact) {
@@ -371,6 +361,7 @@ PetscErrorCode Dem::ComputeForcesWith(PetscReal dt) {
     const PetscReal twoRmin = 2 * std::min(A.r, B.r);
     if (delta > stats_.maxOverlap * twoRmin) stats_.maxOverlap = delta / twoRmin;  // rarely: no division per contact
   }
+  bonds_.brokenHalves += bondsBroken;
   PetscCall(swarm_.RestoreArrays(&a));
   PetscFunctionReturn(0);
 }

@@ -54,6 +54,12 @@ PetscErrorCode DemModule::Monitor(MonitorPart *part) {
       std::snprintf(buf, sizeof buf, ",%.10e,%.10e,%.10e", (double)q[0], (double)q[1], (double)q[2]);
       part->csv += buf;
     }
+  if (s.bonds) {  // -dem_cohesion bond (P13)
+    std::snprintf(buf, sizeof buf, ",%lld,%lld,%lld,%.15e,%.15e", (long long)s.bondsMade, (long long)s.bondsIntact, (long long)s.bondsBroken, (double)s.bondSigma, (double)s.bondTau);
+    part->csv += buf;
+    std::snprintf(buf, sizeof buf, "  bonds %lld intact %lld broken", (long long)s.bondsIntact, (long long)s.bondsBroken);
+    part->screen += buf;
+  }
   part->csv += extraCsv;
   PetscFunctionReturn(0);
 }

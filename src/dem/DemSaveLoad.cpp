@@ -86,6 +86,7 @@ struct Dem::SavedState {
   std::vector<PetscInt>               fieldBs;
   std::vector<PetscReal> pairIds, wallIds, wallSetIds, haloRanks, haloImages, sendCounts, send, stats;
   std::vector<PetscReal> particleOutputs, contactOutputs;  // the XDMF index entries, on rank 0
+  std::vector<PetscReal> bondCounts;  // bonds made and broken on this rank (halves, Bonds.hpp), and whether they were made
 };
 
 // The archived state, in order; Save and Load both run this, so a new piece of state is one line.
@@ -129,6 +130,12 @@ PetscErrorCode Dem::ArchiveState(RankArchive &ar, SavedState &st) {
   // Appended 2026-11-29: the step the contacts allowed, measured every -dem_contact_step_every steps, so that
   // a restart steps as the run did (files written before it keep the value SetUp measured from their state).
   if (ar.HasMore()) PetscCall(ar.Scalar(&contactStepLimit_));
+  // Appended 2026-12-04: the bonds (P13), one history per pair of the list (empty without -dem_cohesion bond), and
+  // the counts (files written before them load without bonds).
+  if (ar.HasMore()) {
+    PetscCall(ar.Array("pair_bond", &bonds_.state, bond::kWidth));
+    PetscCall(ar.Array("bond_counts", &st.bondCounts, 3));
+  }
   PetscFunctionReturn(0);
 }
 
@@ -148,7 +155,7 @@ PetscErrorCode Dem::SavedBytes(PetscInt64 *bytes) const {
     perParticle += bs;
   }
   PetscCall(DMSwarmGetLocalSize(swarm_.Dm(), &n));
-  values = perParticle * n + (PetscInt64)list_.Size() * (2 + 2 + kSpringWidth + 4) + (PetscInt64)walls_.Size() * (4 + kSpringWidth) +
+  values = perParticle * n + (PetscInt64)list_.Size() * (2 + 2 + kSpringWidth + 4) + (PetscInt64)bonds_.state.size() + (PetscInt64)walls_.Size() * (4 + kSpringWidth) +
            (PetscInt64)wallSet_.Candidates() * (5 + kSpringWidth);
   for (const auto &s : halo_.SendLists()) values += 1 + (PetscInt64)s.size();
   if (out_.particleEntries.size() + out_.contactEntries.size()) values += 3 * (PetscInt64)(out_.particleEntries.size() + out_.contactEntries.size());
@@ -184,6 +191,7 @@ PetscErrorCode Dem::Save(PetscViewer viewer) {
   st.haloImages.assign(halo_.ImageCodes().begin(), halo_.ImageCodes().end());
   for (const auto &s : halo_.SendLists()) st.sendCounts.push_back((PetscReal)s.size()), st.send.insert(st.send.end(), s.begin(), s.end());
   st.stats = {(PetscReal)stats_.pairContacts, (PetscReal)stats_.wallContacts, stats_.maxOverlap, stats_.elastic};
+  st.bondCounts = {bonds_.madeHalves, bonds_.brokenHalves, bonds_.Made() ? 1.0 : 0.0};
   for (int f = 0; f < 6; ++f) st.stats.insert(st.stats.end(), stats_.wallForce[f], stats_.wallForce[f] + 3);
   PetscMPIInt rank;
   PetscCallMPI(MPI_Comm_rank(comm_, &rank));
@@ -291,6 +299,18 @@ PetscErrorCode Dem::Load(PetscViewer viewer) {
   PetscCall(ar.Begin(viewer, comm_, true, "Dem::Load", !sameDecomposition));
   PetscCall(ArchiveState(ar, st));
   PetscCall(PetscViewerHDF5PopGroup(viewer));
+  PetscCheck(bonds_.On() || bonds_.state.empty(), comm_, PETSC_ERR_FILE_UNEXPECTED, "checkpoint: it holds bonds (P13), but this run has no -dem_cohesion bond");
+  if (bonds_.On() && !st.bondCounts.empty()) {  // as saved on this rank; on another rank count the totals go to rank 0
+    PetscMPIInt rank;
+    PetscCallMPI(MPI_Comm_rank(comm_, &rank));
+    PetscReal made = 0, broken = 0;
+    for (size_t k = 0; k + 2 < st.bondCounts.size(); k += 3) made += st.bondCounts[k], broken += st.bondCounts[k + 1];
+    const bool keepHere = ar.SameRanks() || rank == 0;
+    bonds_.madeHalves = keepHere ? made : 0, bonds_.brokenHalves = keepHere ? broken : 0;
+    bonds_.SetMade(st.bondCounts[2] != 0);
+  }
+  // A file written before the bonds: none (on another rank count Rebuild() sizes the histories).
+  if (ar.SameRanks() && bonds_.state.size() != bond::kWidth * list_.Size()) bonds_.state.assign(bonds_.On() ? bond::kWidth * list_.Size() : 0, 0);
   const int    iPos = 0, iId = 5;
   const size_t saved = st.fields[iId].size();
   std::vector<size_t> keep;  // saved particles this rank holds, in saved order
@@ -366,6 +386,14 @@ PetscErrorCode Dem::Load(PetscViewer viewer) {
     for (size_t k = 0; k < walls_.touching.size(); ++k)
       if (walls_.touching[k] && local(st.wallIds[k]))
         std::copy(&walls_.spring[kSpringWidth * k], &walls_.spring[kSpringWidth * (k + 1)], springs_[PairKey::Wall((PetscInt64)st.wallIds[k], walls_.wall[k])].begin());
+    // Intact bonds (P13) alike, touching or not.
+    bonds_.carried.clear();
+    for (size_t k = 0; k < bonds_.state.size() / bond::kWidth; ++k) {
+      const PetscReal *h = &bonds_.state[bond::kWidth * k], lo = st.pairIds[2 * k], hi = st.pairIds[2 * k + 1];
+      if (h[bond::kState] == 0 || !(local(lo) || local(hi))) continue;
+      std::copy(h, h + bond::kWidth, bonds_.carried[{(PetscInt64)lo, (PetscInt64)hi}].begin());
+    }
+    bonds_.state.clear();
     // The loaded lists are all ranks' concatenated: Rebuild() makes this rank's from the particles.
     list_.first.clear(), list_.second.clear(), list_.spring.clear(), list_.touching.clear(), list_.rstar.clear(), list_.sqrtMstar.clear();
     walls_.Clear();

@@ -83,6 +83,13 @@ SCENES = {
     # step its centre enters the box, also right after a restart, where the particles that can reach the box
     # before the next rebuild (ParticleSources::FindDeletionCandidates) come from the loaded state, not from the
     # fill the set-up made before loading it: its monitor, every step, must match the uninterrupted run's.
+    # 100 spheres in a lattice, 1 um apart, bonded at t = 0 (235 parallel bonds, P13) and shaken apart by random velocities:
+    # bonds break all through the 200 steps (about 1 in 10 by step 100, 24 by step 200), across the rank boundary too;
+    # the bonds' histories and counts must come back, and on another rank count the intact ones by id pair.
+    "dembonds": ("-physics dem -grid_cells 4,4,4 -grid_upper 0.01,0.01,0.01 -dem_radius 5e-4 -dem_fill_count 100 -dem_fill_spacing 1.001e-3 "
+                 "-dem_fill_lower 0.002,0.002,0.001 -dem_fill_upper 0.008,0.008,0.008 -dem_fill_velocity_spread 0.1 -seed 7 -dem_cohesion bond "
+                 "-dem_bond_normal_stiffness 1e13 -dem_bond_shear_stiffness 5e12 -dem_bond_tensile_strength 6e5 -dem_bond_shear_strength 6e5 "
+                 "-dem_bond_gap 1e-5".split(), 100, (100, 100)),
     "demdelete": ("-physics dem -grid_cells 4,4,4 -grid_upper 0.01,0.01,0.01 -dem_radius 5e-4 -dem_fill_count 60 -dem_fill_mode random "
                   "-dem_fill_lower 0,0,0.0025 -dem_fill_upper 0.01,0.01,0.007 -dem_fill_velocity 0,0,-2 -dem_fill_velocity_spread 0.3 -dem_skin 1e-3 "
                   "-dem_delete_boxes 0,0,0,0.01,0.01,0.0015 -gravity 0,0,-9.81 -seed 7".split(), 170, (170, 50)),
@@ -161,7 +168,7 @@ def case_bitwise(exe, scene, ranks):
     n = SCENES[scene][1]
     tmp = tempfile.mkdtemp(prefix="vofdem-ckpt-")
     a, b, c = (os.path.join(tmp, x) for x in "abc")
-    index, every = {"dem": ("particles.xmf", "-dem_output_every"), "demclumps": ("particles.xmf", "-dem_output_every"), "dembalance": ("particles.xmf", "-dem_output_every"), "demfunnel": ("particles.xmf", "-dem_output_every"), "demdelete": ("particles.xmf", "-dem_output_every"), "flow": ("flow.xmf", "-flow_output_every"), "vof": ("flow.xmf", "-flow_output_every"), "vofimplicit": ("flow.xmf", "-flow_output_every"),
+    index, every = {"dem": ("particles.xmf", "-dem_output_every"), "demclumps": ("particles.xmf", "-dem_output_every"), "dembalance": ("particles.xmf", "-dem_output_every"), "demfunnel": ("particles.xmf", "-dem_output_every"), "demdelete": ("particles.xmf", "-dem_output_every"), "dembonds": ("particles.xmf", "-dem_output_every"), "flow": ("flow.xmf", "-flow_output_every"), "vof": ("flow.xmf", "-flow_output_every"), "vofimplicit": ("flow.xmf", "-flow_output_every"),
                     "vofopen": ("flow.xmf", "-flow_output_every"),
                     "coupled": ("particles.xmf", "-dem_output_every"), "coupledvof": ("particles.xmf", "-dem_output_every"),
                     "coupledwet": ("particles.xmf", "-dem_output_every")}[scene]
@@ -277,6 +284,9 @@ def case_ranks(exe, scene, r1, r2):
     if scene == "dem":
         touching = int(np.count_nonzero(datasets(ckpt(b, n))["dem/pair_touching"]))
         check(touching >= 20, "dem: %d touching pairs with springs in the step-%d checkpoint (>= 20)" % (touching, n))
+    if scene == "dembonds":
+        bonds = np.asarray(datasets(ckpt(b, n))["dem/pair_bond"]).reshape(-1, 12)
+        check(np.count_nonzero(bonds[:, 0]) >= 100, "dembonds: %d intact bonds in the step-%d checkpoint (>= 100)" % (np.count_nonzero(bonds[:, 0]), n))
     if scene == "demperiodic":
         x = np.asarray(datasets(ckpt(b, n))["dem/swarm_DMSwarmPIC_coor"]).reshape(-1, 3)
         outside = int(np.count_nonzero((x[:, :2] < 0) | (x[:, :2] > 0.01)))
@@ -289,7 +299,7 @@ def case_ranks(exe, scene, r1, r2):
     p = run(exe, r2, scene, ["-max_steps", str(n + m), "-checkpoint_dir", b, "-restart", ckpt(b, n)])
     check(("written on %d rank" % r1) in p.stdout, "the restart says the file was written on %d rank(s)" % r1)
     errors, tol, same = compare_across(scene, ckpt(a, n + m), ckpt(b, n + m))
-    if scene in ("dem", "demclumps", "demperiodic", "demfunnel"):
+    if scene in ("dem", "demclumps", "demperiodic", "demfunnel", "dembonds"):
         check(same, "%s: the same particle ids after the restart on %d rank(s)" % (scene, r2))
     text = ", ".join("%s %.2e" % kv for kv in errors.items())
     check(max(errors.values()) <= tol, "%s: written on %d at step %d, continued on %d rank(s), %d steps later: %s (limit %g)" % (scene, r1, n, r2, m, text, tol))

@@ -37,6 +37,6 @@ TEST(ContactLawTable, EveryRowFoundAndBoundByIndex) {
 TEST(ContactLawTable, TextsListEveryRow) {
   EXPECT_EQ(contact::Choices(contact::kRollingLaws), "none, cdt, epsd or epsd2");
   EXPECT_EQ(contact::Choices(contact::kNormalLaws), "hertz or linear");
-  EXPECT_EQ(contact::Help(contact::kCohesionLaws), "none (no adhesion), jkr (JKR with hysteresis, P6), sjkr (LIGGGHTS' simplified JKR, F = k A)");
+  EXPECT_EQ(contact::Help(contact::kCohesionLaws), "none (no adhesion), jkr (JKR with hysteresis, P6), sjkr (LIGGGHTS' simplified JKR, F = k A), bond (bonded particles, parallel or contact bonds that break (-dem_bond_*), P13)");
   EXPECT_EQ(contact::Names(contact::kRollingLaws).size(), std::size(contact::kRollingLaws));
 }

@@ -10,7 +10,8 @@
 namespace vofdem {
 
 // Cohesion models, a template argument of the contact loops.
-inline constexpr int kNoCohesion = 0, kJkr = 1, kSjkr = 2;
+// kBond: the ordinary normal law where spheres overlap, and the bonds of Bonds.hpp beside it (P13).
+inline constexpr int kNoCohesion = 0, kJkr = 1, kSjkr = 2, kBond = 3;
 
 template <int COH, bool LIN>
 inline hertz::NormalLaw NormalLawAt(const hertz::PairMaterial &c, PetscReal kLinear, PetscReal delta, PetscReal Rstar, PetscReal *history, const hertz::JkrPair *jkr = nullptr) {

@@ -29,6 +29,7 @@ inline constexpr CohesionRow kCohesionLaws[] = {
     {"none", "no adhesion", kNoCohesion, false},
     {"jkr", "JKR with hysteresis, P6", kJkr, true},
     {"sjkr", "LIGGGHTS' simplified JKR, F = k A", kSjkr, false},
+    {"bond", "bonded particles, parallel or contact bonds that break (-dem_bond_*), P13", kBond, false},
 };
 
 // model: the template argument of hertz::RollingTorque; shown: the banner's name.

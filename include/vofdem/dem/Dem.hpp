@@ -8,6 +8,7 @@
 // output, stress and Save/Load (DemOutput.hpp, DemSaveLoad.cpp).
 #pragma once
 
+#include "vofdem/dem/Bonds.hpp"
 #include "vofdem/dem/Clumps.hpp"
 #include "vofdem/dem/ContactRecord.hpp"
 #include "vofdem/dem/DemOutput.hpp"
@@ -46,6 +47,9 @@ struct DemSummary {
   PetscBool  sources  = PETSC_FALSE;  // insertion sources or deletion boxes exist (ParticleSources)
   PetscInt64 inserted = 0, deleted = 0;  // particles inserted by the sources and deleted so far
   PetscReal  massInserted = 0, massDeleted = 0;  // kg
+  PetscBool  bonds = PETSC_FALSE;                 // -dem_cohesion bond (P13)
+  PetscInt64 bondsMade = 0, bondsIntact = 0, bondsBroken = 0;
+  PetscReal  bondSigma = 0, bondTau = 0;          // largest sigma / strength and tau / strength of the intact bonds at the last evaluation
   std::vector<WallLoad> walls;     // force and torque on each wall of -dem_walls (Walls.hpp)
 };
 
@@ -57,10 +61,13 @@ public:
   PetscErrorCode SetUp(Grid &grid, const PetscReal gravity[3], std::uint64_t seed);
   // Largest stable step: -dem_dt_factor times the Rayleigh time (P9), or less where JKR bonds at rest or
   // the contacts as they are (loaded, damped) are stiffer than that covers (HertzMindlin.hpp SpinStep).
-  PetscReal StableTimeStep() const { return std::min(std::min(dtFactor_ * rayleighTime_, jkrStepLimit_), contactStepLimit_); }
+  // Bonds (P13) may bind it too (Bonds::StepLimit).
+  PetscReal StableTimeStep() const { return std::min(std::min(std::min(dtFactor_ * rayleighTime_, jkrStepLimit_), contactStepLimit_), bondStepLimit_); }
   PetscReal RayleighTime() const { return rayleighTime_; }
   // What StableTimeStep() is a fraction of, for the banner.
   const char *TimeStepBasis() const {
+    if (bondStepLimit_ < std::min(std::min(dtFactor_ * rayleighTime_, jkrStepLimit_), contactStepLimit_))
+      return "dem bonds (the lightest sphere in 12 bonds of the largest section, omega dt = 1; Bonds::StepLimit)";
     if (contactStepLimit_ < std::min(dtFactor_ * rayleighTime_, jkrStepLimit_))
       return "dem contacts as they are (the stable step of the sphere whose contacts spin stiffest, HertzMindlin.hpp SpinStep; -dem_contact_step_every)";
     if (jkrStepLimit_ < dtFactor_ * rayleighTime_) return "dem JKR bonds at rest (0.8 x the stable step of a sphere spinning in 12 bonds, HertzMindlin.hpp SpinStep)";
@@ -129,6 +136,9 @@ public:
   PetscReal          FillVolumeFraction() const { return fillReached_; }  // reached by the random fill (0: none)
   // Monitor-table columns of the -dem_walls loads (",wall_<name>_fx_N,..."; empty without walls).
   std::string WallLoadColumns() const { return wallSet_.CsvColumns(); }
+  // Monitor-table columns of the bonds (P13): made, intact and broken so far, the largest sigma / tensile and
+  // tau / shear strength of the intact bonds at the last evaluation (empty without -dem_cohesion bond).
+  std::string BondColumns() const { return bonds_.On() ? ",bonds_made,bonds_intact,bonds_broken,bond_sigma_per_strength,bond_tau_per_strength" : ""; }
 
 private:
   PetscErrorCode Fill(std::uint64_t seed);              // DemFill.cpp
@@ -143,6 +153,10 @@ private:
   void           JkrPairConstants();                    // DemContacts.cpp: jkrPairs_ for the list as it is
   PetscErrorCode ComputeForces(PetscReal dt);           // DemContacts.cpp
   PetscErrorCode UpdateContactStepLimit();              // DemContacts.cpp: contactStepLimit_ from the contacts (collective)
+  void           SetUpBonds();                          // DemBonds.cpp: the bonds' reach and step limit (SetUp)
+  PetscErrorCode ViewBonds(PetscViewer viewer) const;   // DemBonds.cpp: the banner's line
+  void           MakeBonds();                           // DemBonds.cpp: bonds between the list's close pairs (-dem_bond_at_time)
+  PetscErrorCode SummarizeBonds(DemSummary *s) const;   // DemBonds.cpp (collective)
   // cohesion: 0 none, 1 JKR, 2 SJKR; near: forces across a gap (van der Waals and/or lubrication)
   template <hertz::Rolling model, int cohesion, bool near, bool linear, bool multi>
   PetscErrorCode ComputeForcesWith(PetscReal dt);
@@ -174,6 +188,7 @@ private:
   struct LocalStats {
     PetscInt  pairContacts = 0, wallContacts = 0;
     PetscReal maxOverlap = 0, elastic = 0, wallForce[6][3] = {};
+    PetscReal bondSigma = 0, bondTau = 0;  // largest load / strength of the intact bonds (P13)
   };
 
   // The state the pair loop reads, local particles then ghosts, packed so that one particle is one
@@ -196,6 +211,8 @@ private:
   WallList      walls_;
   WallSet       wallSet_;  // -dem_walls: planes, cylinders, STL meshes (Walls.hpp)
   ContactHistory springs_;  // only during Rebuild()
+  Bonds          bonds_;    // -dem_cohesion bond (P13): histories per list pair, carried like the springs
+  PetscReal      bondStepLimit_ = PETSC_MAX_REAL;  // s (SetUp)
   LocalStats    stats_;
   DemMaterial   material_;  // -dem_density etc.: the default type, and what -dem_types start from
   std::vector<std::string> typeNames_;  // -dem_types; {"default"} without it

@@ -31,7 +31,7 @@ public:
   bool           HasRestEnergy() const override { return true; }
 
   std::string    MonitorColumnsLead() const override;
-  std::string    MonitorColumns() const override { return dem_.WallLoadColumns() + dem_.MonitorHeader(); }
+  std::string    MonitorColumns() const override { return dem_.WallLoadColumns() + dem_.BondColumns() + dem_.MonitorHeader(); }
   PetscErrorCode Monitor(MonitorPart *part) override;
 
   PetscErrorCode View(PetscViewer viewer, PetscReal) const override { return dem_.View(viewer); }
