@@ -249,6 +249,8 @@ vofdem_bad_input(energy_marangoni_no_reference "option -vof_surface_tension_temp
 vofdem_bad_input(energy_liquidus_below_solidus "option -energy_metal_liquidus: the liquidus 1500\\.? K must exceed the solidus 1533\\.? K" ${VOFDEM_ENERGY_BOX} -energy_metal_liquidus 1500)
 vofdem_bad_input(energy_pc_type_structured "option -energy_pc_type: jacobi cannot take the hypre structured matrix" ${VOFDEM_ENERGY_BOX} -energy_pc pfmg -energy_pc_type jacobi)
 vofdem_bad_input(energy_conductivity_zero "option -energy_metal_conductivity: the metal .* needs a positive conductivity" ${VOFDEM_ENERGY_BOX} -energy_metal_conductivity 0)
+vofdem_bad_input(energy_substrate_with_flow "option -energy_substrate_velocity: with a flow the melt moves with its own velocity" ${VOFDEM_ENERGY_FLOW} -energy_substrate_velocity 0.01,0)
+vofdem_bad_input(energy_substrate_cfl "option -energy_substrate_cfl" ${VOFDEM_ENERGY_BOX} -energy_substrate_velocity 0.01,0 -energy_substrate_cfl 1.5)
 vofdem_bad_input(energy_specific_heat_negative "option -energy_gas_specific_heat: the gas .* needs a positive specific heat" ${VOFDEM_ENERGY_BOX} -energy_gas_specific_heat -5)
 vofdem_bad_input(energy_density_zero "option -energy_metal_density: the metal .* needs a positive density" ${VOFDEM_ENERGY_BOX} -energy_metal_density 0)
 vofdem_bad_input(energy_laser_outside "option -laser_path: way point 1 \\(2\\.?, 0.5\\) m lies outside the box in x" ${VOFDEM_ENERGY_BOX} -laser_power 100 -laser_radius 0.1 -laser_path 0.5,0.5,2,0.5 -laser_speed 1)

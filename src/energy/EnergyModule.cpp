@@ -19,6 +19,8 @@ PetscErrorCode EnergyModule::Configure(ModuleSet &modules, const RunContext &run
   // Particles would take their volume and exchange heat (F9): not built, and energy beside them would be silently wrong.
   if (modules.Has("dem"))
     VofdemInputError(run.comm, "option -physics: 'energy' with 'dem' is not built yet (heat exchanged with particles); use -physics energy or flow,vof,energy");
+  if (modules.Has("flow") && energy_.SubstrateMoving())
+    VofdemInputError(run.comm, "option -energy_substrate_velocity: with a flow the melt moves with its own velocity; move the beam (-laser_path) instead");
   if (modules.Has("flow") && !modules.Has("vof"))
     VofdemInputError(run.comm, "option -physics: 'energy' with 'flow' needs 'vof' (the metal is the interface's heavy phase)");
   if (VofModule *vof = modules.Get<VofModule>("vof")) {  // the energy moves with the interface's sweeps (F7 a)
@@ -90,7 +92,7 @@ PetscErrorCode EnergyModule::Destroy() {
 
 PetscErrorCode EnergyModule::LowerTimeStep(TimeStepLimit *limit) {
   PetscFunctionBeginUser;
-  if (energy_.StepLimit() > 0) limit->Lower(energy_.StepLimit(), "laser (the beam moves at most -laser_step_fraction of its radius per step)");
+  if (energy_.StepLimit() > 0) limit->Lower(energy_.StepLimit(), "energy (the beam moves at most -laser_step_fraction of its radius per step; a moving substrate half a cell)");
   PetscFunctionReturn(0);
 }
 

@@ -438,7 +438,9 @@ PetscErrorCode Energy::Step(PetscReal time, PetscReal dt) {
   PetscReal a = 1, bcoef = 1, c = 0;
 
   PetscFunctionBeginUser;
-  if (bdf2_ && !Moving() && steps_ > 0 && dtOld_ > 0) {  // with a moving interface: backward Euler after the transport
+  const bool bdf2 = bdf2_ && !Moving() && steps_ > 0 && dtOld_ > 0;  // after the interface's transport: backward Euler
+  if (SubstrateMoving()) PetscCall(MoveSubstrate(dt, bdf2));          // EnergySubstrate.cpp
+  if (bdf2) {
     const PetscReal w = dt / dtOld_;
     a = (1 + 2 * w) / (1 + w), bcoef = 1 + w, c = w * w / (1 + w);
   }
@@ -512,8 +514,17 @@ PetscErrorCode Energy::Step(PetscReal time, PetscReal dt) {
   PetscReal advected = 0;  // what the interface's sweeps carried through the box's faces this step (TransportSweep)
   PetscCallMPI(MPI_Allreduce(&advected_, &advected, 1, MPIU_REAL, MPIU_SUM, comm_));
   advected_ = 0;
-  const PetscReal W = (bcoef * W_ - c * Wold_ + dt * last_.inputRate) / a + advected;
-  Wold_ = W_, W_ = W;
+  if (SubstrateMoving()) {  // both levels moved through the box's faces before the balance (MoveSubstrate)
+    PetscReal old = 0;
+    PetscCallMPI(MPI_Allreduce(&advectedOld_, &old, 1, MPIU_REAL, MPIU_SUM, comm_));
+    advectedOld_ = 0;
+    const PetscReal Wn = W_ + advected;
+    W_ = (bcoef * Wn - c * (Wold_ + old) + dt * last_.inputRate) / a;
+    Wold_ = Wn;  // the total of E^n moved, which Eold_ becomes below
+  } else {
+    const PetscReal W = (bcoef * W_ - c * Wold_ + dt * last_.inputRate) / a + advected;
+    Wold_ = W_, W_ = W;
+  }
   totalOlder_ = totalOld_, totalOld_ = total;
   PetscCall(VecCopy(E_, Eold_));
   PetscCall(VecCopy(Ecur_, E_));

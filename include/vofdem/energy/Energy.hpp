@@ -83,7 +83,8 @@ public:
   PetscErrorCode Summarize(EnergySummary *s);         // the last step's account, the state now
   PetscErrorCode View(PetscViewer viewer) const;
   PetscReal      ExplicitLimit() const { return explicitLimit_; }  // s: what an explicit scheme would need
-  PetscReal      StepLimit() const { return laser_.StepLimit(); }
+  PetscReal      StepLimit() const;  // s: the laser's (the beam moves a fraction of its radius) and the moving substrate's (0: none)
+  bool           SubstrateMoving() const { return substrateVelocity_[0] != 0 || substrateVelocity_[1] != 0; }
   PetscErrorCode CheckBoiling(PetscReal time);                       // stops the run past the boiling point
   PetscErrorCode Save(PetscViewer viewer) const;
   PetscErrorCode Load(PetscViewer viewer);
@@ -106,6 +107,11 @@ private:
   PetscErrorCode LaserSource(PetscReal time);       // q_ (W/m^3), absorbed_, beam_
   PetscErrorCode Assemble(PetscReal a, PetscReal dt, int slot);  // the Jacobian at the current iterate into A_[slot]
   PetscErrorCode CreateSolver(int slot, const std::string &pc);
+  PetscErrorCode SetUpSubstrate();                  // EnergySubstrate.cpp
+  PetscErrorCode MoveSubstrate(PetscReal dt, bool history);  // the step's explicit sweeps of the moving substrate (and of E^{n-1})
+  PetscErrorCode SweepSubstrate(int d, PetscReal dt, Vec E, Vec T, Vec F, PetscReal *entered);
+  PetscErrorCode TemperatureOf(Vec E, Vec T, Vec F);
+  PetscReal      SubstrateStepLimit() const;
   int            SolverFor(PetscReal dt) const;  // kJacobi or kMultigrid
   PetscErrorCode Residual(PetscReal a, PetscReal dt, PetscReal *maxResidual);  // r = a E - H - dt R(T)
   PetscErrorCode Update(PetscReal lambda);          // the enthalpy update with a fraction lambda of the correction
@@ -148,6 +154,10 @@ private:
   Vec       F_ = nullptr, slope_ = nullptr, TF_ = nullptr, Tbase_ = nullptr, Fbase_ = nullptr;  // f, F', F^{-1}(f), the iterate before an update
   Vec       TLocal_ = nullptr, kLocal_ = nullptr, alphaLocal_ = nullptr;
   static constexpr int kMultigrid = 0, kJacobi = 1;  // the solver slots
+  PetscReal substrateCfl_ = 0.25;                   // -energy_substrate_cfl: the moving substrate's cells per step
+  PetscReal substrateVelocity_[2] = {0, 0};         // -energy_substrate_velocity, m/s
+  DM        wide_ = nullptr;                         // the cells with two ghosts (the substrate's van Leer stencil)
+  Vec       wideGlobal_ = nullptr, wideT_ = nullptr, wideF_ = nullptr, Tinflow_ = nullptr, Told_ = nullptr, Fold_ = nullptr;
   Mat       A_[2]   = {nullptr, nullptr};
   KSP       ksp_[2] = {nullptr, nullptr};
   MPI_Comm  column_ = MPI_COMM_NULL;  // the ranks of one process column in z, top first
@@ -167,6 +177,7 @@ private:
   Vec                  Tsg_ = nullptr, TsgLocal_ = nullptr, Fsg_ = nullptr, FsgLocal_ = nullptr, AsgLocal_ = nullptr, uLocal_[3] = {nullptr, nullptr, nullptr},
                        fluxLocal_[3] = {nullptr, nullptr, nullptr}, Xstart_ = nullptr;
   bool                 swept_ = false;
+  PetscReal            advectedOld_ = 0;  // J the substrate's sweep of E^{n-1} carried through the box's faces (this rank's)
   PetscReal            advected_ = 0;  // J through the box's faces in this step's sweeps (this rank's; the account)
   Vec                  sLocal_ = nullptr, rhoLocal_ = nullptr, sGlobal_ = nullptr, rhoGlobal_ = nullptr;  // MushyDrag: the solid fraction (held: -1) and the density, ghosted
   PetscInt             heldCells_ = 0;  // this step's sweeps have begun (Xstart_ holds the step's dilatation enthalpy)
