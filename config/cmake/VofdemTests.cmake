@@ -250,6 +250,7 @@ vofdem_bad_input(energy_liquidus_below_solidus "option -energy_metal_liquidus: t
 vofdem_bad_input(energy_pc_type_structured "option -energy_pc_type: jacobi cannot take the hypre structured matrix" ${VOFDEM_ENERGY_BOX} -energy_pc pfmg -energy_pc_type jacobi)
 vofdem_bad_input(energy_conductivity_zero "option -energy_metal_conductivity: the metal .* needs a positive conductivity" ${VOFDEM_ENERGY_BOX} -energy_metal_conductivity 0)
 vofdem_bad_input(energy_substrate_with_flow "option -energy_substrate_velocity: with a flow the melt moves with its own velocity" ${VOFDEM_ENERGY_FLOW} -energy_substrate_velocity 0.01,0)
+vofdem_bad_input(flow_courant_unknown "option -flow_courant" -physics flow -flow_courant face)
 vofdem_bad_input(energy_substrate_cfl "option -energy_substrate_cfl" ${VOFDEM_ENERGY_BOX} -energy_substrate_velocity 0.01,0 -energy_substrate_cfl 1.5)
 vofdem_bad_input(energy_specific_heat_negative "option -energy_gas_specific_heat: the gas .* needs a positive specific heat" ${VOFDEM_ENERGY_BOX} -energy_gas_specific_heat -5)
 vofdem_bad_input(energy_density_zero "option -energy_metal_density: the metal .* needs a positive density" ${VOFDEM_ENERGY_BOX} -energy_metal_density 0)

@@ -138,6 +138,7 @@ private:
   PetscErrorCode UpdateLocals(bool properties);  // ghosted velocities and pressure, and the properties' if asked
   PetscErrorCode UpdatePropertyLocals();         // eps mu, eps/rho, eps ghosted; the pressure coefficient
   PetscErrorCode ViscousRate(PetscReal *rate);  // 1/s: the explicit viscous terms' bound (FlowViscousLimit.cpp)
+  PetscErrorCode ConvectiveRate(bool ownAdvection, PetscReal *rate);  // 1/s: the Courant number per unit step (FlowCourant.cpp)
   PetscErrorCode ComputeExplicitTerms();  // H_ (and L u^n) at time level n
   PetscErrorCode Predict(PetscReal t, PetscReal dt);
   PetscErrorCode Project(PetscReal dt, Vec *uField);
@@ -178,6 +179,7 @@ private:
   PetscReal   density_ = 1000, viscosity_ = 1e-3, cfl_ = 0.4, velocity0_[3] = {0, 0, 0};
   Limiter     limiter_ = Limiter::VanLeer;
   std::string limiterName_ = "vanleer";
+  enum class CourantMeasure { Box, Cell } courant_ = CourantMeasure::Box;  // -flow_courant
   PetscBool   implicitViscosity_ = PETSC_TRUE;
   PetscBool   userPressureAtol_ = PETSC_FALSE;  // else Project sets a scale-aware absolute tolerance
   std::string profilePath_;
