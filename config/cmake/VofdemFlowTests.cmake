@@ -111,3 +111,7 @@ set_tests_properties(coupling/eps_rate_step_change PROPERTIES LABELS "quick;coup
 # t = 3 as close to a 10x finer step's as the box's, 1 and 2 ranks the same steps.
 add_test(NAME flow/courant_cell COMMAND ${VOFDEM_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/test/flow/test_courant_cell.py $<TARGET_FILE:vofdem_app>)
 set_tests_properties(flow/courant_cell PROPERTIES LABELS "quick;flow" PROCESSORS 2 TIMEOUT 300)
+# G5 under dem,flow: a lattice bed on the inflow face rests at 0.95 and lifts at 1.05 of Terzaghi's critical gradient (the
+# water's force on the bed from two static runs, within 5 % of Ergun's), 1 and 2 ranks.
+add_test(NAME coupling/heave_flow COMMAND ${VOFDEM_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/test/coupling/test_heave_flow.py $<TARGET_FILE:vofdem_app>)
+set_tests_properties(coupling/heave_flow PROPERTIES LABELS "quick;coupling" PROCESSORS 2 TIMEOUT 300)
