@@ -69,3 +69,13 @@ vofdem_checkpoint_test(reuse_liquidjet_1 1 reuse liquidjet 1 60)
 vofdem_checkpoint_test(reuse_liquidjet_2 2 reuse liquidjet 2 60)
 vofdem_checkpoint_test(reuse_dambreak_pfmg_1 1 reuse dambreak 1 60)
 vofdem_checkpoint_test(reuse_dambreak_pfmg_2 2 reuse dambreak 2 60)
+# Energy (docs/modules/energy.md): a conduction laser track and the freezing dam-break column (flow,vof,energy), bitwise on
+# 1 and 2 ranks, and continued on another rank count (T, f and the velocity within 1e-10; energyvof at -energy_tolerance
+# 1e-10: the default 1e-6 leaves ~6e-10, the enthalpy iteration's own spread between decompositions).
+vofdem_checkpoint_test(bitwise_energy_1 1 bitwise energy 1)
+vofdem_checkpoint_test(bitwise_energy_2 2 bitwise energy 2)
+vofdem_checkpoint_test(bitwise_energyvof_2 2 bitwise energyvof 2)
+vofdem_checkpoint_test(ranks_energy_2to1 2 ranks energy 2 1)
+vofdem_checkpoint_test(ranks_energy_1to2 2 ranks energy 1 2)
+vofdem_checkpoint_test(ranks_energyvof_2to1 2 ranks energyvof 2 1)
+vofdem_checkpoint_test(ranks_energyvof_1to2 2 ranks energyvof 1 2)

@@ -18,6 +18,9 @@
 
 namespace vofdem {
 
+namespace {
+constexpr PetscReal kPureBand = 1e-6;  // a cell within this of alpha 0 or 1 counts (partly) as one phase (TransportSweep)
+}  // namespace
 
 PetscReal Energy::CellTemperature(PetscReal E, PetscReal a, PetscReal guess) const {
   auto f  = [&](PetscReal T) { return CellEnergy(a, T, metal_.MeltFraction(T)) - E; };
@@ -118,10 +121,14 @@ PetscErrorCode Energy::TransportSweep(int d, PetscReal dt, Vec u, Vec phaseFlux,
     // The face temperature: van Leer's where the stencil is one phase throughout; the donor cell's where it is
     // not (a mixture temperature blended into a phase's flux would move metal enthalpy at a temperature the
     // donor's metal does not have: at a rho cp jump of 4000 the gas side would be driven out of bounds).
+    // Between the two a weight w, so that alpha's round-off (another rank count's pressure solve moves it by 1e-16)
+    // moves T_f by as little: w = 1 - m/kPureBand for a stencil of one phase whose most mixed cell holds a share m
+    // of the other phase below kPureBand, 0 otherwise (an exact test of purity would switch on that round-off).
     const PetscInt *s1 = pos ? L2 : R2, *s2 = pos ? L1 : R1, *s3 = pos ? R1 : L1;
     const PetscReal a1 = A.at(s1), a2 = A.at(s2), a3 = A.at(s3);
-    const bool      pure = (a1 == a2 && a2 == a3) && (a2 == 0 || a2 == 1);
-    const PetscReal tf   = pure ? VanLeerFaceValue(T.at(s1), T.at(s2), T.at(s3)) : T.at(s2);
+    const PetscReal m  = std::max({std::min(a1, 1 - a1), std::min(a2, 1 - a2), std::min(a3, 1 - a3), (PetscReal)0});
+    const PetscReal w  = (std::fabs(a1 - a2) < 0.5 && std::fabs(a2 - a3) < 0.5) ? std::max((PetscReal)0, 1 - m / kPureBand) : 0;
+    const PetscReal tf = w > 0 ? w * VanLeerFaceValue(T.at(s1), T.at(s2), T.at(s3)) + (1 - w) * T.at(s2) : T.at(s2);
     const PetscReal fup = pos ? F.at(L1) : F.at(R1);
     const PetscReal gas = vel - fm;  // a face that carries one phase needs that phase's enthalpy alone
     return r * ((fm != 0 ? fm * rm * (metal_.Sensible(tf) + L * fup) : 0) + (gas != 0 ? gas * rg * gas_.Sensible(tf) : 0));
