@@ -263,7 +263,7 @@ vofdem_bad_input(energy_flow_without_vof "option -physics: 'energy' with 'flow' 
 # Bonds (P13): a bond law without its strengths.
 vofdem_bad_input(bond_without_tensile "option -dem_bond_tensile_strength: -dem_cohesion bond needs the bonds' tensile strength \\(Pa\\)" ${_dem} -dem_cohesion bond -dem_bond_normal_stiffness 1e12 -dem_bond_shear_strength 1e6)
 vofdem_bad_input(bond_without_shear "option -dem_bond_shear_strength: -dem_cohesion bond needs the bonds' shear strength \\(N\\)" ${_dem} -dem_cohesion bond -dem_bond_model contact -dem_bond_normal_stiffness 1e12 -dem_bond_tensile_strength 1)
-vofdem_bad_input(energy_with_dem "option -physics: 'energy' with 'dem' exchanges heat through the fluid's coupling; use -physics dem,flow,vof,energy" -physics dem,energy -grid_upper 0.01,0.01,0.01 -dt 1e-5)
+vofdem_bad_input(energy_with_dem "option -physics: 'energy' with 'dem' exchanges heat through the fluid's coupling. use -physics dem,flow,vof,energy" -physics dem,energy -grid_upper 0.01,0.01,0.01 -dt 1e-5)
 vofdem_bad_input(energy_dem_no_vof "option -physics: 'energy' with 'flow' needs 'vof'" -physics dem,flow,energy -grid_upper 0.01,0.01,0.01 -dt 1e-5)
 vofdem_bad_input(energy_density_mismatch "option -energy_metal_density: 8380\\.? kg/m\\^3 .* differs from the interface's -vof_density 1000\\.? kg/m\\^3" -physics flow,vof,energy -grid_cells 4,4,4)
 vofdem_bad_input(energy_needs_dt "option -dt: the energy equation is implicit and sets no step of its own without a moving laser" -physics energy -grid_cells 4,4,4)
