@@ -184,7 +184,8 @@ PetscErrorCode ParticleHeat::Summarize(ParticleHeatSummary *s) const {
   PetscFunctionBeginUser;
   PetscCall(Held(&s->enthalpy, &s->brought));
   PetscCall(dem_->Particles().GetArrays(&a));
-  for (PetscInt p = 0; p < a.n; ++p) range[0] = std::max(range[0], a.temperature[p]), range[1] = std::max(range[1], -a.temperature[p]);
+  for (PetscInt p = 0; p < a.n; ++p)  // a particle added in this step's sub-steps (0 K) takes its temperature at the next exchange
+    if (a.temperature[p] > 0) range[0] = std::max(range[0], a.temperature[p]), range[1] = std::max(range[1], -a.temperature[p]);
   PetscCall(dem_->Particles().RestoreArrays(&a));
   PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, range, 2, MPIU_REAL, MPIU_MAX, comm_));
   const bool any = range[0] > -PETSC_MAX_REAL;

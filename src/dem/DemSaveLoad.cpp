@@ -437,8 +437,10 @@ PetscErrorCode Dem::Load(PetscViewer viewer) {
   }
   // The output indices so far (only rank 0 writes them).
   out_.particleEntries.clear(), out_.contactEntries.clear();
-  for (size_t k = 0; k + 2 < st.particleOutputs.size(); k += 3)
+  for (size_t k = 0; k + 2 < st.particleOutputs.size(); k += 3) {
     out_.particleEntries.push_back(DemOutputSettings::ParticleEntry((PetscInt)st.particleOutputs[k], st.particleOutputs[k + 1], (PetscInt)st.particleOutputs[k + 2]));
+    if (swarm_.HasHeatFields()) out_.particleEntries.back().attributes.push_back({"temperature", "/temperature"});  // DemOutput.cpp
+  }
   for (size_t k = 0; k + 2 < st.contactOutputs.size(); k += 3)
     out_.contactEntries.push_back(DemOutputSettings::ContactEntry((PetscInt)st.contactOutputs[k], st.contactOutputs[k + 1], (PetscInt)st.contactOutputs[k + 2]));
   stats_.pairContacts = (PetscInt)st.stats[0];

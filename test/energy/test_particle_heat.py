@@ -14,6 +14,7 @@ in still fluid Re = 0 and Nu = 2 whatever Pr (F10). Checked at every monitor row
       enthalpy) against the change of the particles' enthalpy, to 1e-12 of the heat exchanged;
   (d) the energy account with the particles: |energy_total_J - energy_accounted_J| within 1e-10 of the heat exchanged;
   (e) 1 and 2 ranks: the particle's temperature and the fluid's energy agree to 1e-10 (relative);
+  (f) the particle's temperature in the ParaView output (particles.xmf) is the monitor's;
 a wrong sign or factor of the exchange fails (a) or (c).
   test_particle_heat.py VOFDEM"""
 import csv
@@ -22,6 +23,9 @@ import os
 import shutil
 import sys
 import tempfile
+
+import h5py
+import numpy as np
 
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 sys.path.insert(0, os.path.join(ROOT, "scripts", "lib"))
@@ -96,7 +100,8 @@ def main():
             runs = {}
             for ranks in rank_counts:
                 out = os.path.join(tmp, "%s-%d" % (name, ranks))
-                run_vofdem(exe, ranks, arguments(out, t_gas, t0, d, t_end, every) + (["-grid_ranks", "2,1,1"] if ranks == 2 else []))
+                extra = (["-grid_ranks", "2,1,1"] if ranks == 2 else []) + (["-dem_output_every", "75"] if name == "sensible" else [])
+                run_vofdem(exe, ranks, arguments(out, t_gas, t0, d, t_end, every) + extra)
                 r = rows(out)
                 runs[ranks] = r
                 label = "%s, %d rank(s)" % (name, ranks)
@@ -106,6 +111,13 @@ def main():
                 k = max(range(len(r)), key=lambda i: abs(r[i]["particle_temperature_max_K"] - ref[i]))
                 check(err <= 0.01, "%s: T_p against the ODE: largest error %.3e of the rise %g K (tolerance 1e-2; at t = %.3f s %.4f K against %.4f K; at the end %.4f K)"
                       % (label, err, t_gas - t0, r[k]["time_s"], r[k]["particle_temperature_max_K"], ref[k], r[-1]["particle_temperature_max_K"]))
+                if name == "sensible":  # ParaView: the particle's temperature in particles.xmf
+                    xmf = open(os.path.join(out, "particles.xmf")).read()
+                    last = sorted(f for f in os.listdir(out) if f.startswith("particles_") and f.endswith(".h5"))[-1]  # the last fluid step's
+                    with h5py.File(os.path.join(out, last)) as f:
+                        tp = float(np.array(f["temperature"]).ravel()[0])
+                    check('Name="temperature"' in xmf and abs(tp - r[-1]["particle_temperature_max_K"]) <= 1e-12 * tp,
+                          "%s: particles.xmf names the temperature; %s holds %.12g K (the monitor's %.12g K)" % (label, last, tp, r[-1]["particle_temperature_max_K"]))
                 if name == "small":  # its time constant is a third of the step: explicit Euler would oscillate and grow
                     tau = RHO * CP * d * d / (6 * 2 * K_GAS)
                     over = max(x["particle_temperature_max_K"] for x in r) - t_gas
