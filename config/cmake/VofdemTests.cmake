@@ -240,6 +240,10 @@ set_tests_properties(energy/pool_freezes PROPERTIES LABELS "quick;energy" PROCES
 # initial energy (1e-12), the k table through the explicit diffusion limit.
 add_test(NAME energy/material_files COMMAND ${VOFDEM_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/test/energy/test_material_files.py $<TARGET_FILE:vofdem_app>)
 set_tests_properties(energy/material_files PROPERTIES LABELS "quick;energy" TIMEOUT 120)
+# E6 part 1 (docs/physics.md P11, F9, F10): a particle heated in still hot gas against the ODE with the same laws (1 %), through
+# the melting range too; the kernel's deposit and the fluid's gain against the particle's loss to 1e-12, the account to 1e-10; 1 and 2 ranks.
+add_test(NAME energy/particle_heat COMMAND ${VOFDEM_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/test/energy/test_particle_heat.py $<TARGET_FILE:vofdem_app>)
+set_tests_properties(energy/particle_heat PROPERTIES LABELS "quick;energy;coupling" PROCESSORS 2 TIMEOUT 300)
 set(VOFDEM_ENERGY_BOX -physics energy -grid_cells 4,4,4 -dt 1e-3)
 set(VOFDEM_ENERGY_FLOW -options_file_yaml ${CMAKE_CURRENT_SOURCE_DIR}/config/scenes/dam-break.yaml -physics flow,vof,energy -grid_cells 16,8,1 -energy_metal_density 1000 -energy_gas_density 1 -energy_pc boomeramg -max_steps 1)
 vofdem_bad_input(vof_cells_per_rank "option -grid_cells: the VOF module needs at least 4 cells per rank along a split direction, but y has 4 cells on 2 ranks"
@@ -262,6 +266,7 @@ vofdem_bad_input(energy_flow_without_vof "option -physics: 'energy' with 'flow' 
 # Bonds (P13): a bond law without its strengths.
 vofdem_bad_input(bond_without_tensile "option -dem_bond_tensile_strength: -dem_cohesion bond needs the bonds' tensile strength \\(Pa\\)" ${_dem} -dem_cohesion bond -dem_bond_normal_stiffness 1e12 -dem_bond_shear_strength 1e6)
 vofdem_bad_input(bond_without_shear "option -dem_bond_shear_strength: -dem_cohesion bond needs the bonds' shear strength \\(N\\)" ${_dem} -dem_cohesion bond -dem_bond_model contact -dem_bond_normal_stiffness 1e12 -dem_bond_tensile_strength 1)
-vofdem_bad_input(energy_with_dem "option -physics: 'energy' with 'dem' is not built yet" -physics dem,energy -grid_upper 0.01,0.01,0.01 -dt 1e-5)
+vofdem_bad_input(energy_with_dem "option -physics: 'energy' with 'dem' exchanges heat through the fluid's coupling. use -physics dem,flow,vof,energy" -physics dem,energy -grid_upper 0.01,0.01,0.01 -dt 1e-5)
+vofdem_bad_input(energy_dem_no_vof "option -physics: 'energy' with 'flow' needs 'vof'" -physics dem,flow,energy -grid_upper 0.01,0.01,0.01 -dt 1e-5)
 vofdem_bad_input(energy_density_mismatch "option -energy_metal_density: 8380\\.? kg/m\\^3 .* differs from the interface's -vof_density 1000\\.? kg/m\\^3" -physics flow,vof,energy -grid_cells 4,4,4)
 vofdem_bad_input(energy_needs_dt "option -dt: the energy equation is implicit and sets no step of its own without a moving laser" -physics energy -grid_cells 4,4,4)

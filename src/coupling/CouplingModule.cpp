@@ -1,5 +1,6 @@
 // CouplingModule.hpp: the coupling's checks across modules, its set-up, stages and monitor.
 #include "vofdem/coupling/CouplingModule.hpp"
+#include "vofdem/coupling/ParticleHeatModule.hpp"
 #include "vofdem/coupling/SeepageModule.hpp"
 
 #include "vofdem/base/ModuleRegistry.hpp"
@@ -125,6 +126,7 @@ void RegisterModule_coupling(ModuleRegistry &registry) {
   e.create    = [] { return std::unique_ptr<Module>(new CouplingModule); };
   registry.Add(std::move(e));
   RegisterSeepageModule(registry);  // the same floor's other coupling: particles with the Darcy seepage
+  RegisterParticleHeatModule(registry);  // and the particles' heat with the energy equation (ParticleHeat.hpp)
 }
 
 }  // namespace vofdem

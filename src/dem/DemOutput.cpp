@@ -169,10 +169,12 @@ PetscErrorCode Dem::WriteParticles(PetscReal time) {
   PetscCall(column("clump", 1, [&](PetscInt p, PetscInt) { return (PetscReal)a.clump[p]; }));  // -1: a loose sphere (vofdem-analyze groups the members)
   PetscCall(column("contacts", 1, [&](PetscInt p, PetscInt) { return contacts[p]; }));
   PetscCall(column("contact_force", 1, [&](PetscInt p, PetscInt) { return forceSum[p]; }));
+  if (swarm_.HasHeatFields()) PetscCall(column("temperature", 1, [&](PetscInt p, PetscInt) { return a.temperature[p]; }));  // K (P11)
   PetscCall(PetscViewerDestroy(&viewer));
   PetscCall(swarm_.RestoreArrays(&a));
 
   out_.particleEntries.push_back(DemOutputSettings::ParticleEntry(steps_, time, N));
+  if (swarm_.HasHeatFields()) out_.particleEntries.back().attributes.push_back({"temperature", "/temperature"});
   PetscCall(WriteTextFile(comm_, out_.dir + "/particles.xmf", XdmfIndexText("particles", out_.particleEntries), "option -dem_output_every"));
   PetscFunctionReturn(0);
 }

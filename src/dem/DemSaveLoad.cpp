@@ -87,6 +87,7 @@ struct Dem::SavedState {
   std::vector<PetscReal> pairIds, wallIds, wallSetIds, haloRanks, haloImages, sendCounts, send, stats;
   std::vector<PetscReal> particleOutputs, contactOutputs;  // the XDMF index entries, on rank 0
   std::vector<PetscReal> bondCounts;  // bonds made and broken on this rank (halves, Bonds.hpp), and whether they were made
+  std::vector<PetscReal> heat[kNumHeatFields];  // the heat fields (ParticleSwarm.hpp kHeatFields; empty without them)
 };
 
 // The archived state, in order; Save and Load both run this, so a new piece of state is one line.
@@ -136,6 +137,10 @@ PetscErrorCode Dem::ArchiveState(RankArchive &ar, SavedState &st) {
     PetscCall(ar.Array("pair_bond", &bonds_.state, bond::kWidth));
     PetscCall(ar.Array("bond_counts", &st.bondCounts, 3));
   }
+  // Appended 2026-12-04: the particles' enthalpy and temperature (P11; empty without a heat coupling; files
+  // written before them load without them, which a run with particle heat refuses in Load).
+  if (ar.HasMore())
+    for (int f = 0; f < kNumHeatFields; ++f) PetscCall(ar.Array((std::string("swarm_") + kHeatFields[f].name).c_str(), &st.heat[f], kHeatFields[f].width));
   PetscFunctionReturn(0);
 }
 
@@ -154,6 +159,7 @@ PetscErrorCode Dem::SavedBytes(PetscInt64 *bytes) const {
     PetscCall(DMSwarmRestoreField(swarm_.Dm(), kSwarmFields[f], &bs, &type, &data));
     perParticle += bs;
   }
+  if (swarm_.HasHeatFields()) perParticle += kNumHeatFields;
   PetscCall(DMSwarmGetLocalSize(swarm_.Dm(), &n));
   values = perParticle * n + (PetscInt64)list_.Size() * (2 + 2 + kSpringWidth + 4) + (PetscInt64)bonds_.state.size() + (PetscInt64)walls_.Size() * (4 + kSpringWidth) +
            (PetscInt64)wallSet_.Candidates() * (5 + kSpringWidth);
@@ -177,6 +183,10 @@ PetscErrorCode Dem::Save(PetscViewer viewer) {
   for (int f = 0; f < kNumSwarmFields; ++f) {
     if (Absent(swarm_, f)) st.fieldBs[f] = AbsentWidth(f);  // saved empty
     else PetscCall(CopyField(swarm_.Dm(), kSwarmFields[f], &st.fields[f], &st.fieldBs[f], false));
+  }
+  for (int f = 0; f < kNumHeatFields && swarm_.HasHeatFields(); ++f) {
+    PetscInt bs;
+    PetscCall(CopyField(swarm_.Dm(), kHeatFields[f].name, &st.heat[f], &bs, false));
   }
   {  // ids of the pairs (lower first) and of the wall candidates: the keys of a rank-count change
     ParticleArrays a;
@@ -356,6 +366,18 @@ PetscErrorCode Dem::Load(PetscViewer viewer) {
     PetscInt bsOut;
     PetscCall(CopyField(dm, kSwarmFields[f], &st.fields[f], &bsOut, true));
   }
+  for (int f = 0; f < kNumHeatFields; ++f) {  // the heat fields (P11), one value per saved particle or none
+    const bool held = st.heat[f].size() == saved && saved > 0;
+    if (!swarm_.HasHeatFields()) {
+      PetscCheck(st.heat[f].empty(), PETSC_COMM_SELF, PETSC_ERR_FILE_UNEXPECTED, "checkpoint: the particles' field %s holds their heat, but this run's particles exchange none", kHeatFields[f].name);
+      continue;
+    }
+    PetscCheck(held || saved == 0, PETSC_COMM_SELF, PETSC_ERR_FILE_UNEXPECTED, "checkpoint: it holds no particle %s (written without particle heat); this run's particles exchange heat (-physics with dem and energy)",
+               kHeatFields[f].name);
+    for (size_t j = 0; j < keep.size(); ++j) st.heat[f][j] = st.heat[f][keep[j]];
+    PetscInt bsOut;
+    PetscCall(CopyField(dm, kHeatFields[f].name, &st.heat[f], &bsOut, true));
+  }
   ParticleArrays a;
   if (ar.SameRanks()) {
     std::vector<PetscMPIInt>           ranks(st.haloRanks.begin(), st.haloRanks.end());
@@ -415,8 +437,10 @@ PetscErrorCode Dem::Load(PetscViewer viewer) {
   }
   // The output indices so far (only rank 0 writes them).
   out_.particleEntries.clear(), out_.contactEntries.clear();
-  for (size_t k = 0; k + 2 < st.particleOutputs.size(); k += 3)
+  for (size_t k = 0; k + 2 < st.particleOutputs.size(); k += 3) {
     out_.particleEntries.push_back(DemOutputSettings::ParticleEntry((PetscInt)st.particleOutputs[k], st.particleOutputs[k + 1], (PetscInt)st.particleOutputs[k + 2]));
+    if (swarm_.HasHeatFields()) out_.particleEntries.back().attributes.push_back({"temperature", "/temperature"});  // DemOutput.cpp
+  }
   for (size_t k = 0; k + 2 < st.contactOutputs.size(); k += 3)
     out_.contactEntries.push_back(DemOutputSettings::ContactEntry((PetscInt)st.contactOutputs[k], st.contactOutputs[k + 1], (PetscInt)st.contactOutputs[k + 2]));
   stats_.pairContacts = (PetscInt)st.stats[0];

@@ -31,6 +31,10 @@ PetscErrorCode ParticleSwarm::Create(const Grid &grid) {
   fluidRegistered_ = fluidFields_;
   if (fluidRegistered_)
     for (const SwarmFieldWidth &f : kFluidFields) PetscCall(DMSwarmRegisterPetscDatatypeField(swarm_, f.name, f.width, PETSC_REAL));
+  // The particles' enthalpy and temperature only when they exchange heat (docs/physics.md P11).
+  heatRegistered_ = heatFields_;
+  if (heatRegistered_)
+    for (const SwarmFieldWidth &f : kHeatFields) PetscCall(DMSwarmRegisterPetscDatatypeField(swarm_, f.name, f.width, PETSC_REAL));
   PetscCall(DMSwarmFinalizeFieldRegister(swarm_));
   PetscCall(DMSwarmSetLocalSizes(swarm_, 0, 64));
   PetscCall(FieldsMoved());
@@ -87,6 +91,11 @@ PetscErrorCode ParticleSwarm::RefreshCache() const {
     PetscCall(FieldAddress(swarm_, field::fluidRotationalDrag, &c.fluidRotationalDrag));
     PetscCall(FieldAddress(swarm_, field::fluidRotation, &c.fluidRotation));
     PetscCall(FieldAddress(swarm_, field::fluidViscosity, &c.fluidViscosity));
+  }
+  c.enthalpy = c.temperature = nullptr;
+  if (heatRegistered_) {
+    PetscCall(FieldAddress(swarm_, field::enthalpy, &c.enthalpy));
+    PetscCall(FieldAddress(swarm_, field::temperature, &c.temperature));
   }
   cacheN_     = c.n;
   cacheValid_ = true;
@@ -149,6 +158,14 @@ PetscErrorCode ParticleSwarm::AddLocal(PetscInt n, PetscInt *first) {
   // New particles feel no fluid until the coupling's next update (and every byte is defined for checkpoints).
   if (fluidRegistered_)
     for (const SwarmFieldWidth &f : kFluidFields) {
+      PetscReal *v;
+      PetscCall(DMSwarmGetField(swarm_, f.name, nullptr, nullptr, (void **)&v));
+      for (PetscInt k = *first * f.width; k < (*first + n) * f.width; ++k) v[k] = 0;
+      PetscCall(DMSwarmRestoreField(swarm_, f.name, nullptr, nullptr, (void **)&v));
+    }
+  // A new particle's temperature 0 K marks it for the heat coupling, which gives it its initial temperature.
+  if (heatRegistered_)
+    for (const SwarmFieldWidth &f : kHeatFields) {
       PetscReal *v;
       PetscCall(DMSwarmGetField(swarm_, f.name, nullptr, nullptr, (void **)&v));
       for (PetscInt k = *first * f.width; k < (*first + n) * f.width; ++k) v[k] = 0;

@@ -16,9 +16,9 @@ PetscErrorCode EnergyModule::SetFromOptions(const RunContext &run) { return ener
 
 PetscErrorCode EnergyModule::Configure(ModuleSet &modules, const RunContext &run) {
   PetscFunctionBeginUser;
-  // Particles would take their volume and exchange heat (F9): not built, and energy beside them would be silently wrong.
-  if (modules.Has("dem"))
-    VofdemInputError(run.comm, "option -physics: 'energy' with 'dem' is not built yet (heat exchanged with particles); use -physics energy or flow,vof,energy");
+  // Particles exchange heat through the coupling (F9, coupling/ParticleHeat.hpp), which needs the flow.
+  if (modules.Has("dem") && !modules.Has("particle_heat"))
+    VofdemInputError(run.comm, "option -physics: 'energy' with 'dem' exchanges heat through the fluid's coupling; use -physics dem,flow,vof,energy");
   if (modules.Has("flow") && energy_.SubstrateMoving())
     VofdemInputError(run.comm, "option -energy_substrate_velocity: with a flow the melt moves with its own velocity; move the beam (-laser_path) instead");
   if (modules.Has("flow") && !modules.Has("vof"))

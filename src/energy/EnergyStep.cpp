@@ -218,7 +218,7 @@ PetscErrorCode Energy::Residual(PetscReal a, PetscReal dt, PetscReal *maxResidua
   const PetscInt  *n = grid_->Cells();
   const PetscReal  V = h[0] * h[1] * h[2];
   bool             periodic[3];
-  PetscScalar   ***T, ***k, ***al, ***E, ***H, ***q, ***r;
+  PetscScalar   ***T, ***k, ***al, ***E, ***H, ***q, ***r, ***qp = nullptr;  // qp: the particles' heat (F9, SetParticleHeat)
   PetscReal        rates[3] = {0, 0, 0}, rmax = 0;  // box faces, losses, residual sum (J)
 
   PetscFunctionBeginUser;
@@ -231,6 +231,7 @@ PetscErrorCode Energy::Residual(PetscReal a, PetscReal dt, PetscReal *maxResidua
   PetscCall(DMDAVecGetArrayRead(dm_, H_, &H));
   PetscCall(DMDAVecGetArrayRead(dm_, q_, &q));
   PetscCall(DMDAVecGetArray(dm_, r_, &r));
+  if (particleSource_) PetscCall(DMDAVecGetArrayRead(dm_, particleSource_, &qp));
   PetscReal rsum = 0;
   const PetscReal ih2[3] = {1 / (h[0] * h[0]), 1 / (h[1] * h[1]), 1 / (h[2] * h[2])};
   const bool      losses = interfaceConvection_ > 0 || (interfaceRadiation_ && metal_.emissivity > 0);
@@ -241,7 +242,7 @@ PetscErrorCode Energy::Residual(PetscReal a, PetscReal dt, PetscReal *maxResidua
     for (PetscInt y = b.s[1]; y < b.s[1] + b.m[1]; ++y)
       for (PetscInt x = b.s[0]; x < b.s[0] + b.m[0]; ++x, ++c) {
         const PetscReal t = T[z][y][x], kc = k[z][y][x];
-        PetscReal       R = q[z][y][x], boundary = 0;
+        PetscReal       R = q[z][y][x] + (qp ? PetscRealPart(qp[z][y][x]) : 0), boundary = 0;
         PetscReal      *G = &faceConductance_[6 * c];
         for (int d = 0; d < 3; ++d)
           for (int side = 0; side < 2; ++side) {
@@ -276,6 +277,7 @@ PetscErrorCode Energy::Residual(PetscReal a, PetscReal dt, PetscReal *maxResidua
         rmax = std::max(rmax, (PetscReal)std::fabs(r[z][y][x]));
       }
   PetscCall(DMDAVecRestoreArray(dm_, r_, &r));
+  if (particleSource_) PetscCall(DMDAVecRestoreArrayRead(dm_, particleSource_, &qp));
   PetscCall(DMDAVecRestoreArrayRead(dm_, q_, &q));
   PetscCall(DMDAVecRestoreArrayRead(dm_, H_, &H));
   PetscCall(DMDAVecRestoreArrayRead(dm_, Ecur_, &E));

@@ -83,6 +83,11 @@ PetscErrorCode Energy::Summarize(EnergySummary *s) {
   PetscCall(VecSum(E_, &s->total));
   s->total *= V;
   s->accounted = W_;
+  if (particleHeld_) {  // the particles' enthalpy (F9): what they give the cells is no input, what they hold is energy
+    PetscReal held, brought;
+    PetscCall(particleHeld_(&held, &brought));
+    s->total += held, s->accounted += brought;
+  }
   PetscCall(VecMax(T_, nullptr, &s->peak));
   PetscCall(VecMin(T_, nullptr, &s->minimum));
   PetscCall(VecSum(MeltFraction(), &s->meltVolume));

@@ -26,7 +26,7 @@
                         zero exit on every rank (test/badinput/expect-error); -restart latest skips a
                         corrupted newest file and says so; a write that fails mid-run is one error line
                         and leaves the previous checkpoint valid.
-SCENE is dem, demclumps, demperiodic, dembalance, demfunnel, demdelete, flow, vof, vofimplicit, vofopen, energy, energyvof, coupled, coupledvof or coupledwet (the coupled ones: bitwise only). Usage: test_checkpoint.py VOFDEM CASE ARGS..."""
+SCENE is dem, demclumps, demperiodic, dembalance, demfunnel, demdelete, flow, vof, vofimplicit, vofopen, energy, energyvof, coupled, coupledvof, coupledwet or coupledheat (the coupled ones: bitwise only). Usage: test_checkpoint.py VOFDEM CASE ARGS..."""
 import glob
 import os
 import re
@@ -127,6 +127,14 @@ SCENES = {
                    "-vof_surface_tension 0.072 -coupling_contact_angle 120 "
                    "-dem_radius 5e-4 -dem_density 2500 -dem_fill_count 20 -dem_fill_lower 0,0,0.0075 -dem_fill_upper 0.008,0.008,0.012 -dem_fill_jitter 0.5 "
                    "-coupling_fluid_drag implicit -dt 1e-3 -dt_force -seed 7".split(), 15, (15, 15)),
+    # -physics dem,flow,vof,energy (issue 52): 20 IN718 spheres at 573 K falling through argon at 1400 K toward a solid
+    # IN718 plate: the particles' enthalpy and temperature (swarm fields), the heat account's sums and the energy's state
+    # must all come back.
+    "coupledheat": ("-physics dem,flow,vof,energy -grid_cells 8,8,12 -grid_upper 0.008,0.008,0.012 -gravity 0,0,-9.81 -flow_density 1.6 -flow_viscosity 2.1e-5 "
+                    "-flow_pressure_pc boomeramg -flow_pressure_ksp_rtol 1e-12 -vof_density 8380 -vof_viscosity 6e-3 -vof_boxes 0,0,0,0.008,0.008,0.002 "
+                    "-energy_initial_temperature 1400 -energy_interface_radiation 0 -energy_pc boomeramg -coupling_heat_initial_temperature 573 "
+                    "-dem_radius 5e-4 -dem_density 8380 -dem_fill_count 20 -dem_fill_lower 0,0,0.0075 -dem_fill_upper 0.008,0.008,0.012 -dem_fill_jitter 0.5 "
+                    "-coupling_fluid_drag implicit -dt 1e-3 -dt_force -seed 7".split(), 10, (10, 10)),
     # V6's sphere entering water at its own size (8 x 8 x 67 cells, the seed's fixed step of 1 ms): the pressure
     # preconditioner is reused while the sphere falls through the air (steps 1-72) and rebuilt as it nears the
     # surface. The reuse case restarts at a step inside the reuse and at the last reused step before a rebuild.
@@ -181,7 +189,7 @@ def case_bitwise(exe, scene, ranks):
                     "vofopen": ("flow.xmf", "-flow_output_every"),
                     "coupled": ("particles.xmf", "-dem_output_every"), "coupledvof": ("particles.xmf", "-dem_output_every"),
                     "coupledwet": ("particles.xmf", "-dem_output_every"), "energy": ("energy.xmf", "-energy_output_every"),
-                    "energyvof": ("energy.xmf", "-energy_output_every")}[scene]
+                    "energyvof": ("energy.xmf", "-energy_output_every"), "coupledheat": ("particles.xmf", "-dem_output_every")}[scene]
     out = [every, str(n // 4)]  # the ParaView series, whose index a restart must continue
     run(exe, ranks, scene, ["-max_steps", str(2 * n), "-checkpoint_dir", a, "-output_dir", a + "-out"] + out)
     run(exe, ranks, scene, ["-max_steps", str(n), "-checkpoint_dir", b, "-output_dir", b + "-out"] + out)

@@ -100,6 +100,10 @@ public:
 
   // The kernel width of a particle of diameter d: max(kappa d, -coupling_kernel_min_width cells).
   PetscReal KernelWidth(PetscReal d) const;
+  // The particle-grid maps (K1, K3) and their kernel, for the other exchanges of the same particles (heat:
+  // ParticleHeat.hpp), so that every exchange uses the one kernel. Valid after SetUp.
+  Smoothing                      &Averager() { return avg_; }
+  const KernelAverager::Settings &KernelSettings() const { return kernel_; }
   // The mean over the owned and other ranks' wall faces of direction d (side 0: lower, 1: upper) of the pressure
   // gradient dp/dx_d the particles read there (the wall face's half control volume, FaceFields), as of the last
   // Average(). Collective. With it, the pressure at the wall is p(first cell) -/+ h/2 of it (ex34: the drop from

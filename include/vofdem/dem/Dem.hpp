@@ -120,6 +120,7 @@ public:
   // The fluid coupling (Coupling.hpp) sets the swarm's fluid_* fields; the integrator then applies them.
   void               SetFluidCoupled(bool on) { fluidCoupled_ = on, swarm_.SetFluidFields(on); }
   void               UseFluidFields() { swarm_.SetFluidFields(true); }  // a coupled scene, before SetUp (ParticleSwarm::GetArrays)
+  void               UseHeatFields() { swarm_.SetHeatFields(true); }    // particles that exchange heat (P11), before SetUp
   bool               Balancing() const { return balance_; }  // -dem_balance histogram
   // This rank's load as -dem_balance weighs it: its particles plus -dem_balance_contact_weight x their
   // contacts at the last force evaluation (DemBalance.cpp).

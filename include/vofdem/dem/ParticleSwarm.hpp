@@ -45,6 +45,12 @@ inline constexpr const char *fluidRotation       = "fluid_rotation";
 // Pa s, the fluid viscosity the particle reads (K1): the lubrication of -coupling_lubrication (P8) between two particles
 // takes the mean of theirs.
 inline constexpr const char *fluidViscosity = "fluid_viscosity";
+// The particle's energy (docs/physics.md P11), registered only when the particles exchange heat with the energy
+// equation (ParticleSwarm::SetHeatFields before Create): the enthalpy per mass h = int cp dT + f_l(T) L from the
+// reference temperature of the energy module, and the temperature T(h) it gives (0 K: not set yet, a new particle).
+// The particles know no fluid: the coupling (coupling/ParticleHeat.hpp) fills and moves both.
+inline constexpr const char *enthalpy    = "enthalpy";     // J/kg
+inline constexpr const char *temperature = "temperature";  // K
 }  // namespace field
 // q (4), centre in the body frame (3), clump mass, principal moments (3): see Clumps.hpp.
 inline constexpr int kRigidWidth = 11;
@@ -59,6 +65,9 @@ inline constexpr SwarmFieldWidth kFluidFields[] = {{field::fluidDrag, 1},       
                                                    {field::fluidCapillaryImpulse, 3}, {field::fluidSurfacePlane, 4}, {field::fluidRotationalDrag, 1},
                                                    {field::fluidRotation, 3},     {field::fluidViscosity, 1}};
 inline constexpr int kNumFluidFields = sizeof(kFluidFields) / sizeof(kFluidFields[0]);
+// The heat fields, likewise (zeroed for new particles; saved after the bonds, DemSaveLoad.cpp).
+inline constexpr SwarmFieldWidth kHeatFields[] = {{field::enthalpy, 1}, {field::temperature, 1}};
+inline constexpr int             kNumHeatFields = sizeof(kHeatFields) / sizeof(kHeatFields[0]);
 
 // Every field of the local particles at once, for loops over particles (structure of arrays;
 // vectors hold x,y,z per particle). Valid between GetArrays and RestoreArrays.
@@ -71,6 +80,7 @@ struct ParticleArrays {
   PetscReal  *fluidDrag = nullptr, *fluidVelocity = nullptr, *fluidForce = nullptr, *fluidImpulse = nullptr, *fluidAddedMass = nullptr;
   PetscReal  *fluidExplicitImpulse = nullptr, *fluidCapillaryImpulse = nullptr, *fluidSurfacePlane = nullptr;
   PetscReal  *fluidRotationalDrag = nullptr, *fluidRotation = nullptr, *fluidViscosity = nullptr;
+  PetscReal  *enthalpy = nullptr, *temperature = nullptr;  // null unless SetHeatFields(true) before Create
 };
 
 class ParticleSwarm {
@@ -86,6 +96,7 @@ public:
     PetscInt reals = 3 * 6 + 2 + (rigidRegistered_ ? kRigidWidth : 0) + 3;  // velocity ... torque, radius, mass; rigid; coordinates
     if (fluidRegistered_)
       for (const SwarmFieldWidth &f : kFluidFields) reals += f.width;
+    if (heatRegistered_) reals += kNumHeatFields;
     return 8.0 * reals + 8 + 4 + 8 + 8 + 4 + 4;  // id, type, clump; DMSwarm_pid, _cellid, _rank
   }
 
@@ -106,6 +117,10 @@ public:
   // is null otherwise).
   void           SetRigidFields(bool on) { rigidFields_ = on; }
   bool           HasRigidFields() const { return rigidRegistered_; }
+  // Particles that exchange heat (the energy module with a coupling): before Create, so that the enthalpy and
+  // temperature fields are registered (a.enthalpy and a.temperature are null otherwise).
+  void           SetHeatFields(bool on) { heatFields_ = on; }
+  bool           HasHeatFields() const { return heatRegistered_; }
   PetscErrorCode RestoreArrays(ParticleArrays *a) const;
   PetscErrorCode FieldsMoved() const;  // after any DMSwarm call that may reallocate (resize) the fields
 
@@ -127,6 +142,7 @@ private:
   bool fluidFields_ = false;      // GetArrays takes the fluid_* fields too (a coupled scene)
   bool fluidRegistered_ = false;  // Create registered them (fluidFields_ was set before it)
   bool rigidFields_ = false, rigidRegistered_ = false;  // the same for the clumps' `rigid` field
+  bool heatFields_ = false, heatRegistered_ = false;    // and for the heat fields
   mutable ParticleArrays cache_;         // every field's address (fluid ones included) for cacheN_ local particles
   mutable bool           cacheValid_ = false;
   mutable PetscInt       cacheN_     = -1;

@@ -93,6 +93,10 @@ public:
   PetscErrorCode SetOutputDir(const std::string &dir);
   PetscErrorCode WriteOutput(PetscInt step, PetscReal time);
   Vec            Temperature() const { return T_; }
+  // Heat exchanged with particles (docs/physics.md F9; coupling/ParticleHeat.hpp): a source per cell (W/m^3, a global
+  // vector of the cells) that each step's balance adds, and the energy the particles hold (J now, and J they brought:
+  // their initial enthalpy and that of particles added since), which the account counts (Summarize). nullptr: none.
+  void SetParticleHeat(Vec source, std::function<PetscErrorCode(PetscReal *held, PetscReal *brought)> held) { particleSource_ = source, particleHeld_ = std::move(held); }
   Vec            MeltFraction();  // f_l per cell (alpha-weighted: the metal's), for output
   const Laser   &Beam() const { return laser_; }
   const ThermalMaterial &Metal() const { return metal_; }
@@ -185,6 +189,9 @@ private:
   PetscInt               outputEvery_ = 0;
   std::string            outputDir_;
   std::vector<XdmfEntry> outputEntries_;
+
+  Vec                                                   particleSource_ = nullptr;  // SetParticleHeat
+  std::function<PetscErrorCode(PetscReal *, PetscReal *)> particleHeld_;
 };
 
 }  // namespace vofdem

@@ -1,0 +1,75 @@
+// The particles' heat and its exchange with the fluid's energy equation (-physics dem,flow,vof,energy; options
+// -coupling_heat_*): docs/physics.md P11 (the particle's energy), F9 (the fluid's source), F10 (the Nusselt law),
+// K1 and K3 (the kernel). Each fluid step, at its start (Stage::Exchange), for every particle:
+//  1. the fluid it reads (K1, the coupling's kernel): the temperature Tbar and density (eps-weighted), the fluid
+//     fraction (plain), the slip and viscosity the drag read (Coupling.hpp); the metal share of the mixture from the
+//     density, and from it the mixture's conductivity k_f, its capacity and Pr;
+//  2. h_c = Nu k_f/d with F10's Nu, radiation with the particle's emissivity against Tbar, and one exchange step of
+//     P11 over the fluid step (HeatExchange.hpp: exponential relaxation of the particle and the fluid it reads,
+//     stable for any step);
+//  3. the heat the particle gave, Q/dt (W), shared among the cells by the same kernel (K3), whose weights sum to
+//     one: the fluid's source of F9, which the energy module adds to the step's balance (Energy::SetParticleHeat).
+// The particles' enthalpy lives in the swarm (ParticleSwarm.hpp field::enthalpy, field::temperature); their total
+// joins the energy module's account (energy_total_J, energy_accounted_J).
+// Not here yet: the beam's share per particle with shadowing (P11's eta P_beam: one more power per particle in the
+// step, T_inf = Tbar + P/(A G)), contact conduction, melting into the VOF (P12).
+#pragma once
+
+#include "vofdem/coupling/Coupling.hpp"
+#include "vofdem/energy/Energy.hpp"
+
+#include <vector>
+
+namespace vofdem {
+
+struct ParticleHeatSummary {
+  PetscReal enthalpy  = 0;  // J: sum m h of all particles now (from the energy module's reference temperature)
+  PetscReal toFluid   = 0;  // W: what the particles gave the fluid in the last step, sum over particles of -Q/dt
+  PetscReal deposited = 0;  // W: what the cells received of it (the kernel's deposit, summed over the cells)
+  PetscReal exchanged = 0;  // J: the particles' heat to the fluid since the start (particle side)
+  PetscReal brought   = 0;  // J: the particles' enthalpy at the start plus that of particles added since
+  PetscReal Tmax = 0, Tmin = 0;  // K, over all particles (0 without particles)
+  PetscReal nusseltMax = 0;      // of the last step
+};
+
+class ParticleHeat {
+public:
+  PetscErrorCode SetFromOptions(MPI_Comm comm);
+  // After the coupling's and the energy's set-up: the particles take -coupling_heat_initial_temperature.
+  PetscErrorCode SetUp(Coupling &coupling, Flow &flow, Dem &dem, Energy &energy);
+  PetscErrorCode Exchange(PetscReal dt);  // the step of length dt that starts now: particles' enthalpy, the cells' source
+  PetscErrorCode Summarize(ParticleHeatSummary *s) const;  // collective
+  PetscErrorCode Held(PetscReal *now, PetscReal *brought) const;  // collective: sum m h now, and what particles brought
+  PetscErrorCode View(PetscViewer viewer) const;
+  PetscErrorCode Save(PetscViewer viewer) const;
+  PetscErrorCode Load(PetscViewer viewer);
+  PetscErrorCode Destroy();
+  const ThermalMaterial &Material() const { return material_; }
+
+private:
+  PetscErrorCode StartNew(ParticleArrays &a);  // particles at 0 K (new): the initial temperature; brought_ grows
+
+  Coupling *coupling_ = nullptr;
+  Flow     *flow_ = nullptr;
+  Dem      *dem_ = nullptr;
+  Energy   *energy_ = nullptr;
+  MPI_Comm  comm_ = MPI_COMM_NULL;
+
+  // options
+  PetscReal       T0_ = 300;  // K
+  std::string     materialName_ = "energy_metal";  // the energy module's metal (-energy_metal and its options), or a file
+  ThermalMaterial material_;
+  PetscReal       emissivity_ = -1;  // < 0: the material's
+  PetscBool       radiation_ = PETSC_TRUE, gasResponse_ = PETSC_TRUE;
+  PetscReal       kernelVolume_ = 0;  // V_eff / H^3 of the kernel (0: cell-based, the cell's volume)
+
+  // fields and scratch
+  Vec                    T_ = nullptr, source_ = nullptr, sourceEnergy_ = nullptr;  // Tbar's field and the deposit (cells), the energy's copy
+  std::vector<PetscReal> H_, Tbar_, rho_, eps_, power_;
+
+  // state (saved): global sums, equal on every rank
+  PetscReal brought_ = 0, exchanged_ = 0, toFluid_ = 0, deposited_ = 0, nusseltMax_ = 0;
+  PetscLogEvent ev_ = 0;
+};
+
+}  // namespace vofdem

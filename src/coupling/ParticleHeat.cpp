@@ -1,0 +1,231 @@
+// ParticleHeat.hpp: the particles' enthalpy and its exchange with the fluid's energy (docs/physics.md P11, F9, F10, K1, K3).
+#include "vofdem/coupling/ParticleHeat.hpp"
+
+#include "vofdem/base/Options.hpp"
+#include "vofdem/base/Runtime.hpp"
+#include "vofdem/coupling/HeatExchange.hpp"
+#include "vofdem/io/MaterialFile.hpp"
+
+#include <petscviewerhdf5.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace vofdem {
+
+namespace {
+
+// V_eff/H^3 = (int k dV)^2 / int k^2 dV of a kernel of width 1 (radial midpoint rule): the volume whose fluid
+// answers a deposit, as the fluid the particle then reads sees it (a uniform field: the deposit's weights w_J are the
+// kernel's, the average's weights too, and sum_J w_J^2 = V_cell/V_eff). 0 for the cell-based shapes.
+PetscReal KernelVolume(const KernelAverager::Settings &k) {
+  if (kernel::CellBased(k.shape) || k.shape == kernel::Shape::Linear) return 0;
+  const double rc = kernel::Cutoff(k.shape, 1.0, k.truncation);
+  const int    n  = 4000;
+  double       i1 = 0, i2 = 0;
+  for (int q = 0; q < n; ++q) {
+    const double r = (q + 0.5) * rc / n, w = kernel::Weight(k.shape, r * r, 1.0, rc), dv = 4 * PETSC_PI * r * r * rc / n;
+    i1 += w * dv, i2 += w * w * dv;
+  }
+  return i2 > 0 ? i1 * i1 / i2 : 0;
+}
+
+}  // namespace
+
+PetscErrorCode ParticleHeat::SetFromOptions(MPI_Comm comm) {
+  PetscFunctionBeginUser;
+  comm_ = comm;
+  PetscOptionsBegin(comm, "coupling_heat_", "Particle heat: the particles' enthalpy and its exchange with the fluid (docs/physics.md P11, F9, F10)", "Coupling");
+  {
+    OptionReader opt(PetscOptionsObject);
+    PetscCall(opt.Real("-initial_temperature", "Initial temperature of the particles (and of particles added later)", "K", &T0_, RealRange::Positive()));
+    PetscCall(opt.String("-material", "Material file of the particles' h(T) and emissivity (config/materials/NAME.yaml or a path); energy_metal: the energy's -energy_metal with its -energy_metal_* options", &materialName_));
+    PetscCall(opt.Real("-emissivity", "Emissivity of the particles' surface (default: the material's)", "", &emissivity_, RealRange::Any()));
+    if (emissivity_ != -1 && (emissivity_ < 0 || emissivity_ > 1)) VofdemInputError(comm, "option -coupling_heat_emissivity: %g is out of range [0, 1]", (double)emissivity_);
+    PetscCall(opt.Bool("-radiation", "Radiation between each particle and the fluid temperature it reads, e sigma (Tbar^4 - T^4) (P11)", &radiation_));
+    PetscCall(opt.Bool("-gas_response", "Each particle's step relaxes it together with the fluid it reads (the mixture's capacity over the kernel's volume), so that neither passes their common temperature (HeatExchange.hpp); off: against a fixed Tbar", &gasResponse_));
+  }
+  PetscOptionsEnd();
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode ParticleHeat::SetUp(Coupling &coupling, Flow &flow, Dem &dem, Energy &energy) {
+  PetscFunctionBeginUser;
+  coupling_ = &coupling, flow_ = &flow, dem_ = &dem, energy_ = &energy;
+  PetscCheck(dem.Particles().HasHeatFields(), comm_, PETSC_ERR_ORDER, "particle heat: the swarm was created without the heat fields (Dem::UseHeatFields before Dem::SetUp)");
+  // Latent heat needs the backward Euler of the moving energy (Energy::Step): there the cells gain exactly dt times the source.
+  PetscCheck(energy.Moving(), comm_, PETSC_ERR_ORDER, "particle heat: the energy must move with the interface (-physics dem,flow,vof,energy)");
+  if (materialName_ == "energy_metal") material_ = energy.Metal();
+  else {
+    const std::string path = FindMaterialFile(materialName_);
+    if (path.empty()) VofdemInputError(comm_, "option -coupling_heat_material: no material file '%s' (config/materials/%s.yaml or a path)", materialName_.c_str(), materialName_.c_str());
+    std::string message;
+    material_      = ThermalMaterial{};
+    material_.name = materialName_;
+    if (!ReadThermalMaterial(path, true, &material_, &message)) VofdemInputError(comm_, "option -coupling_heat_material: %s", message.c_str());
+    if (!material_.cp.Valid() || material_.cp.Min() <= 0) VofdemInputError(comm_, "option -coupling_heat_material: %s gives no positive specific_heat", path.c_str());
+    if (material_.latentHeat > 0 && !(material_.liquidus > material_.solidus && material_.solidus > 0))
+      VofdemInputError(comm_, "option -coupling_heat_material: %s has latent heat but no solidus below its liquidus", path.c_str());
+  }
+  material_.referenceTemperature = energy.Metal().referenceTemperature;  // one zero of enthalpy for the whole account
+  if (emissivity_ >= 0) material_.emissivity = emissivity_;
+  if (!radiation_) material_.emissivity = 0;
+  kernelVolume_ = KernelVolume(coupling.KernelSettings());
+  const StaggeredGrid &sg = flow.Staggered();
+  PetscCall(DMCreateGlobalVector(sg.Cells(), &T_));
+  PetscCall(VecDuplicate(T_, &source_));
+  PetscCall(VecSet(source_, 0));
+  PetscCall(DMCreateGlobalVector(sg.Base().CellDM(), &sourceEnergy_));
+  PetscCall(VecSet(sourceEnergy_, 0));
+  PetscCall(PetscLogEventRegister("CouplingHeat", DM_CLASSID, &ev_));
+  // The particles there now take the initial temperature (a restart then loads theirs).
+  ParticleArrays a;
+  PetscCall(dem.Particles().GetArrays(&a));
+  for (PetscInt p = 0; p < a.n; ++p) a.temperature[p] = 0;
+  PetscCall(StartNew(a));
+  PetscCall(dem.Particles().RestoreArrays(&a));
+  energy.SetParticleHeat(sourceEnergy_, [this](PetscReal *now, PetscReal *brought) { return Held(now, brought); });
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode ParticleHeat::StartNew(ParticleArrays &a) {
+  PetscReal mine = 0, all = 0;
+
+  PetscFunctionBeginUser;
+  const PetscReal h0 = material_.Enthalpy(T0_);
+  for (PetscInt p = 0; p < a.n; ++p)
+    if (a.temperature[p] == 0) {
+      a.temperature[p] = T0_, a.enthalpy[p] = h0;
+      mine += a.mass[p] * h0;
+    }
+  PetscCallMPI(MPI_Allreduce(&mine, &all, 1, MPIU_REAL, MPIU_SUM, comm_));
+  brought_ += all;
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode ParticleHeat::Exchange(PetscReal dt) {
+  ParticleArrays a;
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscLogEventBegin(ev_, 0, 0, 0, 0));
+  const ParticleSwarm &sw = dem_->Particles();
+  PetscCall(sw.GetArrays(&a));
+  PetscCall(StartNew(a));
+  const PetscInt n = a.n;
+  H_.resize(n), Tbar_.resize(n), rho_.resize(n), eps_.resize(n), power_.resize(n);
+  for (PetscInt p = 0; p < n; ++p) H_[p] = coupling_->KernelWidth(2 * a.radius[p]);
+  // K1: the fluid at each particle; T and rho eps-weighted, eps plain (as the drag reads it, CouplingStep.cpp).
+  PetscCall(VecCopy(energy_->Temperature(), T_));  // the energy's cells, the same layout on the staggered grid's cells
+  {
+    const Vec  fields[3]  = {T_, flow_->Density(), flow_->FluidFraction()};
+    const Vec  weights[3] = {flow_->FluidFraction(), flow_->FluidFraction(), nullptr};
+    const bool walls[3]   = {true, true, true};
+    PetscReal *outs[3]    = {Tbar_.data(), rho_.data(), eps_.data()};
+    PetscCall(coupling_->Averager().Average(3, 3, fields, weights, walls, n, a.x, H_.data(), outs, 1));
+  }
+  const ThermalMaterial &metal = energy_->Metal(), &gas = energy_->Gas();
+  const PetscReal       *h = flow_->Staggered().Base().Spacing();
+  const PetscReal        Vc = h[0] * h[1] * h[2], drho = metal.density - gas.density;
+  PetscReal              sums[2] = {0, 0}, nuMax = 0;  // heat to the fluid (W): particle side; deposited
+  for (PetscInt p = 0; p < n; ++p) {
+    const PetscReal d = 2 * a.radius[p], Tb = Tbar_[p], rho = rho_[p], eps = eps_[p];
+    // The mixture the particle reads (docs/physics.md F): the metal share from the averaged density.
+    const PetscReal al = drho != 0 ? std::min((PetscReal)1, std::max((PetscReal)0, (rho - gas.density) / drho)) : 0;
+    const PetscReal kf = al * metal.k.At(Tb) + (1 - al) * gas.k.At(Tb);
+    const PetscReal cv = al * metal.density * metal.cp.At(Tb) + (1 - al) * gas.density * gas.cp.At(Tb);  // J/(m^3 K)
+    PetscReal       slip2 = 0;
+    for (int c = 0; c < 3; ++c) slip2 += (a.fluidVelocity[3 * p + c] - a.v[3 * p + c]) * (a.fluidVelocity[3 * p + c] - a.v[3 * p + c]);
+    const PetscReal mu = a.fluidViscosity[p];
+    const PetscReal Re = eps * rho * d * std::sqrt(slip2) / mu, Pr = mu * (cv / rho) / kf;
+    const PetscReal Nu = heat::Nusselt(eps, Re, Pr);  // docs/physics.md (F10)
+    nuMax = std::max(nuMax, Nu);
+    const PetscReal Cg = gasResponse_ ? cv * std::max(kernelVolume_ * H_[p] * H_[p] * H_[p], Vc) : 0;
+    // docs/physics.md (P11): the particle's step; (F9): what it loses the fluid gains.
+    const heat::StepResult r = heat::Step(material_, a.mass[p], PETSC_PI * d * d, Nu * kf / d, material_.emissivity, Tb, Cg, a.enthalpy[p], a.temperature[p], dt);
+    a.enthalpy[p] = r.h, a.temperature[p] = r.T;
+    power_[p] = dt > 0 ? -r.heat / dt : 0;
+    sums[0] += power_[p];
+  }
+  // K3: the same kernel, normalised over the cells that take part: the cells' total is the particles' to round-off.
+  PetscCall(VecSet(source_, 0));
+  PetscCall(coupling_->Averager().Deposit(3, n, a.x, H_.data(), power_.data(), 1, source_));
+  PetscCall(sw.RestoreArrays(&a));
+  PetscCall(VecSum(source_, &sums[1]));
+  PetscCall(VecScale(source_, 1 / Vc));  // W/m^3
+  PetscCall(VecCopy(source_, sourceEnergy_));
+  {
+    const PetscReal mine = sums[0];
+    PetscCallMPI(MPI_Allreduce(&mine, &sums[0], 1, MPIU_REAL, MPIU_SUM, comm_));
+  }
+  PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, &nuMax, 1, MPIU_REAL, MPIU_MAX, comm_));
+  toFluid_ = sums[0], deposited_ = sums[1], nusseltMax_ = nuMax;
+  exchanged_ += toFluid_ * dt;
+  PetscCall(PetscLogEventEnd(ev_, 0, 0, 0, 0));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode ParticleHeat::Held(PetscReal *now, PetscReal *brought) const {
+  ParticleArrays a;
+  PetscReal      mine = 0;
+
+  PetscFunctionBeginUser;
+  PetscCall(dem_->Particles().GetArrays(&a));
+  for (PetscInt p = 0; p < a.n; ++p) mine += a.mass[p] * a.enthalpy[p];
+  PetscCall(dem_->Particles().RestoreArrays(&a));
+  PetscCallMPI(MPI_Allreduce(&mine, now, 1, MPIU_REAL, MPIU_SUM, comm_));
+  *brought = brought_;
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode ParticleHeat::Summarize(ParticleHeatSummary *s) const {
+  ParticleArrays a;
+  PetscReal      range[2] = {-PETSC_MAX_REAL, -PETSC_MAX_REAL};  // max T, -min T
+
+  PetscFunctionBeginUser;
+  PetscCall(Held(&s->enthalpy, &s->brought));
+  PetscCall(dem_->Particles().GetArrays(&a));
+  for (PetscInt p = 0; p < a.n; ++p)  // a particle added in this step's sub-steps (0 K) takes its temperature at the next exchange
+    if (a.temperature[p] > 0) range[0] = std::max(range[0], a.temperature[p]), range[1] = std::max(range[1], -a.temperature[p]);
+  PetscCall(dem_->Particles().RestoreArrays(&a));
+  PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, range, 2, MPIU_REAL, MPIU_MAX, comm_));
+  const bool any = range[0] > -PETSC_MAX_REAL;
+  s->Tmax = any ? range[0] : 0, s->Tmin = any ? -range[1] : 0;
+  s->toFluid = toFluid_, s->deposited = deposited_, s->exchanged = exchanged_, s->nusseltMax = nusseltMax_;
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode ParticleHeat::View(PetscViewer viewer) const {
+  PetscFunctionBeginUser;
+  PetscCall(PetscViewerASCIIPrintf(viewer, "particle heat (P11, F9, F10): material %s (cp %g J/(kg K) at %g K, latent heat %g J/kg, solidus %g K, liquidus %g K), emissivity %g, "
+                                           "initial %g K; Nusselt of F10; kernel volume %.4g H^3%s\n",
+                                   material_.path.empty() ? material_.name.c_str() : material_.path.c_str(), (double)material_.cp.At(T0_), (double)T0_, (double)material_.latentHeat,
+                                   (double)material_.solidus, (double)material_.liquidus, (double)material_.emissivity, (double)T0_, (double)kernelVolume_,
+                                   gasResponse_ ? " (the fluid's response in each step)" : " (fixed fluid temperature over a step)"));
+  PetscFunctionReturn(0);
+}
+
+// The particles' enthalpy and temperature travel in the swarm (DemSaveLoad.cpp); here the account's sums.
+PetscErrorCode ParticleHeat::Save(PetscViewer viewer) const {
+  PetscFunctionBeginUser;
+  const PetscReal state[5] = {brought_, exchanged_, toFluid_, deposited_, nusseltMax_};
+  const char     *names[5] = {"particle_heat_brought", "particle_heat_exchanged", "particle_heat_to_fluid", "particle_heat_deposited", "particle_heat_nusselt_max"};
+  for (int k = 0; k < 5; ++k) PetscCall(PetscViewerHDF5WriteAttribute(viewer, "/", names[k], PETSC_REAL, &state[k]));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode ParticleHeat::Load(PetscViewer viewer) {
+  PetscFunctionBeginUser;
+  PetscReal  *state[5] = {&brought_, &exchanged_, &toFluid_, &deposited_, &nusseltMax_};
+  const char *names[5] = {"particle_heat_brought", "particle_heat_exchanged", "particle_heat_to_fluid", "particle_heat_deposited", "particle_heat_nusselt_max"};
+  for (int k = 0; k < 5; ++k) PetscCall(PetscViewerHDF5ReadAttribute(viewer, "/", names[k], PETSC_REAL, nullptr, state[k]));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode ParticleHeat::Destroy() {
+  PetscFunctionBeginUser;
+  if (energy_) energy_->SetParticleHeat(nullptr, nullptr);
+  for (Vec *v : {&T_, &source_, &sourceEnergy_}) PetscCall(VecDestroy(v));
+  PetscFunctionReturn(0);
+}
+
+}  // namespace vofdem

@@ -1,0 +1,70 @@
+// ParticleHeatModule.hpp: the particles' heat in the simulation's stages, its checks, monitor and checkpoints.
+#include "vofdem/coupling/ParticleHeatModule.hpp"
+
+#include "vofdem/base/ModuleRegistry.hpp"
+#include "vofdem/base/Runtime.hpp"
+#include "vofdem/coupling/CouplingModule.hpp"
+#include "vofdem/dem/DemModule.hpp"
+#include "vofdem/energy/EnergyModule.hpp"
+#include "vofdem/flow/FlowModule.hpp"
+
+#include <cmath>
+#include <cstdio>
+
+namespace vofdem {
+
+PetscErrorCode ParticleHeatModule::Configure(ModuleSet &modules, const RunContext &run) {
+  PetscFunctionBeginUser;
+  dem_      = modules.Get<DemModule>("dem");
+  flow_     = modules.Get<FlowModule>("flow");
+  coupling_ = modules.Get<CouplingModule>("coupling");
+  PetscCheck(dem_ && flow_ && coupling_, run.comm, PETSC_ERR_PLIB, "particle heat: needs the dem, flow and coupling modules below it");
+  // The energy moves with the interface's sweeps (and steps with backward Euler there): the energy module refuses flow without vof.
+  dem_->Get().UseHeatFields();  // the swarm's enthalpy and temperature, before the particles are made
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode ParticleHeatModule::SetUp(ModuleSet &modules, const RunContext &) {
+  PetscFunctionBeginUser;
+  EnergyModule *energy = modules.Get<EnergyModule>("energy");  // after this module in the registry: found at set-up
+  PetscCheck(energy, PETSC_COMM_WORLD, PETSC_ERR_PLIB, "particle heat: no energy module");
+  PetscCall(heat_.SetUp(coupling_->Get(), flow_->Get(), dem_->Get(), energy->Get()));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode ParticleHeatModule::Run(Stage stage, StepState &step) {
+  PetscFunctionBeginUser;
+  if (stage == Stage::Exchange) PetscCall(heat_.Exchange(step.dt));
+  PetscFunctionReturn(0);
+}
+
+std::string ParticleHeatModule::MonitorColumns() const {
+  return ",particle_enthalpy_J,particle_heat_to_fluid_W,particle_heat_deposited_W,particle_heat_exchanged_J,particle_temperature_max_K,particle_temperature_min_K,particle_nusselt_max";
+}
+
+PetscErrorCode ParticleHeatModule::Monitor(MonitorPart *part) {
+  ParticleHeatSummary s;
+  char                b[400];
+
+  PetscFunctionBeginUser;
+  PetscCall(heat_.Summarize(&s));
+  const PetscReal miss = s.toFluid != 0 ? std::fabs(s.deposited / s.toFluid - 1) : std::fabs(s.deposited);
+  std::snprintf(b, sizeof b, "  | particle heat %.8e J  to fluid %.4e W (deposit error %.1e)  T_p %.2f-%.2f K", (double)s.enthalpy, (double)s.toFluid, (double)miss, (double)s.Tmin,
+                (double)s.Tmax);
+  part->screen = b;
+  std::snprintf(b, sizeof b, ",%.16e,%.16e,%.16e,%.16e,%.12e,%.12e,%.8e", (double)s.enthalpy, (double)s.toFluid, (double)s.deposited, (double)s.exchanged, (double)s.Tmax, (double)s.Tmin,
+                (double)s.nusseltMax);
+  part->csv = b;
+  PetscFunctionReturn(0);
+}
+
+void RegisterParticleHeatModule(ModuleRegistry &registry) {
+  ModuleEntry e;
+  e.name      = "particle_heat";
+  e.summary   = "the particles' enthalpy and its exchange with the fluid's energy by the kernel (src/coupling; on with dem, flow and energy)";
+  e.impliedBy = {"dem", "flow", "energy"};
+  e.create    = [] { return std::unique_ptr<Module>(new ParticleHeatModule); };
+  registry.Add(std::move(e));
+}
+
+}  // namespace vofdem

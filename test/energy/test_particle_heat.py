@@ -1,0 +1,155 @@
+#!/usr/bin/python3
+"""Particle heat (docs/physics.md P11, F9, F10; docs/verification.md E6 part 1): one IN718 particle (d 96 um, seed 000)
+at rest in still, hot argon, -physics dem,flow,vof,energy (no metal in the box), 12^3 cells of 125 um, the particle 10 um
+off the box's centre in x (on 2 ranks, split in x, its kernel straddles the rank boundary at x = 0.75 mm). The gas's specific heat is
+raised to 2e8 J/(kg K) so that the gas is a reservoir (its capacity within the kernel about 1e4 times the particle's);
+in still fluid Re = 0 and Nu = 2 whatever Pr (F10). Checked at every monitor row:
+  (a) the particle's temperature against the ODE with the same laws, m dh/dt = pi d^2 [2 k_g/d (T_g - T) + e sigma
+      (T_g^4 - T^4)], h(T) = cp (T - T_ref) + f_l(T) L (RK4, 200 sub-steps per step), within 1 % of the rise T_g - T0:
+      (i) 573 K in gas at 1400 K (sensible heat only), (ii) 1400 K in gas at 1800 K through the melting range
+      (solidus 1533 K, liquidus 1609 K, L 2.1e5 J/kg: the plateau of latent heat), (iii) a 5 um particle, whose time
+      constant is a third of the 2 ms step (the step is stable and does not overshoot the gas);
+  (b) the kernel's deposit: the cells receive what the particles give, per step, to 1e-12 (F9, K3);
+  (c) the particles' loss is the fluid's gain: the change of the fluid's energy (energy_total_J minus the particles'
+      enthalpy) against the change of the particles' enthalpy, to 1e-12 of the heat exchanged;
+  (d) the energy account with the particles: |energy_total_J - energy_accounted_J| within 1e-10 of the heat exchanged;
+  (e) 1 and 2 ranks: the particle's temperature and the fluid's energy agree to 1e-10 (relative);
+  (f) the particle's temperature in the ParaView output (particles.xmf) is the monitor's;
+a wrong sign or factor of the exchange fails (a) or (c).
+  test_particle_heat.py VOFDEM"""
+import csv
+import math
+import os
+import shutil
+import sys
+import tempfile
+
+import h5py
+import numpy as np
+
+ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+sys.path.insert(0, os.path.join(ROOT, "scripts", "lib"))
+from testcheck import check, finish, run_vofdem  # noqa: E402
+
+SIGMA = 5.670374419e-8
+D, RHO, CP, EMISSIVITY = 96e-6, 8380.0, 650.0, 0.4           # in718.yaml
+TS, TL, L = 1533.0, 1609.0, 2.1e5
+K_GAS = 0.018                                                # argon.yaml
+CP_GAS = 2e8
+DT, T_END = 2e-3, 0.3
+CENTRE = (0.74e-3, 0.75e-3, 0.75e-3)
+
+
+def arguments(out, t_gas, t0, d=D, t_end=T_END, every=5):
+    r = d / 2
+    lo = ",".join("%.10g" % (c - r - 1e-9) for c in CENTRE)
+    hi = ",".join("%.10g" % (c + r + 1e-9) for c in CENTRE)
+    return ["-physics", "dem,flow,vof,energy", "-grid_upper", "1.5e-3,1.5e-3,1.5e-3", "-grid_cells", "12,12,12", "-gravity", "0,0,0",
+            "-flow_density", "1.6", "-flow_viscosity", "2.1e-5", "-vof_density", "%g" % RHO, "-vof_viscosity", "6e-3",
+            "-energy_gas_specific_heat", "%g" % CP_GAS, "-energy_initial_temperature", "%g" % t_gas, "-energy_reference_temperature", "%g" % t_gas,
+            "-energy_interface_radiation", "0",
+            "-dem_radius", "%g" % r, "-dem_density", "%g" % RHO, "-dem_youngs_modulus", "1e4", "-dem_fill_count", "1",
+            "-dem_fill_lower", lo, "-dem_fill_upper", hi, "-coupling_heat_initial_temperature", "%g" % t0,
+            "-dt", "%g" % DT, "-final_time", "%g" % t_end, "-max_steps", "100000", "-monitor_every", "%d" % every, "-monitor_timing", "0", "-output_dir", out]
+
+
+def rows(out):
+    with open(os.path.join(out, "monitor.csv")) as f:
+        return [{k: float(v) for k, v in r.items()} for r in csv.DictReader(f)]
+
+
+def enthalpy(T, tref):
+    f = min(1.0, max(0.0, (T - TS) / (TL - TS)))
+    return CP * (T - tref) + f * L
+
+
+def temperature(h, tref):
+    """The inverse of enthalpy(): piecewise linear in T."""
+    hs, hl = enthalpy(TS, tref), enthalpy(TL, tref)
+    if h <= hs:
+        return tref + h / CP
+    if h >= hl:
+        return TL + (h - hl) / CP
+    return TS + (h - hs) / (hl - hs) * (TL - TS)
+
+
+def ode(t_gas, t0, times, D=D):
+    """T(t) of m dh/dt = A [h_c (T_g - T) + e sigma (T_g^4 - T^4)] by RK4 on h (200 sub-steps per step)."""
+    m, A, hc = RHO * math.pi * D ** 3 / 6, math.pi * D * D, 2 * K_GAS / D
+    rate = lambda h: A * (hc * (t_gas - temperature(h, t_gas)) + EMISSIVITY * SIGMA * (t_gas ** 4 - temperature(h, t_gas) ** 4)) / m
+    h, t, out, dt = enthalpy(t0, t_gas), 0.0, [], DT / 200
+    for want in times:
+        while t < want - 1e-12:
+            k1 = rate(h)
+            k2 = rate(h + 0.5 * dt * k1)
+            k3 = rate(h + 0.5 * dt * k2)
+            k4 = rate(h + dt * k3)
+            h += dt * (k1 + 2 * k2 + 2 * k3 + k4) / 6
+            t += dt
+        out.append(temperature(h, t_gas))
+    return out
+
+
+def main():
+    exe = sys.argv[1]
+    tmp = tempfile.mkdtemp(prefix="vofdem-particle-heat-")
+    try:
+        # (name, gas and initial temperature, ranks, diameter, end time, monitor rows every so many steps)
+        for name, t_gas, t0, rank_counts, d, t_end, every in (("sensible", 1400.0, 573.0, (1, 2), D, T_END, 5), ("melting", 1800.0, 1400.0, (1,), D, T_END, 5),
+                                                              ("small", 1400.0, 573.0, (1,), 5e-6, 0.02, 1)):
+            runs = {}
+            for ranks in rank_counts:
+                out = os.path.join(tmp, "%s-%d" % (name, ranks))
+                extra = (["-grid_ranks", "2,1,1"] if ranks == 2 else []) + (["-dem_output_every", "75"] if name == "sensible" else [])
+                run_vofdem(exe, ranks, arguments(out, t_gas, t0, d, t_end, every) + extra)
+                r = rows(out)
+                runs[ranks] = r
+                label = "%s, %d rank(s)" % (name, ranks)
+                check(abs(r[-1]["time_s"] - t_end) < 1e-9, "%s: ran to t = %g s" % (label, r[-1]["time_s"]))
+                ref = ode(t_gas, t0, [x["time_s"] for x in r], d)
+                err = max(abs(x["particle_temperature_max_K"] - w) for x, w in zip(r, ref)) / (t_gas - t0)
+                k = max(range(len(r)), key=lambda i: abs(r[i]["particle_temperature_max_K"] - ref[i]))
+                check(err <= 0.01, "%s: T_p against the ODE: largest error %.3e of the rise %g K (tolerance 1e-2; at t = %.3f s %.4f K against %.4f K; at the end %.4f K)"
+                      % (label, err, t_gas - t0, r[k]["time_s"], r[k]["particle_temperature_max_K"], ref[k], r[-1]["particle_temperature_max_K"]))
+                if name == "sensible":  # ParaView: the particle's temperature in particles.xmf
+                    xmf = open(os.path.join(out, "particles.xmf")).read()
+                    last = sorted(f for f in os.listdir(out) if f.startswith("particles_") and f.endswith(".h5"))[-1]  # the last fluid step's
+                    with h5py.File(os.path.join(out, last)) as f:
+                        tp = float(np.array(f["temperature"]).ravel()[0])
+                    check('Name="temperature"' in xmf and abs(tp - r[-1]["particle_temperature_max_K"]) <= 1e-12 * tp,
+                          "%s: particles.xmf names the temperature; %s holds %.12g K (the monitor's %.12g K)" % (label, last, tp, r[-1]["particle_temperature_max_K"]))
+                if name == "small":  # its time constant is a third of the step: explicit Euler would oscillate and grow
+                    tau = RHO * CP * d * d / (6 * 2 * K_GAS)
+                    over = max(x["particle_temperature_max_K"] for x in r) - t_gas
+                    check(DT > 3 * tau and over <= 1e-9 * t_gas, "%s: step %.1f time constants (conduction alone), no overshoot past the gas (by %.2e K)" % (label, DT / tau, over))
+                if name == "melting":
+                    melted = [x for x in r if TS < x["particle_temperature_max_K"] < TL]
+                    check(len(melted) >= 3, "%s: %d monitor rows inside the melting range (the latent heat's plateau)" % (label, len(melted)))
+                dep = max(abs(x["particle_heat_deposited_W"] - x["particle_heat_to_fluid_W"]) / max(abs(x["particle_heat_to_fluid_W"]), 1e-300) for x in r[1:])
+                check(dep <= 1e-12, "%s: the cells receive what the particle gives, per step: largest relative difference %.2e (tolerance 1e-12)" % (label, dep))
+                worst_gain = worst_account = 0.0
+                fluid0, part0 = r[0]["energy_total_J"] - r[0]["particle_enthalpy_J"], r[0]["particle_enthalpy_J"]
+                for x in r[1:]:
+                    lost = part0 - x["particle_enthalpy_J"]  # < 0: the particle gains
+                    gained = x["energy_total_J"] - x["particle_enthalpy_J"] - fluid0
+                    worst_gain = max(worst_gain, abs(gained - lost) / abs(lost))
+                    worst_account = max(worst_account, abs(x["energy_total_J"] - x["energy_accounted_J"]) / abs(lost))
+                check(r[1]["particle_heat_to_fluid_W"] < 0 and part0 < r[-1]["particle_enthalpy_J"], "%s: the particle takes heat (%.4e W in the first row's step; enthalpy %.6e -> %.6e J)"
+                      % (label, r[1]["particle_heat_to_fluid_W"], part0, r[-1]["particle_enthalpy_J"]))
+                check(worst_gain <= 1e-12, "%s: the fluid's gain against the particle's loss: largest relative difference %.2e (tolerance 1e-12; %.6e J exchanged)"
+                      % (label, worst_gain, part0 - r[-1]["particle_enthalpy_J"]))
+                check(worst_account <= 1e-10, "%s: |energy_total_J - energy_accounted_J| at most %.2e of the heat exchanged (tolerance 1e-10)" % (label, worst_account))
+            if 2 in runs:
+                a, b = runs[1], runs[2]
+                dT = max(abs(x["particle_temperature_max_K"] / y["particle_temperature_max_K"] - 1) for x, y in zip(a, b))
+                dE = max(abs((x["energy_total_J"] - x["particle_enthalpy_J"]) - (y["energy_total_J"] - y["particle_enthalpy_J"])) / abs(x["particle_enthalpy_J"] - a[0]["particle_enthalpy_J"])
+                         for x, y in zip(a[1:], b[1:]))
+                check(len(a) == len(b) and dT <= 1e-10 and dE <= 1e-10, "%s: 1 and 2 ranks agree: T_p to %.2e, the fluid's energy to %.2e of the heat exchanged (tolerance 1e-10)"
+                      % (name, dT, dE))
+    finally:
+        shutil.rmtree(tmp, ignore_errors=True)
+    finish()
+
+
+if __name__ == "__main__":
+    main()
