@@ -11,8 +11,10 @@ neighbours (gap 0.5 r -/+ 0.42 r), none of the next (gap 1.54 r -/+ 0.42 r). Par
 The loading. Two planes (-dem_walls) touch the bottom and top layers; from t = 0 each moves toward the other at v / 2
 (-dem_wall_*_velocity), so the platens close at v. The platens meet the spheres by the linear contact law (P4, a
 stiffness of 2 k_n A, -dem_dt_factor 1: the bonds set the step); the spheres do not touch each other before the peak
-(the smallest gap closes at a strain of ~0.03). Stress = the mean of the two platens' forces / (pi D^2 / 4); strain =
-the platens' approach / the initial height H (the platens' gap). No gravity; no damping but the contact law's at the
+(the smallest gap closes at a strain of ~0.03). Stress = the mean of the two platens' forces / the lattice's section
+A = (spheres per layer) dnn^2 (each layer a square lattice of side dnn = 2 r + g; the circle of diameter D cuts it
+unevenly, so pi D^2 / 4 would not be the section the spheres fill); strain = the platens' approach / the initial
+height H (the platens' gap). No gravity; no damping but the contact law's at the
 platens (bonds have none, P13).
 
 Quasi-static. The specimen's P-wave speed is c = sqrt(E / rho_b), E the measured modulus and rho_b the bulk density;
@@ -43,8 +45,9 @@ K_WALL = 2 * KN * BOND_A  # platen contact stiffness, N/m
 
 
 def specimen(diameter_in_radii, seed=4):
-    """Centres of the cylinder's spheres, a list of (x, y, z) in a frame with the axis at x = y = 0 and the bottom
-    layer's centres at z = 0; and the height H between the platens that touch the bottom and top layers."""
+    """The cylinder's spheres, a list of (x, y, z, r) in a frame with the axis at x = y = 0 and the bottom layer's
+    centres at z = 0; the height H between the platens that touch the bottom and top layers; the diameter D; and
+    the lattice's section A = (spheres per layer) dnn^2."""
     dnn = 2 * R_P + GAP
     a = math.sqrt(2) * dnn          # the cube's side
     D = diameter_in_radii * R_P
@@ -68,7 +71,7 @@ def specimen(diameter_in_radii, seed=4):
                     dz = 0.0
                 pts.append((x + dx, y + dy, z + dz, rad))
     H = (layers - 1) * a / 2 + 2 * R_P
-    return pts, H, D
+    return pts, H, D, len(pts) / layers * dnn * dnn
 
 
 def options(pts, H, D, speed, strain_end, out, ranks):
@@ -100,10 +103,11 @@ def options(pts, H, D, speed, strain_end, out, ranks):
     return args
 
 
-def run(exe, ranks, diameter_in_radii, speed, strain_end, out, rows=400, timeout=3600):
-    """Runs one compression to strain_end with about `rows` monitor rows; returns the curve (see curve())."""
+def run(exe, ranks, diameter_in_radii, speed, strain_end, out, rows=400, timeout=3600, reuse=False):
+    """Runs one compression to strain_end with about `rows` monitor rows; returns the curve (see curve()). reuse: read
+    the monitor an earlier run left in out instead (to read the curves again)."""
     os.makedirs(out, exist_ok=True)
-    pts, H, D = specimen(diameter_in_radii)
+    pts, H, D, area = specimen(diameter_in_radii)
     args = options(pts, H, D, speed, strain_end, out, ranks)
     # the step is set by the bonds (P13): the lightest sphere in 12 bonds of the largest section, omega^2 = 24 (k_n + 3.5 k_s) A / m,
     # omega dt = 1 (the rows are then about `rows`, the count does not matter)
@@ -111,19 +115,17 @@ def run(exe, ranks, diameter_in_radii, speed, strain_end, out, rows=400, timeout
     dt = 1 / math.sqrt(24 * (KN + 3.5 * KS) * BOND_A / m)
     steps = strain_end * H / speed / dt
     args[args.index("MONITOR")] = str(max(1, int(steps / rows)))
-    p = run_vofdem(exe, ranks, args, timeout=timeout)
-    if p.returncode:
+    if not reuse and run_vofdem(exe, ranks, args, timeout=timeout).returncode:
         return None
-    c = curve(os.path.join(out, "monitor.csv"), len(pts), H, D, speed)
+    c = curve(os.path.join(out, "monitor.csv"), len(pts), H, area, speed)
     c["mass"] = sum(RHO * 4.0 / 3.0 * math.pi * p[3] ** 3 for p in pts)
     return c
 
 
-def curve(monitor, particles, H, D, speed):
+def curve(monitor, particles, H, area, speed):
     """The monitor's rows as the stress-strain curve: dict of lists t, strain, stress (Pa, the mean of the platens'),
-    stress_bottom, stress_top, broken, intact; and the specimen's particles, H, D, speed."""
-    area = math.pi * D * D / 4
-    c = dict(t=[], strain=[], stress=[], stress_bottom=[], stress_top=[], broken=[], intact=[], particles=particles, H=H, D=D, speed=speed)
+    stress_bottom, stress_top, broken, intact; and the specimen's particles, H, section area, speed."""
+    c = dict(t=[], strain=[], stress=[], stress_bottom=[], stress_top=[], broken=[], intact=[], particles=particles, H=H, area=area, speed=speed)
     with open(monitor) as fh:
         for row in csv.DictReader(fh):
             t = float(row["time_s"])
@@ -155,7 +157,7 @@ def analyse(c, fit=(0.1, 0.5)):
     out["fit_points"] = n
     # the worst departure of the fitted points from the line, per the peak: how linear the rise is
     out["fit_residual"] = max(abs(p[1] - my - out["E"] * (p[0] - mx)) for p in pts) / s[k]
-    out["rho_b"] = c["mass"] / (math.pi * c["D"] ** 2 / 4 * c["H"])
+    out["rho_b"] = c["mass"] / (c["area"] * c["H"])
     out["c_p"] = math.sqrt(out["E"] / out["rho_b"])
     out["rate"] = c["speed"] / out["c_p"]
     return out
