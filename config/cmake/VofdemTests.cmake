@@ -41,6 +41,10 @@ set_tests_properties(dem/bond_break PROPERTIES LABELS "quick;dem;bonds" PROCESSO
 # A bonded pair vibrating as it flies across the rank boundary: its bond's history through ~280 rebuilds and a migration.
 add_test(NAME dem/bond_rebuilds COMMAND ${VOFDEM_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/test/dem/test_bond_rebuilds.py $<TARGET_FILE:vofdem_app>)
 set_tests_properties(dem/bond_rebuilds PROPERTIES LABELS "quick;dem;bonds" PROCESSORS 2 TIMEOUT 300)
+# G3: a bonded cylinder of 114 spheres compressed by two platens at two rates: linear rise, a peak, E and the peak
+# within 2 % at the two rates, 1 and 2 ranks alike (scripts/bond-compression for the larger ones).
+add_test(NAME dem/bond_compression COMMAND ${VOFDEM_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/test/dem/test_bond_compression.py $<TARGET_FILE:vofdem_app>)
+set_tests_properties(dem/bond_compression PROPERTIES LABELS "quick;dem;bonds" PROCESSORS 2 TIMEOUT 300)
 add_test(NAME dem/periodic_seam COMMAND ${VOFDEM_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/test/dem/test_periodic_seam.py $<TARGET_FILE:vofdem_app>)
 set_tests_properties(dem/periodic_seam PROPERTIES LABELS "quick;dem" PROCESSORS 2 TIMEOUT 300)
 
