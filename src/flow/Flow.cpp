@@ -34,10 +34,10 @@ PetscErrorCode Flow::SetFromOptions(const Grid &grid) {
     PetscCall(opt.Real("-viscosity", "Dynamic viscosity (uniform)", "Pa s", &viscosity_, RealRange::Positive()));
     PetscCall(opt.RealVector("-initial_velocity", "Uniform initial velocity x,y,z", "m/s", velocity0_, 3));
     PetscCall(opt.Real("-cfl", "Convective Courant number of the time step: dt = cfl / max(|u|/hx + |v|/hy + |w|/hz); AB2 advection (upwind at extrema) is neutral at 0.5 and unstable above. With the VOF's mass-consistent momentum: dt = cfl / max over directions of max|u_d|/h_d", "-", &cfl_, RealRange::LeftOpen(0, 0.5)));
-    std::vector<std::string> cm = {"box"};
-    PetscCall(opt.NameList("-courant", "How -flow_cfl measures the velocity: box (the box's largest |u_d| per direction, summed) or cell (per cell the faster of its two faces per direction, summed, the largest cell; never a shorter step)",
-                           {"box", "cell"}, &cm));
-    if (cm.size() != 1) VofdemInputError(comm, "option -flow_courant: give box or cell");
+    std::vector<std::string> cm = {"cell"};
+    PetscCall(opt.NameList("-courant", "How -flow_cfl measures the velocity: cell (per cell the faster of its two faces per direction, summed, the largest cell) or box (the box's largest |u_d| per direction, summed; never a longer step)",
+                           {"cell", "box"}, &cm));
+    if (cm.size() != 1) VofdemInputError(comm, "option -flow_courant: give cell or box");
     courant_ = cm[0] == "cell" ? CourantMeasure::Cell : CourantMeasure::Box;
     std::vector<std::string> lim = {limiterName_};
     PetscCall(opt.NameList("-advection", "Advection scheme: TVD limiter minmod, vanleer, mc, superbee, koren (bounded, second order), central (unbounded), upwind (first order)",
@@ -345,7 +345,7 @@ PetscErrorCode Flow::StableTimeStep(PetscReal *dt, std::string *basis, bool ownA
   // -flow_cfl keeps the margin.
   PetscCall(ConvectiveRate(ownAdvection, &rate));  // FlowCourant.cpp
   *dt    = rate > 0 ? cfl_ / rate : PETSC_MAX_REAL;
-  *basis = ownAdvection ? "flow convective CFL " + std::to_string((double)cfl_) + (courant_ == CourantMeasure::Cell ? " per cell" : "") : "flow Courant number " + std::to_string((double)cfl_) + " per direction (momentum moved by the VOF sweeps)";
+  *basis = ownAdvection ? "flow convective CFL " + std::to_string((double)cfl_) + (courant_ == CourantMeasure::Box ? " (box measure)" : "") : "flow Courant number " + std::to_string((double)cfl_) + " per direction (momentum moved by the VOF sweeps)";
   const PetscReal g = std::sqrt(gravity_[0] * gravity_[0] + gravity_[1] * gravity_[1] + gravity_[2] * gravity_[2]);
   const PetscReal hmin = std::fmin(h[0], std::fmin(h[1], h[2]));
   if (g > 0 && std::sqrt(cfl_ * hmin / g) < *dt) {
@@ -407,7 +407,7 @@ PetscErrorCode Flow::View(PetscViewer viewer) const {
   PetscFunctionBeginUser;
   PetscCall(PetscViewerASCIIPrintf(viewer, "flow: density %g kg/m^3, viscosity %g Pa s (Re per m/s and m: %g), advection %s (TVD), viscosity %s, CFL %g%s\n",
                                    (double)density_, (double)viscosity_, (double)(density_ / viscosity_), limiterName_.c_str(),
-                                   implicitViscosity_ ? "implicit" : "explicit", (double)cfl_, courant_ == CourantMeasure::Cell ? " per cell" : ""));
+                                   implicitViscosity_ ? "implicit" : "explicit", (double)cfl_, courant_ == CourantMeasure::Box ? " (box measure)" : ""));
   PetscCall(bc_.View(viewer));
   PetscCall(solid_.View(viewer));
   PetscCall(pressure_.View(viewer));

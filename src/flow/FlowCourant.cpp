@@ -1,8 +1,8 @@
 // The flow's convective rate (1/s) for the time step and the monitor (Flow.hpp; docs/modules/flow.md, time step).
 //
-// -flow_courant box: the largest |u_d| of the box per direction, then their sum over d (one number per box; the
+// -flow_courant box (the measure before 2026-12-04): the largest |u_d| of the box per direction, then their sum over d (one number per box; the
 //   extremes of the three components may lie far apart).
-// -flow_courant cell: per cell, the faster of its two d-faces' normal velocities per direction, summed over d, then
+// -flow_courant cell (the default): per cell, the faster of its two d-faces' normal velocities per direction, summed over d, then
 //   the largest cell. This is the local Courant number AB2's advection sees in each cell (OpenFOAM's is the mean of
 //   the two faces, 0.5 sum_f |phi_f| / V), and never larger than the box's.
 // When the momentum is moved elsewhere (the VOF's sweeps, one direction at a time) the sum over d becomes a maximum,

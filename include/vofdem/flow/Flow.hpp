@@ -179,7 +179,7 @@ private:
   PetscReal   density_ = 1000, viscosity_ = 1e-3, cfl_ = 0.4, velocity0_[3] = {0, 0, 0};
   Limiter     limiter_ = Limiter::VanLeer;
   std::string limiterName_ = "vanleer";
-  enum class CourantMeasure { Box, Cell } courant_ = CourantMeasure::Box;  // -flow_courant
+  enum class CourantMeasure { Box, Cell } courant_ = CourantMeasure::Cell;  // -flow_courant
   PetscBool   implicitViscosity_ = PETSC_TRUE;
   PetscBool   userPressureAtol_ = PETSC_FALSE;  // else Project sets a scale-aware absolute tolerance
   std::string profilePath_;
