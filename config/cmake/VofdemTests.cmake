@@ -248,6 +248,8 @@ set_tests_properties(energy/material_files PROPERTIES LABELS "quick;energy" TIME
 # the melting range too; the kernel's deposit and the fluid's gain against the particle's loss to 1e-12, the account to 1e-10; 1 and 2 ranks.
 add_test(NAME energy/particle_heat COMMAND ${VOFDEM_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/test/energy/test_particle_heat.py $<TARGET_FILE:vofdem_app>)
 set_tests_properties(energy/particle_heat PROPERTIES LABELS "quick;energy;coupling" PROCESSORS 2 TIMEOUT 300)
+add_test(NAME energy/particle_transport COMMAND ${VOFDEM_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/test/energy/test_particle_transport.py $<TARGET_FILE:vofdem_app>)
+set_tests_properties(energy/particle_transport PROPERTIES LABELS "quick;energy;coupling" PROCESSORS 2 TIMEOUT 300)
 set(VOFDEM_ENERGY_BOX -physics energy -grid_cells 4,4,4 -dt 1e-3)
 set(VOFDEM_ENERGY_FLOW -options_file_yaml ${CMAKE_CURRENT_SOURCE_DIR}/config/scenes/dam-break.yaml -physics flow,vof,energy -grid_cells 16,8,1 -energy_metal_density 1000 -energy_gas_density 1 -energy_pc boomeramg -max_steps 1)
 vofdem_bad_input(vof_cells_per_rank "option -grid_cells: the VOF module needs at least 4 cells per rank along a split direction, but y has 4 cells on 2 ranks"
@@ -258,6 +260,7 @@ vofdem_bad_input(energy_liquidus_below_solidus "option -energy_metal_liquidus: t
 vofdem_bad_input(energy_pc_type_structured "option -energy_pc_type: jacobi cannot take the hypre structured matrix" ${VOFDEM_ENERGY_BOX} -energy_pc pfmg -energy_pc_type jacobi)
 vofdem_bad_input(energy_conductivity_zero "option -energy_metal_conductivity: the metal .* needs a positive conductivity" ${VOFDEM_ENERGY_BOX} -energy_metal_conductivity 0)
 vofdem_bad_input(energy_substrate_with_flow "option -energy_substrate_velocity: with a flow the melt moves with its own velocity" ${VOFDEM_ENERGY_FLOW} -energy_substrate_velocity 0.01,0)
+vofdem_bad_input(coupling_heat_deposit_unknown "option -coupling_heat_deposit: unknown name 'mass'" -options_file_yaml ${CMAKE_CURRENT_SOURCE_DIR}/config/scenes/sphere-entry.yaml -physics dem,flow,vof,energy -energy_metal_density 1000 -energy_gas_density 1.2 -coupling_heat_deposit mass -max_steps 1)
 vofdem_bad_input(flow_courant_unknown "option -flow_courant" -physics flow -flow_courant face)
 vofdem_bad_input(energy_substrate_cfl "option -energy_substrate_cfl" ${VOFDEM_ENERGY_BOX} -energy_substrate_velocity 0.01,0 -energy_substrate_cfl 1.5)
 vofdem_bad_input(energy_specific_heat_negative "option -energy_gas_specific_heat: the gas .* needs a positive specific heat" ${VOFDEM_ENERGY_BOX} -energy_gas_specific_heat -5)

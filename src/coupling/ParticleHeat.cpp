@@ -43,6 +43,11 @@ PetscErrorCode ParticleHeat::SetFromOptions(MPI_Comm comm) {
     PetscCall(opt.Real("-emissivity", "Emissivity of the particles' surface (default: the material's)", "", &emissivity_, RealRange::Any()));
     if (emissivity_ != -1 && (emissivity_ < 0 || emissivity_ > 1)) VofdemInputError(comm, "option -coupling_heat_emissivity: %g is out of range [0, 1]", (double)emissivity_);
     PetscCall(opt.Bool("-radiation", "Radiation between each particle and the fluid temperature it reads, e sigma (Tbar^4 - T^4) (P11)", &radiation_));
+    std::vector<std::string> deposit = {capacityDeposit_ ? "capacity" : "volume"};
+    PetscCall(opt.NameList("-deposit", "How a particle's heat is shared among the cells of its kernel: capacity (the kernel weight times the cell's heat capacity: the cells change their temperature alike) or volume (the kernel weight alone, K3)",
+                           {"capacity", "volume"}, &deposit));
+    if (deposit.size() != 1) VofdemInputError(comm, "option -coupling_heat_deposit: give capacity or volume");
+    capacityDeposit_ = deposit[0] == "capacity";
     PetscCall(opt.Bool("-gas_response", "Each particle's step relaxes it together with the fluid it reads (the mixture's capacity over the kernel's volume), so that neither passes their common temperature (HeatExchange.hpp); off: against a fixed Tbar", &gasResponse_));
   }
   PetscOptionsEnd();
@@ -74,6 +79,8 @@ PetscErrorCode ParticleHeat::SetUp(Coupling &coupling, Flow &flow, Dem &dem, Ene
   const StaggeredGrid &sg = flow.Staggered();
   PetscCall(DMCreateGlobalVector(sg.Cells(), &T_));
   PetscCall(VecDuplicate(T_, &source_));
+  PetscCall(VecDuplicate(T_, &capacity_));
+  PetscCall(DMCreateGlobalVector(sg.Base().CellDM(), &capacityCells_));
   PetscCall(VecSet(source_, 0));
   PetscCall(DMCreateGlobalVector(sg.Base().CellDM(), &sourceEnergy_));
   PetscCall(VecSet(sourceEnergy_, 0));
@@ -85,6 +92,8 @@ PetscErrorCode ParticleHeat::SetUp(Coupling &coupling, Flow &flow, Dem &dem, Ene
   PetscCall(StartNew(a));
   PetscCall(dem.Particles().RestoreArrays(&a));
   energy.SetParticleHeat(sourceEnergy_, [this](PetscReal *now, PetscReal *brought) { return Held(now, brought); });
+  // The cells' energy counts the fluid's share eps of their volume, moved with d(eps)/dt as alpha is (F7 with eps).
+  PetscCall(energy.SetFluidFraction(flow.FluidFraction(), coupling.FluidFractionChange()));
   PetscFunctionReturn(0);
 }
 
@@ -112,16 +121,18 @@ PetscErrorCode ParticleHeat::Exchange(PetscReal dt) {
   PetscCall(sw.GetArrays(&a));
   PetscCall(StartNew(a));
   const PetscInt n = a.n;
-  H_.resize(n), Tbar_.resize(n), rho_.resize(n), eps_.resize(n), power_.resize(n);
+  H_.resize(n), Tbar_.resize(n), rho_.resize(n), eps_.resize(n), power_.resize(n), Cbar_.resize(n);
   for (PetscInt p = 0; p < n; ++p) H_[p] = coupling_->KernelWidth(2 * a.radius[p]);
   // K1: the fluid at each particle; T and rho eps-weighted, eps plain (as the drag reads it, CouplingStep.cpp).
   PetscCall(VecCopy(energy_->Temperature(), T_));  // the energy's cells, the same layout on the staggered grid's cells
+  PetscCall(energy_->HeatCapacity(capacityCells_));  // and the cells' capacity per cell volume, plain (the deposit's share)
+  PetscCall(VecCopy(capacityCells_, capacity_));
   {
-    const Vec  fields[3]  = {T_, flow_->Density(), flow_->FluidFraction()};
-    const Vec  weights[3] = {flow_->FluidFraction(), flow_->FluidFraction(), nullptr};
-    const bool walls[3]   = {true, true, true};
-    PetscReal *outs[3]    = {Tbar_.data(), rho_.data(), eps_.data()};
-    PetscCall(coupling_->Averager().Average(3, 3, fields, weights, walls, n, a.x, H_.data(), outs, 1));
+    const Vec  fields[4]  = {T_, flow_->Density(), flow_->FluidFraction(), capacity_};
+    const Vec  weights[4] = {flow_->FluidFraction(), flow_->FluidFraction(), nullptr, nullptr};
+    const bool walls[4]   = {true, true, true, true};
+    PetscReal *outs[4]    = {Tbar_.data(), rho_.data(), eps_.data(), Cbar_.data()};
+    PetscCall(coupling_->Averager().Average(3, 4, fields, weights, walls, n, a.x, H_.data(), outs, 1));
   }
   const ThermalMaterial &metal = energy_->Metal(), &gas = energy_->Gas();
   const PetscReal       *h = flow_->Staggered().Base().Spacing();
@@ -139,7 +150,9 @@ PetscErrorCode ParticleHeat::Exchange(PetscReal dt) {
     const PetscReal Re = eps * rho * d * std::sqrt(slip2) / mu, Pr = mu * (cv / rho) / kf;
     const PetscReal Nu = heat::Nusselt(eps, Re, Pr);  // docs/physics.md (F10)
     nuMax = std::max(nuMax, Nu);
-    const PetscReal Cg = gasResponse_ ? cv * std::max(kernelVolume_ * H_[p] * H_[p] * H_[p], Vc) : 0;
+    // The fluid that answers the deposit: the kernel's mean capacity per cell volume (eps and the latent share in it)
+    // over its effective volume; by volume, the mixture's capacity there.
+    const PetscReal Cg = gasResponse_ ? (capacityDeposit_ ? Cbar_[p] : cv) * std::max(kernelVolume_ * H_[p] * H_[p] * H_[p], Vc) : 0;
     // docs/physics.md (P11): the particle's step; (F9): what it loses the fluid gains.
     const heat::StepResult r = heat::Step(material_, a.mass[p], PETSC_PI * d * d, Nu * kf / d, material_.emissivity, Tb, Cg, a.enthalpy[p], a.temperature[p], dt);
     a.enthalpy[p] = r.h, a.temperature[p] = r.T;
@@ -148,7 +161,11 @@ PetscErrorCode ParticleHeat::Exchange(PetscReal dt) {
   }
   // K3: the same kernel, normalised over the cells that take part: the cells' total is the particles' to round-off.
   PetscCall(VecSet(source_, 0));
-  PetscCall(coupling_->Averager().Deposit(3, n, a.x, H_.data(), power_.data(), 1, source_));
+  if (capacityDeposit_) {  // cell J takes Q w_J C_J / sum_K w_K C_K: the kernel's share of Q/Cbar, times C_J
+    for (PetscInt p = 0; p < n; ++p) power_[p] /= Cbar_[p];
+    PetscCall(coupling_->Averager().Deposit(3, n, a.x, H_.data(), power_.data(), 1, source_));
+    PetscCall(VecPointwiseMult(source_, source_, capacity_));
+  } else PetscCall(coupling_->Averager().Deposit(3, n, a.x, H_.data(), power_.data(), 1, source_));
   PetscCall(sw.RestoreArrays(&a));
   PetscCall(VecSum(source_, &sums[1]));
   PetscCall(VecScale(source_, 1 / Vc));  // W/m^3
@@ -197,10 +214,10 @@ PetscErrorCode ParticleHeat::Summarize(ParticleHeatSummary *s) const {
 PetscErrorCode ParticleHeat::View(PetscViewer viewer) const {
   PetscFunctionBeginUser;
   PetscCall(PetscViewerASCIIPrintf(viewer, "particle heat (P11, F9, F10): material %s (cp %g J/(kg K) at %g K, latent heat %g J/kg, solidus %g K, liquidus %g K), emissivity %g, "
-                                           "initial %g K; Nusselt of F10; kernel volume %.4g H^3%s\n",
+                                           "initial %g K; Nusselt of F10; kernel volume %.4g H^3%s; deposit by %s\n",
                                    material_.path.empty() ? material_.name.c_str() : material_.path.c_str(), (double)material_.cp.At(T0_), (double)T0_, (double)material_.latentHeat,
                                    (double)material_.solidus, (double)material_.liquidus, (double)material_.emissivity, (double)T0_, (double)kernelVolume_,
-                                   gasResponse_ ? " (the fluid's response in each step)" : " (fixed fluid temperature over a step)"));
+                                   gasResponse_ ? " (the fluid's response in each step)" : " (fixed fluid temperature over a step)", capacityDeposit_ ? "kernel weight x heat capacity" : "kernel weight (volume)"));
   PetscFunctionReturn(0);
 }
 
@@ -224,7 +241,7 @@ PetscErrorCode ParticleHeat::Load(PetscViewer viewer) {
 PetscErrorCode ParticleHeat::Destroy() {
   PetscFunctionBeginUser;
   if (energy_) energy_->SetParticleHeat(nullptr, nullptr);
-  for (Vec *v : {&T_, &source_, &sourceEnergy_}) PetscCall(VecDestroy(v));
+  for (Vec *v : {&T_, &source_, &sourceEnergy_, &capacity_, &capacityCells_}) PetscCall(VecDestroy(v));
   PetscFunctionReturn(0);
 }
 

@@ -190,6 +190,9 @@ PetscErrorCode Energy::SetUp() {
   PetscCall(PetscLogEventRegister("EnergyMushyDrag", DM_CLASSID, &evMushy_));
   for (Vec *v : {&T_, &E_, &Eold_, &H_, &C_, &Ecur_, &k_, &q_, &alpha_, &r_, &rhs_, &Tstar_, &fl_, &F_, &slope_, &TF_, &Tbase_, &Fbase_, &Xstart_}) PetscCall(DMCreateGlobalVector(dm_, v));
   for (Vec *v : {&TLocal_, &kLocal_, &alphaLocal_}) PetscCall(DMCreateLocalVector(dm_, v));
+  PetscCall(DMCreateGlobalVector(dm_, &epsCells_));
+  PetscCall(DMCreateLocalVector(dm_, &epsLocal_));
+  PetscCall(RefreshFluidFraction());
   PetscCall(PetscObjectSetName((PetscObject)T_, "energy_temperature"));
   PetscCall(PetscObjectSetName((PetscObject)Eold_, "energy_previous_energy"));
   PetscCall(PetscObjectSetName((PetscObject)E_, "energy_energy"));
@@ -285,13 +288,40 @@ PetscErrorCode Energy::SetInitial() {
   if (interfaceAlpha_) PetscCall(VecCopy(interfaceAlpha_(), alpha_));  // the interface's metal
   PetscCall(DMDAVecRestoreArray(dm_, T_, &T));
   PetscCall(DMGlobalToLocal(dm_, alpha_, INSERT_VALUES, alphaLocal_));
+  PetscCall(InitialEnergy());
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode Energy::InitialEnergy() {
+  const PetscReal *h = grid_->Spacing();
+  PetscReal        total;
+
+  PetscFunctionBeginUser;
   PetscCall(Properties());
   PetscCall(VecCopy(Ecur_, E_));
   PetscCall(VecCopy(Ecur_, Eold_));
-  PetscReal total;
   PetscCall(VecSum(E_, &total));
   total *= h[0] * h[1] * h[2];
   W_ = Wold_ = totalOld_ = totalOlder_ = total;
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode Energy::SetFluidFraction(Vec eps, Vec change) {
+  PetscFunctionBeginUser;
+  PetscCheck(steps_ == 0, comm_, PETSC_ERR_ORDER, "energy: the fluid fraction is set before the first step");
+  epsFluid_ = eps, epsChange_ = change;
+  if (dm_) {  // set up already: the initial energy counts the fluid's share (a restart then loads its own)
+    PetscCall(RefreshFluidFraction());
+    PetscCall(InitialEnergy());
+  }
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode Energy::RefreshFluidFraction() {
+  PetscFunctionBeginUser;
+  if (epsFluid_) PetscCall(VecCopy(epsFluid_, epsCells_));  // the flow's cells: the same layout as dm_'s
+  else PetscCall(VecSet(epsCells_, 1));
+  PetscCall(DMGlobalToLocal(dm_, epsCells_, INSERT_VALUES, epsLocal_));
   PetscFunctionReturn(0);
 }
 
@@ -359,7 +389,7 @@ PetscErrorCode Energy::Load(PetscViewer viewer) {
 
 PetscErrorCode Energy::Destroy() {
   PetscFunctionBeginUser;
-  for (Vec *v : {&T_, &E_, &Eold_, &H_, &C_, &Ecur_, &k_, &q_, &alpha_, &r_, &rhs_, &Tstar_, &fl_, &F_, &slope_, &TF_, &Tbase_, &Fbase_, &Xstart_, &TLocal_, &kLocal_, &alphaLocal_, &Tsg_, &Fsg_, &sLocal_, &rhoLocal_, &sGlobal_, &rhoGlobal_, &TsgLocal_, &FsgLocal_, &AsgLocal_, &uLocal_[0], &uLocal_[1], &uLocal_[2], &fluxLocal_[0], &fluxLocal_[1], &fluxLocal_[2]}) PetscCall(VecDestroy(v));
+  for (Vec *v : {&T_, &E_, &Eold_, &H_, &C_, &Ecur_, &k_, &q_, &alpha_, &r_, &rhs_, &Tstar_, &fl_, &F_, &slope_, &TF_, &Tbase_, &Fbase_, &Xstart_, &TLocal_, &kLocal_, &alphaLocal_, &Tsg_, &Fsg_, &sLocal_, &rhoLocal_, &sGlobal_, &rhoGlobal_, &TsgLocal_, &FsgLocal_, &AsgLocal_, &uLocal_[0], &uLocal_[1], &uLocal_[2], &fluxLocal_[0], &fluxLocal_[1], &fluxLocal_[2], &epsCells_, &epsLocal_, &EpsSgLocal_}) PetscCall(VecDestroy(v));
   PetscCall(VecDestroy(&wideGlobal_));
   PetscCall(VecDestroy(&wideT_));
   PetscCall(VecDestroy(&wideF_));

@@ -44,6 +44,13 @@ PetscErrorCode EnergyModule::Configure(ModuleSet &modules, const RunContext &run
       if (logStage_ >= 0) PetscCall(PetscLogStagePop());
       PetscFunctionReturn(0);
     });
+    v.AddRedistributionObserver([this](const std::vector<CellMove> &moves) -> PetscErrorCode {
+      PetscFunctionBeginUser;
+      if (logStage_ >= 0) PetscCall(PetscLogStagePush(logStage_));
+      PetscCall(energy_.FollowRedistribution(moves));
+      if (logStage_ >= 0) PetscCall(PetscLogStagePop());
+      PetscFunctionReturn(0);
+    });
     // The surface forces take the computed temperature: sigma(T) and Marangoni (docs/physics.md F2).
     v.SetTemperature([this]() { return energy_.Temperature(); }, [this]() { return liquid_; });
     flow_ = flow, vof_ = vof;

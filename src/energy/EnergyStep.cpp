@@ -28,8 +28,8 @@ Box Owned(DM dm) {
 }
 }  // namespace
 
-// Per volume of cell: E = eps [alpha rho_m (int cp_m dT + L f) + (1 - alpha) rho_g int cp_g dT] (eps = 1 until
-// particles take their share), f the metal's melt fraction (the state; f = f_l(T) once a step has converged).
+// Per volume of fluid: alpha rho_m (int cp_m dT + L f) + (1 - alpha) rho_g int cp_g dT, f the metal's melt fraction
+// (the state; f = f_l(T) once a step has converged); the cells hold eps times it (Properties).
 PetscReal Energy::CellEnergy(PetscReal a, PetscReal T, PetscReal f) const {
   return a * metal_.density * (metal_.Sensible(T) + metal_.latentHeat * f) + (1 - a) * gas_.density * gas_.Sensible(T);
 }
@@ -52,11 +52,12 @@ PetscReal Energy::LatentSlope(PetscReal T, PetscReal f, PetscReal *TF) const {
 }
 
 PetscErrorCode Energy::Properties() {
-  PetscScalar ***T, ***F, ***E, ***C, ***k, ***al, ***S, ***TF;
+  PetscScalar ***T, ***F, ***E, ***C, ***k, ***al, ***S, ***TF, ***ep;
   const Box     b = Owned(dm_);
 
   PetscFunctionBeginUser;
   PetscCall(PetscLogEventBegin(evProperties_, 0, 0, 0, 0));
+  PetscCall(DMDAVecGetArrayRead(dm_, epsCells_, &ep));
   cacheValid_ = false;  // Residual fills the face conductances of the new state
   PetscCall(DMDAVecGetArrayRead(dm_, T_, &T));
   PetscCall(DMDAVecGetArrayRead(dm_, F_, &F));
@@ -69,14 +70,15 @@ PetscErrorCode Energy::Properties() {
   for (PetscInt z = b.s[2]; z < b.s[2] + b.m[2]; ++z)
     for (PetscInt y = b.s[1]; y < b.s[1] + b.m[1]; ++y)
       for (PetscInt x = b.s[0]; x < b.s[0] + b.m[0]; ++x) {
-        const PetscReal a = al[z][y][x], t = T[z][y][x], f = F[z][y][x];
+        const PetscReal a = al[z][y][x], t = T[z][y][x], f = F[z][y][x], e = ep[z][y][x];
         PetscReal       tf;
-        E[z][y][x]  = CellEnergy(a, t, f);
+        E[z][y][x]  = e * CellEnergy(a, t, f);  // per cell volume: the fluid's share eps
         S[z][y][x]  = a > 0 ? LatentSlope(t, f, &tf) : (tf = t, 0);
         TF[z][y][x] = tf;
-        C[z][y][x]  = CellSensibleCapacity(a, t) + a * metal_.density * metal_.latentHeat * S[z][y][x];
+        C[z][y][x]  = e * (CellSensibleCapacity(a, t) + a * metal_.density * metal_.latentHeat * S[z][y][x]);
         k[z][y][x]  = CellConductivity(a, t);
       }
+  PetscCall(DMDAVecRestoreArrayRead(dm_, epsCells_, &ep));
   PetscCall(DMDAVecRestoreArray(dm_, TF_, &TF));
   PetscCall(DMDAVecRestoreArray(dm_, slope_, &S));
   PetscCall(DMDAVecRestoreArray(dm_, k_, &k));
@@ -120,7 +122,7 @@ PetscErrorCode Energy::Assemble(PetscReal a, PetscReal dt, int slot) {
   const PetscReal *h = grid_->Spacing();
   const PetscInt  *n = grid_->Cells();
   bool             periodic[3];
-  PetscScalar   ***T, ***k, ***al, ***C;
+  PetscScalar   ***T, ***k, ***al, ***C, ***ep;
   const bool       losses = interfaceConvection_ > 0 || (interfaceRadiation_ && metal_.emissivity > 0);
   const PetscReal  ih2[3] = {1 / (h[0] * h[0]), 1 / (h[1] * h[1]), 1 / (h[2] * h[2])};
 
@@ -131,11 +133,12 @@ PetscErrorCode Energy::Assemble(PetscReal a, PetscReal dt, int slot) {
   PetscCall(DMDAVecGetArrayRead(dm_, kLocal_, &k));
   PetscCall(DMDAVecGetArrayRead(dm_, alphaLocal_, &al));
   PetscCall(DMDAVecGetArrayRead(dm_, C_, &C));
+  PetscCall(DMDAVecGetArrayRead(dm_, epsLocal_, &ep));
   // One cell's row: the diagonal first, then its neighbours across the faces that are not the box's.
   const bool cached = cacheValid_;  // Residual at this state left the faces' k/h^2 and the interface densities
   size_t     c      = 0;
   auto row = [&](PetscInt x, PetscInt y, PetscInt z, MatStencil col[7], PetscScalar val[7]) {
-    const PetscReal t = T[z][y][x], kc = k[z][y][x];
+    const PetscReal t = T[z][y][x], kc = k[z][y][x], e = ep[z][y][x];
     const size_t    cell = c++;
     PetscReal       diag = a * C[z][y][x] / dt;
     PetscInt        nc   = 1;
@@ -148,20 +151,20 @@ PetscErrorCode Energy::Assemble(PetscReal a, PetscReal dt, int slot) {
           switch (f.type) {
           case EnergyBoundary::Adiabatic: break;
           case EnergyBoundary::Flux: break;
-          case EnergyBoundary::Temperature: diag += 2 * kc / (h[d] * h[d]); break;
-          case EnergyBoundary::Convective: diag += (f.value + 4 * f.emissivity * kStefanBoltzmann * t * t * t) / h[d]; break;
+          case EnergyBoundary::Temperature: diag += e * 2 * kc / (h[d] * h[d]); break;
+          case EnergyBoundary::Convective: diag += e * (f.value + 4 * f.emissivity * kStefanBoltzmann * t * t * t) / h[d]; break;
           }
           continue;
         }
-        const PetscReal kf = cached ? faceConductance_[6 * cell + 2 * d + side] : FaceConductivity(kc, k[nb[2]][nb[1]][nb[0]]) * ih2[d];
+        const PetscReal kf = cached ? faceConductance_[6 * cell + 2 * d + side] : 0.5 * (e + ep[nb[2]][nb[1]][nb[0]]) * FaceConductivity(kc, k[nb[2]][nb[1]][nb[0]]) * ih2[d];
         diag += kf;
         col[nc] = {nb[2], nb[1], nb[0], 0}, val[nc] = -kf, ++nc;
       }
     if (losses) {
-      const PetscReal ds = cached ? interfaceDensity_[cell] : InterfaceDensity(const_cast<PetscScalar ***>(al), x, y, z, n, h, periodic);
+      const PetscReal ds = cached ? interfaceDensity_[cell] : e * InterfaceDensity(const_cast<PetscScalar ***>(al), x, y, z, n, h, periodic);
       if (ds > 0) {
-        const PetscReal e = interfaceRadiation_ ? metal_.emissivity : 0;
-        diag += ds * (interfaceConvection_ + 4 * e * kStefanBoltzmann * t * t * t);
+        const PetscReal em = interfaceRadiation_ ? metal_.emissivity : 0;
+        diag += ds * (interfaceConvection_ + 4 * em * kStefanBoltzmann * t * t * t);
       }
     }
     col[0] = {z, y, x, 0}, val[0] = diag;
@@ -202,6 +205,7 @@ PetscErrorCode Energy::Assemble(PetscReal a, PetscReal dt, int slot) {
     PetscCall(MatAssemblyEnd(A, MAT_FINAL_ASSEMBLY));
     PetscCall(writer.Finish(A));
   }
+  PetscCall(DMDAVecRestoreArrayRead(dm_, epsLocal_, &ep));
   PetscCall(DMDAVecRestoreArrayRead(dm_, C_, &C));
   PetscCall(DMDAVecRestoreArrayRead(dm_, alphaLocal_, &al));
   PetscCall(DMDAVecRestoreArrayRead(dm_, kLocal_, &k));
@@ -218,7 +222,7 @@ PetscErrorCode Energy::Residual(PetscReal a, PetscReal dt, PetscReal *maxResidua
   const PetscInt  *n = grid_->Cells();
   const PetscReal  V = h[0] * h[1] * h[2];
   bool             periodic[3];
-  PetscScalar   ***T, ***k, ***al, ***E, ***H, ***q, ***r, ***qp = nullptr;  // qp: the particles' heat (F9, SetParticleHeat)
+  PetscScalar   ***T, ***k, ***al, ***E, ***H, ***q, ***r, ***ep, ***qp = nullptr;  // qp: the particles' heat (F9, SetParticleHeat)
   PetscReal        rates[3] = {0, 0, 0}, rmax = 0;  // box faces, losses, residual sum (J)
 
   PetscFunctionBeginUser;
@@ -231,6 +235,7 @@ PetscErrorCode Energy::Residual(PetscReal a, PetscReal dt, PetscReal *maxResidua
   PetscCall(DMDAVecGetArrayRead(dm_, H_, &H));
   PetscCall(DMDAVecGetArrayRead(dm_, q_, &q));
   PetscCall(DMDAVecGetArray(dm_, r_, &r));
+  PetscCall(DMDAVecGetArrayRead(dm_, epsLocal_, &ep));
   if (particleSource_) PetscCall(DMDAVecGetArrayRead(dm_, particleSource_, &qp));
   PetscReal rsum = 0;
   const PetscReal ih2[3] = {1 / (h[0] * h[0]), 1 / (h[1] * h[1]), 1 / (h[2] * h[2])};
@@ -241,7 +246,7 @@ PetscErrorCode Energy::Residual(PetscReal a, PetscReal dt, PetscReal *maxResidua
   for (PetscInt z = b.s[2]; z < b.s[2] + b.m[2]; ++z)
     for (PetscInt y = b.s[1]; y < b.s[1] + b.m[1]; ++y)
       for (PetscInt x = b.s[0]; x < b.s[0] + b.m[0]; ++x, ++c) {
-        const PetscReal t = T[z][y][x], kc = k[z][y][x];
+        const PetscReal t = T[z][y][x], kc = k[z][y][x], e = ep[z][y][x];
         PetscReal       R = q[z][y][x] + (qp ? PetscRealPart(qp[z][y][x]) : 0), boundary = 0;
         PetscReal      *G = &faceConductance_[6 * c];
         for (int d = 0; d < 3; ++d)
@@ -255,20 +260,20 @@ PetscErrorCode Energy::Residual(PetscReal a, PetscReal dt, PetscReal *maxResidua
               else if (f.type == EnergyBoundary::Flux) flux = f.value;
               else if (f.type == EnergyBoundary::Convective)
                 flux = f.value * (f.ambient - t) + f.emissivity * kStefanBoltzmann * (Pow4(f.ambient) - Pow4(t));
-              boundary += flux / h[d];
+              boundary += e * flux / h[d];  // through the fluid's share of the face
               G[2 * d + side] = 0;
               continue;
             }
             const PetscReal tn = T[nb[2]][nb[1]][nb[0]];
-            G[2 * d + side]    = FaceConductivity(kc, k[nb[2]][nb[1]][nb[0]]) * ih2[d];
+            G[2 * d + side]    = 0.5 * (e + ep[nb[2]][nb[1]][nb[0]]) * FaceConductivity(kc, k[nb[2]][nb[1]][nb[0]]) * ih2[d];  // eps_f k_f/h^2
             R += G[2 * d + side] * (tn - t);
           }
         PetscReal loss = 0;
         interfaceDensity_[c] = 0;
         if (losses) {
-          const PetscReal ds = interfaceDensity_[c] = InterfaceDensity(const_cast<PetscScalar ***>(al), x, y, z, n, h, periodic);
-          const PetscReal e  = interfaceRadiation_ ? metal_.emissivity : 0;
-          loss               = ds * (interfaceConvection_ * (t - ambient_) + e * kStefanBoltzmann * (Pow4(t) - Pow4(ambient_)));
+          const PetscReal ds = interfaceDensity_[c] = e * InterfaceDensity(const_cast<PetscScalar ***>(al), x, y, z, n, h, periodic);  // the fluid's share
+          const PetscReal em = interfaceRadiation_ ? metal_.emissivity : 0;
+          loss               = ds * (interfaceConvection_ * (t - ambient_) + em * kStefanBoltzmann * (Pow4(t) - Pow4(ambient_)));
         }
         R += boundary - loss;
         rates[0] += boundary * V, rates[1] += loss * V;
@@ -276,6 +281,7 @@ PetscErrorCode Energy::Residual(PetscReal a, PetscReal dt, PetscReal *maxResidua
         rsum += r[z][y][x] * V;
         rmax = std::max(rmax, (PetscReal)std::fabs(r[z][y][x]));
       }
+  PetscCall(DMDAVecRestoreArrayRead(dm_, epsLocal_, &ep));
   PetscCall(DMDAVecRestoreArray(dm_, r_, &r));
   if (particleSource_) PetscCall(DMDAVecRestoreArrayRead(dm_, particleSource_, &qp));
   PetscCall(DMDAVecRestoreArrayRead(dm_, q_, &q));
@@ -369,6 +375,7 @@ PetscErrorCode Energy::Step(PetscReal time, PetscReal dt) {
   PetscFunctionBeginUser;
   const bool bdf2 = bdf2_ && !Moving() && steps_ > 0 && dtOld_ > 0;  // after the interface's transport: backward Euler
   if (SubstrateMoving()) PetscCall(MoveSubstrate(dt, bdf2));          // EnergySubstrate.cpp
+  PetscCall(RefreshFluidFraction());                                   // eps^{n+1}: the coupling's of this step
   if (bdf2) {
     const PetscReal w = dt / dtOld_;
     a = (1 + 2 * w) / (1 + w), bcoef = 1 + w, c = w * w / (1 + w);
@@ -391,18 +398,20 @@ PetscErrorCode Energy::Step(PetscReal time, PetscReal dt) {
     // J d = -(r + a alpha rho_m L F' (T^k - T_F))/dt: the latent share linearised about T_F (LatentSlope)
     {
       const Box    bx = Owned(dm_);
-      PetscScalar ***rhs, ***r, ***T, ***S, ***TF, ***al;
+      PetscScalar ***rhs, ***r, ***T, ***S, ***TF, ***al, ***ep;
       PetscCall(DMDAVecGetArray(dm_, rhs_, &rhs));
       PetscCall(DMDAVecGetArrayRead(dm_, r_, &r));
       PetscCall(DMDAVecGetArrayRead(dm_, T_, &T));
       PetscCall(DMDAVecGetArrayRead(dm_, slope_, &S));
       PetscCall(DMDAVecGetArrayRead(dm_, TF_, &TF));
       PetscCall(DMDAVecGetArrayRead(dm_, alpha_, &al));
+      PetscCall(DMDAVecGetArrayRead(dm_, epsCells_, &ep));
       const PetscReal rl = metal_.density * metal_.latentHeat;
       for (PetscInt z = bx.s[2]; z < bx.s[2] + bx.m[2]; ++z)
         for (PetscInt y = bx.s[1]; y < bx.s[1] + bx.m[1]; ++y)
           for (PetscInt x = bx.s[0]; x < bx.s[0] + bx.m[0]; ++x)
-            rhs[z][y][x] = -(r[z][y][x] + a * al[z][y][x] * rl * S[z][y][x] * (T[z][y][x] - TF[z][y][x])) / dt;
+            rhs[z][y][x] = -(r[z][y][x] + a * ep[z][y][x] * al[z][y][x] * rl * S[z][y][x] * (T[z][y][x] - TF[z][y][x])) / dt;
+      PetscCall(DMDAVecRestoreArrayRead(dm_, epsCells_, &ep));
       PetscCall(DMDAVecRestoreArrayRead(dm_, alpha_, &al));
       PetscCall(DMDAVecRestoreArrayRead(dm_, TF_, &TF));
       PetscCall(DMDAVecRestoreArrayRead(dm_, slope_, &S));
@@ -458,7 +467,7 @@ PetscErrorCode Energy::Step(PetscReal time, PetscReal dt) {
   PetscCall(VecCopy(E_, Eold_));
   PetscCall(VecCopy(Ecur_, E_));
   dtOld_ = dt, ++steps_;
-  swept_ = false;
+  swept_ = false, sweep_ = 0;
   last_.iterations = it, last_.linearIterations = linear;
   PetscFunctionReturn(0);
 }

@@ -6,6 +6,10 @@
 // gives E'' = alpha'' rho_m h_m + (1 - alpha'') rho_g h_g exactly: T stays uniform whatever the jump of rho cp.
 // X is frozen over the step's sweeps, so that their dilatation terms add up to X div u. T and f then follow from
 // E'' and alpha'' (f = f_l(T)).
+// With particles (SetFluidFraction) E is per cell volume, eps times the fluid's; the gas's flux is (eps_f u - F) and the
+// dilatation X [dt/h (eps_P u_P - eps_M u_M) + (eps^{n+1} - eps^n)/3], as alpha's (vof/VofAdvect.cpp, F1b): a uniform T
+// stays uniform as particles move, and the sweeps' dilatations add up to X times what the projection left of
+// div(eps u) + d(eps)/dt. T after the k-th sweep from E''/eps_k, eps_k = eps^n + k/3 of the change, alpha's level.
 #include "vofdem/energy/Energy.hpp"
 
 #include "vofdem/base/Runtime.hpp"
@@ -59,7 +63,7 @@ PetscReal Energy::CellTemperature(PetscReal E, PetscReal a, PetscReal guess) con
 PetscErrorCode Energy::TransportSweep(int d, PetscReal dt, Vec u, Vec phaseFlux, const std::vector<char> &full) {
   const StaggeredGrid &sg = *sg_;
   const PetscReal      r  = dt / grid_->Spacing()[d];
-  LocalField           T, F, uf, pf, E, X, A;
+  LocalField           T, F, uf, pf, E, X, A, P;
   PetscInt             s[3], n[3];
 
   PetscFunctionBeginUser;
@@ -70,6 +74,7 @@ PetscErrorCode Energy::TransportSweep(int d, PetscReal dt, Vec u, Vec phaseFlux,
     PetscCall(DMCreateLocalVector(sg.Cells(), &TsgLocal_));
     PetscCall(VecDuplicate(TsgLocal_, &FsgLocal_));
     PetscCall(VecDuplicate(TsgLocal_, &AsgLocal_));
+    PetscCall(VecDuplicate(TsgLocal_, &EpsSgLocal_));
     for (int e = 0; e < 3; ++e) {
       PetscCall(DMCreateLocalVector(sg.Face(e), &uLocal_[e]));
       PetscCall(DMCreateLocalVector(sg.Face(e), &fluxLocal_[e]));
@@ -101,12 +106,33 @@ PetscErrorCode Energy::TransportSweep(int d, PetscReal dt, Vec u, Vec phaseFlux,
   PetscCall(DMGlobalToLocal(sg.Face(d), phaseFlux, INSERT_VALUES, fluxLocal_[d]));
   PetscCall(VecCopy(alpha_, Tsg_));  // alpha at the sweep's start, ghosted like T (the face rule below)
   PetscCall(DMGlobalToLocal(sg.Cells(), Tsg_, INSERT_VALUES, AsgLocal_));
+  if (epsFluid_) {  // eps^{n+1}, ghosted like T (the face means); at the step's first sweep
+    if (sweep_ == 0) {
+      PetscCall(VecCopy(epsFluid_, Tsg_));
+      PetscCall(DMGlobalToLocal(sg.Cells(), Tsg_, INSERT_VALUES, EpsSgLocal_));
+    }
+  }
+  const int stage = ++sweep_;
   PetscCall(sg.GetLocal(3, TsgLocal_, &T));
   PetscCall(sg.GetLocal(3, FsgLocal_, &F));
   PetscCall(sg.GetLocal(3, AsgLocal_, &A));
   PetscCall(FillNearestOutside(sg, T));
   PetscCall(FillNearestOutside(sg, F));
   PetscCall(FillNearestOutside(sg, A));
+  const bool         particles = epsFluid_ != nullptr;
+  const PetscScalar *change    = nullptr;  // eps^{n+1} - eps^n of the owned cells (nullptr: eps constant)
+  if (particles) {
+    PetscCall(sg.GetLocal(3, EpsSgLocal_, &P));
+    PetscCall(FillNearestOutside(sg, P));  // zero gradient, as alpha's (a wall's face has no normal velocity)
+    if (epsChange_) PetscCall(VecGetArrayRead(epsChange_, &change));
+  }
+  // eps at face f (between cells f - e_d and f): the mean the flow's projection and alpha's sweep use
+  auto faceEps = [&](const PetscInt f[3]) {
+    if (!particles) return (PetscReal)1;
+    PetscInt m[3] = {f[0], f[1], f[2]};
+    m[d] -= 1;
+    return 0.5 * (P.at(m) + P.at(f));
+  };
   PetscCall(sg.GetLocal(d, uLocal_[d], &uf));
   PetscCall(sg.GetLocal(d, fluxLocal_[d], &pf));
   PetscCall(sg.GetGlobal(3, E_, &E));  // E_ and Xstart_ are global vectors of the same layout
@@ -130,7 +156,7 @@ PetscErrorCode Energy::TransportSweep(int d, PetscReal dt, Vec u, Vec phaseFlux,
     const PetscReal w  = (std::fabs(a1 - a2) < 0.5 && std::fabs(a2 - a3) < 0.5) ? std::max((PetscReal)0, 1 - m / kPureBand) : 0;
     const PetscReal tf = w > 0 ? w * VanLeerFaceValue(T.at(s1), T.at(s2), T.at(s3)) + (1 - w) * T.at(s2) : T.at(s2);
     const PetscReal fup = pos ? F.at(L1) : F.at(R1);
-    const PetscReal gas = vel - fm;  // a face that carries one phase needs that phase's enthalpy alone
+    const PetscReal gas = (particles ? faceEps(f) * vel : vel) - fm;  // a face that carries one phase needs that phase's enthalpy alone
     return r * ((fm != 0 ? fm * rm * (metal_.Sensible(tf) + L * fup) : 0) + (gas != 0 ? gas * rg * gas_.Sensible(tf) : 0));
   };
   // Along d innermost, so that each face's flux is computed once and serves both its cells. What crosses the box's
@@ -150,13 +176,16 @@ PetscErrorCode Energy::TransportSweep(int d, PetscReal dt, Vec u, Vec phaseFlux,
       for (PetscInt q = s[d]; q < s[d] + n[d]; ++q) {
         lo[d] = q, hi[d] = q + 1;
         const PetscReal above = flux(hi);
-        if (uf.at(hi) == 0 && pf.at(hi) == 0 && uf.at(lo) == 0 && pf.at(lo) == 0) {  // no flux, no dilatation: E, alpha unchanged
+        const size_t    cell  = (size_t)((lo[0] - s[0]) + n[0] * ((lo[1] - s[1]) + n[1] * (lo[2] - s[2])));
+        const PetscReal third = change ? PetscRealPart(change[cell]) / 3 : 0;  // this sweep's share of eps's change
+        if (uf.at(hi) == 0 && pf.at(hi) == 0 && uf.at(lo) == 0 && pf.at(lo) == 0 && third == 0) {  // no flux, no dilatation: E, alpha unchanged
           if (open && q + 1 == N) entered -= above * volume;
           below = above;
           continue;
         }
-        touched_[(size_t)((lo[0] - s[0]) + n[0] * ((lo[1] - s[1]) + n[1] * (lo[2] - s[2])))] = 1;
-        E.at(lo) += -(above - below) + r * (uf.at(hi) - uf.at(lo)) * X.at(lo);
+        touched_[cell] = 1;
+        const PetscReal dilatation = particles ? r * (faceEps(hi) * uf.at(hi) - faceEps(lo) * uf.at(lo)) + third : r * (uf.at(hi) - uf.at(lo));
+        E.at(lo) += -(above - below) + dilatation * X.at(lo);
         if (open && q + 1 == N) entered -= above * volume;
         below = above;
       }
@@ -166,30 +195,81 @@ PetscErrorCode Energy::TransportSweep(int d, PetscReal dt, Vec u, Vec phaseFlux,
   PetscCall(sg.RestoreGlobal(3, E_, &E));
   PetscCall(sg.RestoreLocal(d, fluxLocal_[d], &pf));
   PetscCall(sg.RestoreLocal(d, uLocal_[d], &uf));
+  if (particles) {
+    if (change) PetscCall(VecRestoreArrayRead(epsChange_, &change));
+    PetscCall(sg.RestoreLocal(3, EpsSgLocal_, &P));
+  }
   PetscCall(sg.RestoreLocal(3, AsgLocal_, &A));
   PetscCall(sg.RestoreLocal(3, FsgLocal_, &F));
   PetscCall(sg.RestoreLocal(3, TsgLocal_, &T));
-  // The moved interface, and T, f from E'' and alpha''.
+  PetscCall(FollowInterface(1 - stage / 3.0));  // of eps's change, what is still to come after this sweep
+  PetscCall(PetscLogEventEnd(evTransport_, 0, 0, 0, 0));
+  PetscFunctionReturn(0);
+}
+
+// The moved interface, and T, f from E and alpha in the cells touched_ marks; eps is eps^{n+1} less `later` of its change.
+PetscErrorCode Energy::FollowInterface(PetscReal later) {
+  PetscScalar ***Tg, ***Fg, ***Eg, ***al, ***ep = nullptr, ***dp = nullptr;
+  PetscInt       s[3], n[3];
+
+  PetscFunctionBeginUser;
+  sg_->Owned(3, s, n);
   PetscCall(VecCopy(interfaceAlpha_(), alpha_));
   PetscCall(DMGlobalToLocal(dm_, alpha_, INSERT_VALUES, alphaLocal_));
-  {
-    PetscScalar ***Tg, ***Fg, ***Eg, ***al;
-    PetscCall(DMDAVecGetArray(dm_, T_, &Tg));
-    PetscCall(DMDAVecGetArray(dm_, F_, &Fg));
-    PetscCall(DMDAVecGetArrayRead(dm_, E_, &Eg));
-    PetscCall(DMDAVecGetArrayRead(dm_, alpha_, &al));
-    for (PetscInt k = s[2]; k < s[2] + n[2]; ++k)
-      for (PetscInt j = s[1]; j < s[1] + n[1]; ++j)
-        for (PetscInt i = s[0]; i < s[0] + n[0]; ++i) {
-          if (!touched_[(size_t)((i - s[0]) + n[0] * ((j - s[1]) + n[1] * (k - s[2])))]) continue;
-          Tg[k][j][i] = CellTemperature(Eg[k][j][i], al[k][j][i], Tg[k][j][i]);  // alpha as the sweep left it (E'' was moved with it)
-          Fg[k][j][i]       = metal_.MeltFraction(Tg[k][j][i]);
-        }
-    PetscCall(DMDAVecRestoreArrayRead(dm_, alpha_, &al));
-    PetscCall(DMDAVecRestoreArrayRead(dm_, E_, &Eg));
-    PetscCall(DMDAVecRestoreArray(dm_, F_, &Fg));
-    PetscCall(DMDAVecRestoreArray(dm_, T_, &Tg));
+  PetscCall(DMDAVecGetArray(dm_, T_, &Tg));
+  PetscCall(DMDAVecGetArray(dm_, F_, &Fg));
+  PetscCall(DMDAVecGetArrayRead(dm_, E_, &Eg));
+  PetscCall(DMDAVecGetArrayRead(dm_, alpha_, &al));
+  if (epsFluid_) PetscCall(DMDAVecGetArrayRead(dm_, epsFluid_, &ep));
+  if (epsFluid_ && epsChange_) PetscCall(DMDAVecGetArrayRead(dm_, epsChange_, &dp));
+  for (PetscInt k = s[2]; k < s[2] + n[2]; ++k)
+    for (PetscInt j = s[1]; j < s[1] + n[1]; ++j)
+      for (PetscInt i = s[0]; i < s[0] + n[0]; ++i) {
+        if (!touched_[(size_t)((i - s[0]) + n[0] * ((j - s[1]) + n[1] * (k - s[2])))]) continue;
+        const PetscReal e = ep ? ep[k][j][i] - (dp ? dp[k][j][i] * later : 0) : 1;  // eps at alpha's level
+        Tg[k][j][i]       = CellTemperature(Eg[k][j][i] / e, al[k][j][i], Tg[k][j][i]);  // alpha as the interface left it (E was moved with it)
+        Fg[k][j][i]       = metal_.MeltFraction(Tg[k][j][i]);
+      }
+  if (dp) PetscCall(DMDAVecRestoreArrayRead(dm_, epsChange_, &dp));
+  if (ep) PetscCall(DMDAVecRestoreArrayRead(dm_, epsFluid_, &ep));
+  PetscCall(DMDAVecRestoreArrayRead(dm_, alpha_, &al));
+  PetscCall(DMDAVecRestoreArrayRead(dm_, E_, &Eg));
+  PetscCall(DMDAVecRestoreArray(dm_, F_, &Fg));
+  PetscCall(DMDAVecRestoreArray(dm_, T_, &Tg));
+  PetscFunctionReturn(0);
+}
+
+// After the sweeps, the interface's redistribution (vof/VofRedistribute.cpp) moved phase-1 volume dv between
+// neighbours and as much gas back: the cell that takes metal gains dv (rho_m h_m at the giver's T) and loses
+// dv rho_g h_g at its own T. Each move is seen from both cells with opposite signs and the same bits, so the sum is
+// unchanged to round-off; a uniform T stays uniform as alpha does.
+PetscErrorCode Energy::FollowRedistribution(const std::vector<CellMove> &moves) {
+  const StaggeredGrid &sg = *sg_;
+  LocalField           T, F, E;
+  PetscInt             s[3], n[3];
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscLogEventBegin(evTransport_, 0, 0, 0, 0));
+  sg.Owned(3, s, n);
+  PetscCall(VecCopy(T_, Tsg_));
+  PetscCall(VecCopy(F_, Fsg_));
+  PetscCall(DMGlobalToLocal(sg.Cells(), Tsg_, INSERT_VALUES, TsgLocal_));
+  PetscCall(DMGlobalToLocal(sg.Cells(), Fsg_, INSERT_VALUES, FsgLocal_));
+  PetscCall(sg.GetLocal(3, TsgLocal_, &T));
+  PetscCall(sg.GetLocal(3, FsgLocal_, &F));
+  PetscCall(sg.GetGlobal(3, E_, &E));
+  const PetscReal rm = metal_.density, rg = gas_.density, L = metal_.latentHeat;
+  auto metal = [&](const PetscInt q[3]) { return rm * (metal_.Sensible(T.at(q)) + L * F.at(q)); };
+  auto gas   = [&](const PetscInt q[3]) { return rg * gas_.Sensible(T.at(q)); };
+  touched_.assign((size_t)n[0] * n[1] * n[2], 0);
+  for (const CellMove &m : moves) {
+    E.at(m.cell) += m.dv > 0 ? m.dv * (metal(m.other) - gas(m.cell)) : m.dv * (metal(m.cell) - gas(m.other));
+    touched_[(size_t)((m.cell[0] - s[0]) + n[0] * ((m.cell[1] - s[1]) + n[1] * (m.cell[2] - s[2])))] = 1;
   }
+  PetscCall(sg.RestoreGlobal(3, E_, &E));
+  PetscCall(sg.RestoreLocal(3, FsgLocal_, &F));
+  PetscCall(sg.RestoreLocal(3, TsgLocal_, &T));
+  PetscCall(FollowInterface(0));
   PetscCall(PetscLogEventEnd(evTransport_, 0, 0, 0, 0));
   PetscFunctionReturn(0);
 }

@@ -74,6 +74,29 @@ Vec Energy::MeltFraction() {
   return fl_;
 }
 
+PetscErrorCode Energy::HeatCapacity(Vec out) const {
+  PetscScalar ***T, ***al, ***ep = nullptr, ***c;
+  PetscInt       s[3], m[3];
+
+  PetscFunctionBeginUser;
+  PetscCall(DMDAGetCorners(dm_, &s[0], &s[1], &s[2], &m[0], &m[1], &m[2]));
+  PetscCall(DMDAVecGetArrayRead(dm_, T_, &T));
+  PetscCall(DMDAVecGetArrayRead(dm_, alpha_, &al));
+  if (epsFluid_) PetscCall(DMDAVecGetArrayRead(dm_, epsFluid_, &ep));
+  PetscCall(DMDAVecGetArray(dm_, out, &c));
+  for (PetscInt z = s[2]; z < s[2] + m[2]; ++z)
+    for (PetscInt y = s[1]; y < s[1] + m[1]; ++y)
+      for (PetscInt x = s[0]; x < s[0] + m[0]; ++x) {
+        const PetscReal t = T[z][y][x], a = al[z][y][x];
+        c[z][y][x] = (ep ? ep[z][y][x] : 1) * (a * metal_.density * metal_.Capacity(t) + (1 - a) * gas_.density * gas_.cp.At(t));
+      }
+  PetscCall(DMDAVecRestoreArray(dm_, out, &c));
+  if (ep) PetscCall(DMDAVecRestoreArrayRead(dm_, epsFluid_, &ep));
+  PetscCall(DMDAVecRestoreArrayRead(dm_, alpha_, &al));
+  PetscCall(DMDAVecRestoreArrayRead(dm_, T_, &T));
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode Energy::Summarize(EnergySummary *s) {
   const PetscReal *h = grid_->Spacing();
   const PetscReal  V = h[0] * h[1] * h[2];
@@ -90,7 +113,8 @@ PetscErrorCode Energy::Summarize(EnergySummary *s) {
   }
   PetscCall(VecMax(T_, nullptr, &s->peak));
   PetscCall(VecMin(T_, nullptr, &s->minimum));
-  PetscCall(VecSum(MeltFraction(), &s->meltVolume));
+  if (epsFluid_) PetscCall(VecDot(MeltFraction(), epsCells_, &s->meltVolume));  // the metal's share of the fluid's share eps
+  else PetscCall(VecSum(MeltFraction(), &s->meltVolume));
   s->meltVolume *= V;
   PetscCall(PoolExtent(poolIsotherm_, s->pool));
   s->balanceRelative = s->balance / std::max(std::fabs(s->total), (PetscReal)1e-300);

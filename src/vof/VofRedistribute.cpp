@@ -3,7 +3,8 @@
 // the Weymouth-Yue term keeps only the cells that were full at the step's start exactly full. Clipping would
 // lose that liquid; instead each cell's excess (or deficit) is handed to its 26 neighbours in proportion to
 // the room (or the liquid) they have, so sum eps alpha V is unchanged to round-off and the moved volume stays
-// within one cell of where the sweeps put it. Walls: neighbours outside a non-periodic box take nothing.
+// within one cell of where the sweeps put it. Walls: neighbours outside a non-periodic box take nothing. What moved,
+// pair by pair, goes to the redistribution's observers (the energy moves the phases' enthalpy with it).
 #include "vofdem/vof/Vof.hpp"
 
 #include <petscdmda.h>
@@ -44,6 +45,11 @@ PetscErrorCode Vof::Redistribute() {
   PetscCall(DMDAVecGetArray(da_, giveG_, &give));
   PetscCall(DMDAVecGetArray(da_, takeG_, &take));
   PetscReal outside = 0;
+  const bool report = !movedObservers_.empty();
+  moves_.clear();
+  auto move = [&](PetscInt i, PetscInt j, PetscInt k, PetscInt di, PetscInt dj, PetscInt dk, PetscReal dv) {
+    if (report && dv != 0) moves_.push_back({{i, j, k}, {i + di, j + dj, k + dk}, dv});
+  };
   for (PetscInt k = s[2]; k < s[2] + n[2]; ++k)
     for (PetscInt j = s[1]; j < s[1] + n[1]; ++j)
       for (PetscInt i = s[0]; i < s[0] + n[0]; ++i) {
@@ -57,7 +63,7 @@ PetscErrorCode Vof::Redistribute() {
         fill[k][j][i]     = ep * c;
       }
   PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, &outside, 1, MPIU_REAL, MPIU_MAX, grid_->Comm()));
-  if (!(outside > 0)) {  // nothing to do: alpha unchanged (the clip above was the identity)
+  if (!(outside > 0)) {  // nothing to do: alpha unchanged (the clip above was the identity), nothing moved
     PetscCall(DMDAVecRestoreArray(da_, takeG_, &take));
     PetscCall(DMDAVecRestoreArray(da_, giveG_, &give));
     PetscCall(DMDAVecRestoreArray(da_, fillG_, &fill));
@@ -89,6 +95,14 @@ PetscErrorCode Vof::Redistribute() {
               F += PetscRealPart(fillN[k + dk][j + dj][i + di]);
             }
         const PetscReal gx = R > 0 ? std::min((PetscReal)1, x / R) : 0, gy = F > 0 ? std::min((PetscReal)1, y / F) : 0;
+        if (report && (gx > 0 || gy > 0))  // the donor's (taker's) side of its moves, the products pass 3 forms
+          for (PetscInt dk = -1; dk <= 1; ++dk)
+            for (PetscInt dj = -1; dj <= 1; ++dj)
+              for (PetscInt di = -1; di <= 1; ++di) {
+                if ((di == 0 && dj == 0 && dk == 0) || !inside(i + di, j + dj, k + dk)) continue;
+                move(i, j, k, di, dj, dk, -gx * PetscRealPart(roomN[k + dk][j + dj][i + di]));
+                move(i, j, k, di, dj, dk, gy * PetscRealPart(fillN[k + dk][j + dj][i + di]));
+              }
         // The part not placed goes back into the cell.
         const PetscReal ep = PetscRealPart(e[k][j][i]);
         if (ep > 0) a[k][j][i] = PetscRealPart(a[k][j][i]) + (x - gx * R - (y - gy * F)) / ep;
@@ -112,6 +126,8 @@ PetscErrorCode Vof::Redistribute() {
               if ((di == 0 && dj == 0 && dk == 0) || !inside(i + di, j + dj, k + dk)) continue;
               gx += PetscRealPart(giveL[k + dk][j + dj][i + di]);
               gy += PetscRealPart(takeL[k + dk][j + dj][i + di]);
+              move(i, j, k, di, dj, dk, PetscRealPart(giveL[k + dk][j + dj][i + di]) * PetscRealPart(roomN[k][j][i]));
+              move(i, j, k, di, dj, dk, -PetscRealPart(takeL[k + dk][j + dj][i + di]) * PetscRealPart(fillN[k][j][i]));
             }
         const PetscReal ep = PetscRealPart(e[k][j][i]);
         if (ep > 0 && (gx != 0 || gy != 0)) a[k][j][i] = PetscRealPart(a[k][j][i]) + (gx * PetscRealPart(roomN[k][j][i]) - gy * PetscRealPart(fillN[k][j][i])) / ep;
@@ -124,6 +140,7 @@ PetscErrorCode Vof::Redistribute() {
   PetscCall(DMDAVecRestoreArrayRead(da_, roomL_, &roomN));
   PetscCall(DMDAVecRestoreArrayRead(da_, cellScratch_, &e));
   PetscCall(DMDAVecRestoreArray(da_, alpha_, &a));
+  for (const RedistributionObserver &o : movedObservers_) PetscCall(o(moves_));
   PetscFunctionReturn(0);
 }
 

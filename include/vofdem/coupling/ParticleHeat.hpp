@@ -9,6 +9,11 @@
 //     stable for any step);
 //  3. the heat the particle gave, Q/dt (W), shared among the cells by the same kernel (K3), whose weights sum to
 //     one: the fluid's source of F9, which the energy module adds to the step's balance (Energy::SetParticleHeat).
+//     With -coupling_heat_deposit capacity (the default) each cell's kernel weight is multiplied by its heat capacity
+//     (Energy::HeatCapacity), so every cell of the support changes its temperature alike; by volume alone (volume)
+//     a gas cell beside water or melt takes a share out of all proportion to what it can hold: a sphere at 300 K
+//     entering water at 350 K under air at 300 K cooled the air to 283 K.
+//     The fluid's response (-coupling_heat_gas_response) is the mean capacity over the kernel's volume.
 // The particles' enthalpy lives in the swarm (ParticleSwarm.hpp field::enthalpy, field::temperature); their total
 // joins the energy module's account (energy_total_J, energy_accounted_J).
 // Not here yet: the beam's share per particle with shadowing (P11's eta P_beam: one more power per particle in the
@@ -61,11 +66,13 @@ private:
   ThermalMaterial material_;
   PetscReal       emissivity_ = -1;  // < 0: the material's
   PetscBool       radiation_ = PETSC_TRUE, gasResponse_ = PETSC_TRUE;
+  bool            capacityDeposit_ = true;  // -coupling_heat_deposit capacity|volume
   PetscReal       kernelVolume_ = 0;  // V_eff / H^3 of the kernel (0: cell-based, the cell's volume)
 
   // fields and scratch
   Vec                    T_ = nullptr, source_ = nullptr, sourceEnergy_ = nullptr;  // Tbar's field and the deposit (cells), the energy's copy
-  std::vector<PetscReal> H_, Tbar_, rho_, eps_, power_;
+  Vec                    capacity_ = nullptr, capacityCells_ = nullptr;  // the cells' heat capacity (sg's cells; the energy's)
+  std::vector<PetscReal> H_, Tbar_, rho_, eps_, power_, Cbar_;
 
   // state (saved): global sums, equal on every rank
   PetscReal brought_ = 0, exchanged_ = 0, toFluid_ = 0, deposited_ = 0, nusseltMax_ = 0;

@@ -13,12 +13,15 @@
 // are symmetric: CG with Jacobi for short steps, hypre PFMG (structured) or BoomerAMG for long ones (-energy_pc),
 // options prefix energy_.
 // With a flow: transport by the VOF sweeps' phase fluxes (F7 a), the Darcy term and held solid metal (F2, MushyDrag).
-// Not yet: particles (eps < 1, F9).
+// With particles (SetFluidFraction): every cell quantity is per cell volume and counts the fluid's share eps, the
+// conductances eps_f k_f (eps_f the two cells' mean, as the flow's projection), box faces and interface losses
+// through the fluid's share eps of the cell, the sweeps' fluxes eps_f u and the dilatation with d(eps)/dt.
 #pragma once
 
 #include "vofdem/energy/Laser.hpp"
 #include "vofdem/energy/ThermalMaterial.hpp"
 #include "vofdem/grid/AijRowWriter.hpp"
+#include "vofdem/grid/CellMove.hpp"
 #include "vofdem/grid/Grid.hpp"
 #include "vofdem/grid/StaggeredGrid.hpp"
 #include "vofdem/io/Xdmf.hpp"
@@ -71,6 +74,9 @@ public:
   // h_g(T_f), T_f the van Leer face temperature (the donor's where the stencil mixes phases), and the dilatation term with h at the step's start
   // (docs/physics.md F7 a). A uniform T stays uniform; a closed box keeps its energy.
   PetscErrorCode TransportSweep(int d, PetscReal dt, Vec u, Vec phaseFlux, const std::vector<char> &full);
+  // After the sweeps: the interface's redistribution of alpha between neighbours (particles; grid/CellMove.hpp),
+  // with the metal's enthalpy at the giver's T and the gas's at the taker's (EnergyTransport.cpp).
+  PetscErrorCode FollowRedistribution(const std::vector<CellMove> &moves);
   PetscErrorCode Step(PetscReal time, PetscReal dt);  // advances T from time to time + dt
   // With a moving interface: the Darcy term of the mushy zone and the solid metal (docs/physics.md F2) as a rate
   // per face of the staggered grid, c = D_c s_f^2/((1 - s_f)^3 + D_cs)/rho_f (1/s; s = alpha (1 - f_l) the
@@ -96,8 +102,14 @@ public:
   // Heat exchanged with particles (docs/physics.md F9; coupling/ParticleHeat.hpp): a source per cell (W/m^3, a global
   // vector of the cells) that each step's balance adds, and the energy the particles hold (J now, and J they brought:
   // their initial enthalpy and that of particles added since), which the account counts (Summarize). nullptr: none.
+  // The fluid fraction eps of the cells and its change over the step (global vectors of the cells; not owned), from
+  // the coupling that owns the particles (coupling/ParticleHeat.hpp); before the first step. nullptr: eps = 1.
+  PetscErrorCode SetFluidFraction(Vec eps, Vec change);
   void SetParticleHeat(Vec source, std::function<PetscErrorCode(PetscReal *held, PetscReal *brought)> held) { particleSource_ = source, particleHeld_ = std::move(held); }
   Vec            MeltFraction();  // f_l per cell (alpha-weighted: the metal's), for output
+  // Each cell's heat capacity per cell volume at its state now, eps [alpha rho_m dh_m/dT + (1 - alpha) rho_g cp_g]
+  // (J/(m^3 K); the melt law's latent share included), into out (a global vector of the cells).
+  PetscErrorCode HeatCapacity(Vec out) const;
   const Laser   &Beam() const { return laser_; }
   const ThermalMaterial &Metal() const { return metal_; }
   const ThermalMaterial &Gas() const { return gas_; }
@@ -107,6 +119,8 @@ private:
   PetscErrorCode ReadMaterials();
   PetscErrorCode FaceOptions(PetscOptionItems *items);
   PetscErrorCode SetInitial();
+  PetscErrorCode RefreshFluidFraction();            // epsCells_, epsLocal_ from the coupling's eps (1 without)
+  PetscErrorCode InitialEnergy();                   // E^0 = E^{-1} from T, f, alpha and eps; the account's start
   PetscErrorCode Properties();                      // E(T, f), C, F', F^{-1}(f), k at the state; T, k scattered to the local vectors
   PetscErrorCode LaserSource(PetscReal time);       // q_ (W/m^3), absorbed_, beam_
   PetscErrorCode Assemble(PetscReal a, PetscReal dt, int slot);  // the Jacobian at the current iterate into A_[slot]
@@ -120,6 +134,7 @@ private:
   PetscErrorCode Residual(PetscReal a, PetscReal dt, PetscReal *maxResidual);  // r = a E - H - dt R(T)
   PetscErrorCode Update(PetscReal lambda);          // the enthalpy update with a fraction lambda of the correction
   PetscErrorCode CloseBalance(PetscReal a);         // E = (H + dt R)/a exactly from the last Residual; T, f from E
+  PetscErrorCode FollowInterface(PetscReal later);  // alpha from the interface; T, f of the touched_ cells from E/eps
   PetscReal      CellTemperature(PetscReal E, PetscReal alpha, PetscReal guess) const;  // T with E(T, f_l(T)) = E
   XdmfEntry      OutputEntry(PetscInt step, PetscReal time) const;
   PetscErrorCode PoolExtent(PetscReal iso, PetscReal ext[3]);
@@ -189,6 +204,10 @@ private:
   PetscInt               outputEvery_ = 0;
   std::string            outputDir_;
   std::vector<XdmfEntry> outputEntries_;
+
+  Vec       epsFluid_ = nullptr, epsChange_ = nullptr;  // SetFluidFraction (not owned)
+  Vec       epsCells_ = nullptr, epsLocal_ = nullptr, EpsSgLocal_ = nullptr;  // eps (1 without particles), ghosted on dm_ and on sg's cells
+  int       sweep_ = 0;  // TransportSweep: the step's sweeps so far (eps after the k-th is eps^n + k/3 of its change)
 
   Vec                                                   particleSource_ = nullptr;  // SetParticleHeat
   std::function<PetscErrorCode(PetscReal *, PetscReal *)> particleHeld_;

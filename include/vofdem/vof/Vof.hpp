@@ -16,6 +16,7 @@
 // alternates (x,y,z then z,y,x).
 #pragma once
 
+#include "vofdem/grid/CellMove.hpp"
 #include "vofdem/grid/StaggeredGrid.hpp"
 
 #include <functional>
@@ -128,6 +129,13 @@ public:
   // flux per face (m/s), both global on the staggered grid's Face(d); alpha is already moved.
   using SweepObserver = std::function<PetscErrorCode(int d, PetscReal dt, Vec u, Vec phaseFlux)>;
   void AddSweepObserver(SweepObserver observer) { observers_.push_back(std::move(observer)); }
+  // With particles the sweeps' excursions of alpha out of [0, 1] are handed to neighbours after the last sweep
+  // (Redistribute). Each move of phase 1 between an owned cell and one of its 26 neighbours is reported to the rank
+  // that owns either: dv > 0 cell volumes of phase 1 from `other` into `cell` and as much of phase 0 back, dv < 0 the
+  // reverse; the two ranks (or the two cells of one rank) see it with opposite signs and the same bits.
+  using Move = CellMove;
+  using RedistributionObserver = std::function<PetscErrorCode(const std::vector<Move> &moves)>;
+  void AddRedistributionObserver(RedistributionObserver observer) { movedObservers_.push_back(std::move(observer)); }
   // c_i of the step's sweeps (Weymouth and Yue: alpha > 1/2 at the step's start), owned cells, x fastest.
   const std::vector<char> &FullAtStart() const { return fullAtStart_; }
   DM  FractionDM() const { return da_; }
@@ -181,6 +189,8 @@ private:
   Vec                  kappa_ = nullptr, kappaLocal_ = nullptr;  // SurfaceTension
   std::vector<char>    fullAtStart_;  // c_i of the current step, owned cells
   std::vector<SweepObserver> observers_;
+  std::vector<RedistributionObserver> movedObservers_;
+  std::vector<Move>          moves_;  // Redistribute's, for movedObservers_
   std::vector<double>  flux_;         // face fluxes of one sweep
   Vec                  eps_ = nullptr, epsChange_ = nullptr;  // SetFluidFraction (not owned)
   Vec                  epsLocal_ = nullptr, changeLocal_ = nullptr, cellScratch_ = nullptr;  // on da_
