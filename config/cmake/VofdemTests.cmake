@@ -248,6 +248,8 @@ set_tests_properties(energy/material_files PROPERTIES LABELS "quick;energy" TIME
 # the melting range too; the kernel's deposit and the fluid's gain against the particle's loss to 1e-12, the account to 1e-10; 1 and 2 ranks.
 add_test(NAME energy/particle_heat COMMAND ${VOFDEM_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/test/energy/test_particle_heat.py $<TARGET_FILE:vofdem_app>)
 set_tests_properties(energy/particle_heat PROPERTIES LABELS "quick;energy;coupling" PROCESSORS 2 TIMEOUT 300)
+add_test(NAME energy/particle_beam COMMAND ${VOFDEM_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/test/energy/test_particle_beam.py $<TARGET_FILE:vofdem_app>)
+set_tests_properties(energy/particle_beam PROPERTIES LABELS "quick;energy;coupling" PROCESSORS 2 TIMEOUT 300)
 add_test(NAME energy/particle_transport COMMAND ${VOFDEM_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/test/energy/test_particle_transport.py $<TARGET_FILE:vofdem_app>)
 set_tests_properties(energy/particle_transport PROPERTIES LABELS "quick;energy;coupling" PROCESSORS 2 TIMEOUT 300)
 set(VOFDEM_ENERGY_BOX -physics energy -grid_cells 4,4,4 -dt 1e-3)

@@ -42,6 +42,9 @@ PetscErrorCode ParticleHeat::SetFromOptions(MPI_Comm comm) {
     PetscCall(opt.String("-material", "Material file of the particles' h(T) and emissivity (config/materials/NAME.yaml or a path); energy_metal: the energy's -energy_metal with its -energy_metal_* options", &materialName_));
     PetscCall(opt.Real("-emissivity", "Emissivity of the particles' surface (default: the material's)", "", &emissivity_, RealRange::Any()));
     if (emissivity_ != -1 && (emissivity_ < 0 || emissivity_ > 1)) VofdemInputError(comm, "option -coupling_heat_emissivity: %g is out of range [0, 1]", (double)emissivity_);
+    PetscCall(opt.Real("-absorptivity", "Absorptivity of the laser at the particles' surface (default: the material's, else -laser_absorptivity)", "", &absorptivity_, RealRange::Any()));
+    if (absorptivity_ != -1 && (absorptivity_ < 0 || absorptivity_ > 1)) VofdemInputError(comm, "option -coupling_heat_absorptivity: %g is out of range [0, 1]", (double)absorptivity_);
+    PetscCall(opt.Int("-beam_rays", "Rays of the laser per cell edge for the particles' share (0: a ray at most a sixteenth of the smallest particle radius and of the beam radius; at most ~4e6 rays)", &raysPerCell_, 0));
     PetscCall(opt.Bool("-radiation", "Radiation between each particle and the fluid temperature it reads, e sigma (Tbar^4 - T^4) (P11)", &radiation_));
     std::vector<std::string> deposit = {capacityDeposit_ ? "capacity" : "volume"};
     PetscCall(opt.NameList("-deposit", "How a particle's heat is shared among the cells of its kernel: capacity (the kernel weight times the cell's heat capacity: the cells change their temperature alike) or volume (the kernel weight alone, K3)",
@@ -91,6 +94,12 @@ PetscErrorCode ParticleHeat::SetUp(Coupling &coupling, Flow &flow, Dem &dem, Ene
   for (PetscInt p = 0; p < a.n; ++p) a.temperature[p] = 0;
   PetscCall(StartNew(a));
   PetscCall(dem.Particles().RestoreArrays(&a));
+  beamOn_ = energy.Beam().On();
+  if (beamOn_) {  // P11: the particles take their share of the beam before the melt sees it
+    const PetscReal eta = absorptivity_ >= 0 ? absorptivity_ : material_.absorptivity >= 0 ? material_.absorptivity : energy.Beam().Absorptivity();
+    beam_.SetUp(sg.Base(), energy.Beam(), eta, raysPerCell_);
+    energy.SetBeamTaken([this]() { return &taken_; });
+  }
   energy.SetParticleHeat(sourceEnergy_, [this](PetscReal *now, PetscReal *brought) { return Held(now, brought); });
   // The cells' energy counts the fluid's share eps of their volume, moved with d(eps)/dt as alpha is (F7 with eps).
   PetscCall(energy.SetFluidFraction(flow.FluidFraction(), coupling.FluidFractionChange()));
@@ -112,7 +121,7 @@ PetscErrorCode ParticleHeat::StartNew(ParticleArrays &a) {
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode ParticleHeat::Exchange(PetscReal dt) {
+PetscErrorCode ParticleHeat::Exchange(PetscReal time, PetscReal dt) {
   ParticleArrays a;
 
   PetscFunctionBeginUser;
@@ -121,6 +130,11 @@ PetscErrorCode ParticleHeat::Exchange(PetscReal dt) {
   PetscCall(sw.GetArrays(&a));
   PetscCall(StartNew(a));
   const PetscInt n = a.n;
+  beamPower_.assign(n, 0);
+  if (beamOn_) {  // the beam at the step's end, as the energy's deposit takes it (Energy::LaserSource)
+    PetscCall(beam_.Trace(time + dt, n, a.x, a.radius, beamPower_.data(), &taken_));
+    brought_ += beam_.Absorbed() * dt;  // the account's input
+  }
   H_.resize(n), Tbar_.resize(n), rho_.resize(n), eps_.resize(n), power_.resize(n), Cbar_.resize(n);
   for (PetscInt p = 0; p < n; ++p) H_[p] = coupling_->KernelWidth(2 * a.radius[p]);
   // K1: the fluid at each particle; T and rho eps-weighted, eps plain (as the drag reads it, CouplingStep.cpp).
@@ -154,6 +168,10 @@ PetscErrorCode ParticleHeat::Exchange(PetscReal dt) {
     // over its effective volume; by volume, the mixture's capacity there.
     const PetscReal Cg = gasResponse_ ? (capacityDeposit_ ? Cbar_[p] : cv) * std::max(kernelVolume_ * H_[p] * H_[p] * H_[p], Vc) : 0;
     // docs/physics.md (P11): the particle's step; (F9): what it loses the fluid gains.
+    if (beamPower_[p] > 0) {  // the beam's share first (a split step: exact in energy)
+      a.enthalpy[p] += beamPower_[p] * dt / a.mass[p];
+      a.temperature[p] = heat::TemperatureOf(material_, a.enthalpy[p], a.temperature[p]);
+    }
     const heat::StepResult r = heat::Step(material_, a.mass[p], PETSC_PI * d * d, Nu * kf / d, material_.emissivity, Tb, Cg, a.enthalpy[p], a.temperature[p], dt);
     a.enthalpy[p] = r.h, a.temperature[p] = r.T;
     power_[p] = dt > 0 ? -r.heat / dt : 0;
@@ -208,6 +226,7 @@ PetscErrorCode ParticleHeat::Summarize(ParticleHeatSummary *s) const {
   const bool any = range[0] > -PETSC_MAX_REAL;
   s->Tmax = any ? range[0] : 0, s->Tmin = any ? -range[1] : 0;
   s->toFluid = toFluid_, s->deposited = deposited_, s->exchanged = exchanged_, s->nusseltMax = nusseltMax_;
+  s->beamAbsorbed = beamOn_ ? beam_.Absorbed() : 0, s->beamIntercepted = beamOn_ ? beam_.Intercepted() : 0;
   PetscFunctionReturn(0);
 }
 
@@ -218,6 +237,9 @@ PetscErrorCode ParticleHeat::View(PetscViewer viewer) const {
                                    material_.path.empty() ? material_.name.c_str() : material_.path.c_str(), (double)material_.cp.At(T0_), (double)T0_, (double)material_.latentHeat,
                                    (double)material_.solidus, (double)material_.liquidus, (double)material_.emissivity, (double)T0_, (double)kernelVolume_,
                                    gasResponse_ ? " (the fluid's response in each step)" : " (fixed fluid temperature over a step)", capacityDeposit_ ? "kernel weight x heat capacity" : "kernel weight (volume)"));
+  if (beamOn_)
+    PetscCall(PetscViewerASCIIPrintf(viewer, "particle heat: the beam's share first (P11; rays within 3 R_l, %s per cell edge, the highest disc takes each; absorptivity %g)\n",
+                                     raysPerCell_ > 0 ? std::to_string((long long)raysPerCell_).c_str() : "automatic", (double)beam_.Absorptivity()));
   PetscFunctionReturn(0);
 }
 

@@ -34,12 +34,12 @@ PetscErrorCode ParticleHeatModule::SetUp(ModuleSet &modules, const RunContext &)
 
 PetscErrorCode ParticleHeatModule::Run(Stage stage, StepState &step) {
   PetscFunctionBeginUser;
-  if (stage == Stage::Exchange) PetscCall(heat_.Exchange(step.dt));
+  if (stage == Stage::Exchange) PetscCall(heat_.Exchange(step.time, step.dt));
   PetscFunctionReturn(0);
 }
 
 std::string ParticleHeatModule::MonitorColumns() const {
-  return ",particle_enthalpy_J,particle_heat_to_fluid_W,particle_heat_deposited_W,particle_heat_exchanged_J,particle_temperature_max_K,particle_temperature_min_K,particle_nusselt_max";
+  return ",particle_enthalpy_J,particle_heat_to_fluid_W,particle_heat_deposited_W,particle_heat_exchanged_J,particle_temperature_max_K,particle_temperature_min_K,particle_nusselt_max,particle_beam_absorbed_W,particle_beam_intercepted_W";
 }
 
 PetscErrorCode ParticleHeatModule::Monitor(MonitorPart *part) {
@@ -52,8 +52,12 @@ PetscErrorCode ParticleHeatModule::Monitor(MonitorPart *part) {
   std::snprintf(b, sizeof b, "  | particle heat %.8e J  to fluid %.4e W (deposit error %.1e)  T_p %.2f-%.2f K", (double)s.enthalpy, (double)s.toFluid, (double)miss, (double)s.Tmin,
                 (double)s.Tmax);
   part->screen = b;
-  std::snprintf(b, sizeof b, ",%.16e,%.16e,%.16e,%.16e,%.12e,%.12e,%.8e", (double)s.enthalpy, (double)s.toFluid, (double)s.deposited, (double)s.exchanged, (double)s.Tmax, (double)s.Tmin,
-                (double)s.nusseltMax);
+  if (s.beamIntercepted > 0) {
+    std::snprintf(b, sizeof b, "  beam on particles %.4e W (absorbed %.4e W)", (double)s.beamIntercepted, (double)s.beamAbsorbed);
+    part->screen += b;
+  }
+  std::snprintf(b, sizeof b, ",%.16e,%.16e,%.16e,%.16e,%.12e,%.12e,%.8e,%.16e,%.16e", (double)s.enthalpy, (double)s.toFluid, (double)s.deposited, (double)s.exchanged, (double)s.Tmax,
+                (double)s.Tmin, (double)s.nusseltMax, (double)s.beamAbsorbed, (double)s.beamIntercepted);
   part->csv = b;
   PetscFunctionReturn(0);
 }

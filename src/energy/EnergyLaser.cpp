@@ -12,7 +12,8 @@ namespace vofdem {
 // The laser's deposit q (W/m^3) at time t (docs/physics.md F8). first_interface: down each column the metal
 // takes eta of the column's power, shared by the metal volume each cell adds until one cell's worth of
 // metal has been met (a cell full of metal takes it all); the metal of the ranks above comes from a scan
-// over the process column. gradient: eta (P_col / footprint) |grad alpha| in every cell.
+// over the process column. gradient: eta (P_col / footprint) |grad alpha| in every cell. P_col is what is left of the
+// column's power after the particles above the melt took their share (SetBeamTaken; coupling/ParticleBeam.hpp).
 PetscErrorCode Energy::LaserSource(PetscReal t) {
   struct {
     PetscInt s[3], m[3];
@@ -33,6 +34,7 @@ PetscErrorCode Energy::LaserSource(PetscReal t) {
     PetscFunctionReturn(0);
   }
   const PetscInt        n = b.m[0] * b.m[1];
+  const std::vector<PetscReal> *taken = beamTaken_ ? beamTaken_() : nullptr;  // per owned column, or none
   std::vector<PetscReal> slab(n, 0), above(n, 0), total(n, 0), power(n, 0);
   PetscCall(DMDAVecGetArrayRead(dm_, alphaLocal_, &al));
   PetscCall(DMDAVecGetArray(dm_, q_, &q));
@@ -52,6 +54,7 @@ PetscErrorCode Energy::LaserSource(PetscReal t) {
     for (PetscInt x = b.s[0]; x < b.s[0] + b.m[0]; ++x) {
       const PetscInt c = (y - b.s[1]) * b.m[0] + (x - b.s[0]);
       if (columnRank == 0) sums[0] += power[c];
+      if (taken) power[c] -= (*taken)[c];  // what particles above took (SetBeamTaken)
       if (laser_.Deposition() == LaserDeposition::FirstInterface) {
         const PetscReal met = std::min((PetscReal)1, total[c]);  // the metal the beam meets, in cells
         if (!(met > 0)) continue;                                // no metal: the beam leaves through the bottom

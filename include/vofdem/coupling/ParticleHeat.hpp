@@ -16,11 +16,15 @@
 //     The fluid's response (-coupling_heat_gas_response) is the mean capacity over the kernel's volume.
 // The particles' enthalpy lives in the swarm (ParticleSwarm.hpp field::enthalpy, field::temperature); their total
 // joins the energy module's account (energy_total_J, energy_accounted_J).
-// Not here yet: the beam's share per particle with shadowing (P11's eta P_beam: one more power per particle in the
-// step, T_inf = Tbar + P/(A G)), contact conduction, melting into the VOF (P12).
+// With a laser (P11's eta P_beam): before step 2 each particle takes its share of the beam at the step's end time,
+// the highest first (ParticleBeam.hpp), absorbing -coupling_heat_absorptivity of it, added to its enthalpy (the
+// exchange then relaxes it: a split step); the columns lose what the particles took before the melt sees them
+// (Energy::SetBeamTaken), and the account counts what the particles absorbed as input (brought).
+// Not here yet: contact conduction, melting into the VOF (P12).
 #pragma once
 
 #include "vofdem/coupling/Coupling.hpp"
+#include "vofdem/coupling/ParticleBeam.hpp"
 #include "vofdem/energy/Energy.hpp"
 
 #include <vector>
@@ -35,6 +39,7 @@ struct ParticleHeatSummary {
   PetscReal brought   = 0;  // J: the particles' enthalpy at the start plus that of particles added since
   PetscReal Tmax = 0, Tmin = 0;  // K, over all particles (0 without particles)
   PetscReal nusseltMax = 0;      // of the last step
+  PetscReal beamAbsorbed = 0, beamIntercepted = 0;  // W of the laser the particles absorbed, and took from the beam, last step
 };
 
 class ParticleHeat {
@@ -42,7 +47,7 @@ public:
   PetscErrorCode SetFromOptions(MPI_Comm comm);
   // After the coupling's and the energy's set-up: the particles take -coupling_heat_initial_temperature.
   PetscErrorCode SetUp(Coupling &coupling, Flow &flow, Dem &dem, Energy &energy);
-  PetscErrorCode Exchange(PetscReal dt);  // the step of length dt that starts now: particles' enthalpy, the cells' source
+  PetscErrorCode Exchange(PetscReal time, PetscReal dt);  // the step from time to time + dt: particles' enthalpy, the cells' source
   PetscErrorCode Summarize(ParticleHeatSummary *s) const;  // collective
   PetscErrorCode Held(PetscReal *now, PetscReal *brought) const;  // collective: sum m h now, and what particles brought
   PetscErrorCode View(PetscViewer viewer) const;
@@ -65,6 +70,8 @@ private:
   std::string     materialName_ = "energy_metal";  // the energy module's metal (-energy_metal and its options), or a file
   ThermalMaterial material_;
   PetscReal       emissivity_ = -1;  // < 0: the material's
+  PetscReal       absorptivity_ = -1;  // of the laser at the particles' surface (< 0: the material's, else the laser's)
+  PetscInt        raysPerCell_ = 0;  // -coupling_heat_beam_rays (0: automatic)
   PetscBool       radiation_ = PETSC_TRUE, gasResponse_ = PETSC_TRUE;
   bool            capacityDeposit_ = true;  // -coupling_heat_deposit capacity|volume
   PetscReal       kernelVolume_ = 0;  // V_eff / H^3 of the kernel (0: cell-based, the cell's volume)
@@ -72,7 +79,9 @@ private:
   // fields and scratch
   Vec                    T_ = nullptr, source_ = nullptr, sourceEnergy_ = nullptr;  // Tbar's field and the deposit (cells), the energy's copy
   Vec                    capacity_ = nullptr, capacityCells_ = nullptr;  // the cells' heat capacity (sg's cells; the energy's)
-  std::vector<PetscReal> H_, Tbar_, rho_, eps_, power_, Cbar_;
+  std::vector<PetscReal> H_, Tbar_, rho_, eps_, power_, Cbar_, beamPower_, taken_;
+  ParticleBeam           beam_;
+  bool                   beamOn_ = false;
 
   // state (saved): global sums, equal on every rank
   PetscReal brought_ = 0, exchanged_ = 0, toFluid_ = 0, deposited_ = 0, nusseltMax_ = 0;

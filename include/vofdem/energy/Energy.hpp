@@ -106,6 +106,9 @@ public:
   // the coupling that owns the particles (coupling/ParticleHeat.hpp); before the first step. nullptr: eps = 1.
   PetscErrorCode SetFluidFraction(Vec eps, Vec change);
   void SetParticleHeat(Vec source, std::function<PetscErrorCode(PetscReal *held, PetscReal *brought)> held) { particleSource_ = source, particleHeld_ = std::move(held); }
+  // The beam's power per owned column (x fastest over this rank's x-y corners, W) that something above the melt took
+  // before it (particles: coupling/ParticleBeam.hpp); the column's interface absorbs eta of what is left. nullptr: all.
+  void SetBeamTaken(std::function<const std::vector<PetscReal> *()> taken) { beamTaken_ = std::move(taken); }
   Vec            MeltFraction();  // f_l per cell (alpha-weighted: the metal's), for output
   // Each cell's heat capacity per cell volume at its state now, eps [alpha rho_m dh_m/dT + (1 - alpha) rho_g cp_g]
   // (J/(m^3 K); the melt law's latent share included), into out (a global vector of the cells).
@@ -209,6 +212,7 @@ private:
   Vec       epsCells_ = nullptr, epsLocal_ = nullptr, EpsSgLocal_ = nullptr;  // eps (1 without particles), ghosted on dm_ and on sg's cells
   int       sweep_ = 0;  // TransportSweep: the step's sweeps so far (eps after the k-th is eps^n + k/3 of its change)
 
+  std::function<const std::vector<PetscReal> *()>       beamTaken_;  // SetBeamTaken
   Vec                                                   particleSource_ = nullptr;  // SetParticleHeat
   std::function<PetscErrorCode(PetscReal *, PetscReal *)> particleHeld_;
 };

@@ -1,0 +1,99 @@
+// ParticleBeam.hpp: the beam's rays and the particles that take them (docs/physics.md P11, F8).
+#include "vofdem/coupling/ParticleBeam.hpp"
+
+#include <petscdmda.h>
+
+#include <algorithm>
+#include <cfloat>
+#include <cmath>
+
+namespace vofdem {
+
+PetscErrorCode ParticleBeam::Trace(PetscReal t, PetscInt n, const PetscReal *x, const PetscReal *r, PetscReal *power, std::vector<PetscReal> *taken) {
+  const PetscReal *h = grid_->Spacing(), *lo = grid_->Lower();
+  const PetscInt  *N = grid_->Cells();
+  PetscInt         s[3], m[3];
+  PetscMPIInt      rank;
+
+  PetscFunctionBeginUser;
+  PetscCall(DMDAGetCorners(grid_->CellDM(), &s[0], &s[1], &s[2], &m[0], &m[1], &m[2]));
+  PetscCallMPI(MPI_Comm_rank(grid_->Comm(), &rank));
+  taken->assign((size_t)m[0] * m[1], 0);
+  std::fill(power, power + n, 0);
+  intercepted_ = absorbed_ = 0, rays_ = 0;
+  const PetscReal P = laser_->On() ? laser_->Power(t) : 0;
+  PetscReal       rmin = PETSC_MAX_REAL;
+  for (PetscInt p = 0; p < n; ++p) rmin = std::min(rmin, r[p]);
+  PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, &rmin, 1, MPIU_REAL, MPI_MIN, grid_->Comm()));
+  if (P == 0 || rmin == PETSC_MAX_REAL) PetscFunctionReturn(0);  // no beam, or no particle anywhere
+  // The columns within 3 R of the centre, and the rays' sub-grid: ns per cell edge.
+  const PetscReal R = laser_->Radius();
+  PetscReal       cx, cy;
+  laser_->Centre(t, &cx, &cy);
+  PetscInt c0[2], c1[2];
+  const PetscReal centre[2] = {cx, cy};
+  for (int d = 0; d < 2; ++d) {
+    c0[d] = std::max((PetscInt)0, (PetscInt)std::floor((centre[d] - 3 * R - lo[d]) / h[d]));
+    c1[d] = std::min(N[d], (PetscInt)std::ceil((centre[d] + 3 * R - lo[d]) / h[d]));  // exclusive
+    if (c1[d] <= c0[d]) PetscFunctionReturn(0);  // the beam's support misses the box
+  }
+  PetscInt ns = raysPerCell_;
+  if (ns <= 0) ns = (PetscInt)std::ceil(16 * std::max(h[0], h[1]) / std::min(rmin, R));
+  const PetscInt cols = (c1[0] - c0[0]) * (c1[1] - c0[1]);
+  ns = std::max((PetscInt)1, std::min(ns, (PetscInt)std::floor(std::sqrt((PetscReal)(1 << 22) / cols))));  // at most ~4e6 rays
+  const PetscInt  NX = (c1[0] - c0[0]) * ns, NY = (c1[1] - c0[1]) * ns;
+  const PetscReal hs[2] = {h[0] / ns, h[1] / ns}, x0 = lo[0] + c0[0] * h[0], y0 = lo[1] + c0[1] * h[1];
+  rays_ = NX * NY;
+  hit_.assign((size_t)rays_, Hit{-DBL_MAX, (int)rank});
+  owner_.assign((size_t)rays_, -1);
+  cover_.assign((size_t)rays_, 0);
+  // This rank's particles: over each ray the disc reaches, its highest point there (the centre's height at the
+  // disc's rim) and the share of the ray's square inside the disc, c = clamp((r - rho)/w + 1/2, 0, 1) with w the
+  // square's width across the rim (second order in the ray's size: the binary test of the centre was first order).
+  for (PetscInt p = 0; p < n; ++p) {
+    const PetscReal px = x[3 * p], py = x[3 * p + 1], pz = x[3 * p + 2], rp = r[p];
+    const PetscInt  i0 = std::max((PetscInt)0, (PetscInt)std::floor((px - rp - x0) / hs[0] - 0.5)), i1 = std::min(NX, (PetscInt)std::ceil((px + rp - x0) / hs[0] + 0.5));
+    const PetscInt  j0 = std::max((PetscInt)0, (PetscInt)std::floor((py - rp - y0) / hs[1] - 0.5)), j1 = std::min(NY, (PetscInt)std::ceil((py + rp - y0) / hs[1] + 0.5));
+    for (PetscInt j = j0; j < j1; ++j) {
+      const PetscReal dy = y0 + (j + 0.5) * hs[1] - py;
+      for (PetscInt i = i0; i < i1; ++i) {
+        const PetscReal dx = x0 + (i + 0.5) * hs[0] - px, d2 = dx * dx + dy * dy, rho = std::sqrt(d2);
+        const PetscReal w = rho > 0 ? (hs[0] * std::fabs(dx) + hs[1] * std::fabs(dy)) / rho : hs[0];
+        const PetscReal c = std::min((PetscReal)1, std::max((PetscReal)0, (rp - rho) / w + 0.5));
+        if (c <= 0) continue;
+        const double top = pz + std::sqrt(std::max((PetscReal)0, rp * rp - d2));
+        const size_t k   = (size_t)(j * NX + i);
+        if (top > hit_[k].z) hit_[k].z = top, owner_[k] = p, cover_[k] = c;
+      }
+    }
+  }
+  best_.resize(hit_.size());
+  PetscCallMPI(MPI_Allreduce(hit_.data(), best_.data(), (int)rays_, MPI_DOUBLE_INT, MPI_MAXLOC, grid_->Comm()));
+  for (size_t k = 0; k < cover_.size(); ++k)
+    if (best_[k].rank != rank) cover_[k] = 0;  // the winner's share, everywhere
+  PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, cover_.data(), (int)rays_, MPIU_REAL, MPI_SUM, grid_->Comm()));
+  // Each ray's power, separable: P/4 [erf]_x [erf]_y over its square.
+  const PetscReal        sq = std::sqrt((PetscReal)2) / R;
+  std::vector<PetscReal> ex((size_t)NX), ey((size_t)NY);
+  for (PetscInt i = 0; i < NX; ++i) ex[(size_t)i] = ErfDifference(sq * (x0 + i * hs[0] - cx), sq * (x0 + (i + 1) * hs[0] - cx));
+  for (PetscInt j = 0; j < NY; ++j) ey[(size_t)j] = ErfDifference(sq * (y0 + j * hs[1] - cy), sq * (y0 + (j + 1) * hs[1] - cy));
+  PetscReal mine = 0;
+  for (PetscInt j = 0; j < NY; ++j)
+    for (PetscInt i = 0; i < NX; ++i) {
+      const Hit &b = best_[(size_t)(j * NX + i)];
+      if (b.z == -DBL_MAX) continue;  // no particle over this ray
+      const PetscReal pr = cover_[(size_t)(j * NX + i)] * 0.25 * P * ex[(size_t)i] * ey[(size_t)j];  // what the highest disc takes
+      intercepted_ += pr;  // every rank, the same rays in the same order
+      const PetscInt gx = c0[0] + i / ns, gy = c0[1] + j / ns;
+      if (gx >= s[0] && gx < s[0] + m[0] && gy >= s[1] && gy < s[1] + m[1]) (*taken)[(size_t)((gy - s[1]) * m[0] + (gx - s[0]))] += pr;
+      if (b.rank == rank) {
+        const PetscInt p = owner_[(size_t)(j * NX + i)];
+        power[p] += eta_ * pr;
+        mine += eta_ * pr;
+      }
+    }
+  PetscCallMPI(MPI_Allreduce(&mine, &absorbed_, 1, MPIU_REAL, MPI_SUM, grid_->Comm()));
+  PetscFunctionReturn(0);
+}
+
+}  // namespace vofdem
