@@ -250,6 +250,8 @@ add_test(NAME energy/particle_heat COMMAND ${VOFDEM_PYTHON} ${CMAKE_CURRENT_SOUR
 set_tests_properties(energy/particle_heat PROPERTIES LABELS "quick;energy;coupling" PROCESSORS 2 TIMEOUT 300)
 add_test(NAME energy/particle_beam COMMAND ${VOFDEM_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/test/energy/test_particle_beam.py $<TARGET_FILE:vofdem_app>)
 set_tests_properties(energy/particle_beam PROPERTIES LABELS "quick;energy;coupling" PROCESSORS 2 TIMEOUT 300)
+add_test(NAME energy/particle_melt COMMAND ${VOFDEM_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/test/energy/test_particle_melt.py $<TARGET_FILE:vofdem_app>)
+set_tests_properties(energy/particle_melt PROPERTIES LABELS "quick;energy;coupling" PROCESSORS 2 TIMEOUT 300)
 add_test(NAME energy/particle_transport COMMAND ${VOFDEM_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/test/energy/test_particle_transport.py $<TARGET_FILE:vofdem_app>)
 set_tests_properties(energy/particle_transport PROPERTIES LABELS "quick;energy;coupling" PROCESSORS 2 TIMEOUT 300)
 set(VOFDEM_ENERGY_BOX -physics energy -grid_cells 4,4,4 -dt 1e-3)

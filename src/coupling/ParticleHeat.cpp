@@ -45,6 +45,7 @@ PetscErrorCode ParticleHeat::SetFromOptions(MPI_Comm comm) {
     PetscCall(opt.Real("-absorptivity", "Absorptivity of the laser at the particles' surface (default: the material's, else -laser_absorptivity)", "", &absorptivity_, RealRange::Any()));
     if (absorptivity_ != -1 && (absorptivity_ < 0 || absorptivity_ > 1)) VofdemInputError(comm, "option -coupling_heat_absorptivity: %g is out of range [0, 1]", (double)absorptivity_);
     PetscCall(opt.Int("-beam_rays", "Rays of the laser per cell edge for the particles' share (0: a ray at most a sixteenth of the smallest particle radius and of the beam radius; at most ~4e6 rays)", &raysPerCell_, 0));
+    PetscCall(opt.Bool("-melt", "Particles that reach their liquidus join the melt (docs/physics.md P12: their volume, momentum and enthalpy into the cells, out of the swarm)", &melting_));
     PetscCall(opt.Bool("-radiation", "Radiation between each particle and the fluid temperature it reads, e sigma (Tbar^4 - T^4) (P11)", &radiation_));
     std::vector<std::string> deposit = {capacityDeposit_ ? "capacity" : "volume"};
     PetscCall(opt.NameList("-deposit", "How a particle's heat is shared among the cells of its kernel: capacity (the kernel weight times the cell's heat capacity: the cells change their temperature alike) or volume (the kernel weight alone, K3)",
@@ -57,7 +58,7 @@ PetscErrorCode ParticleHeat::SetFromOptions(MPI_Comm comm) {
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode ParticleHeat::SetUp(Coupling &coupling, Flow &flow, Dem &dem, Energy &energy) {
+PetscErrorCode ParticleHeat::SetUp(Coupling &coupling, Flow &flow, Vof &vof, Dem &dem, Energy &energy) {
   PetscFunctionBeginUser;
   coupling_ = &coupling, flow_ = &flow, dem_ = &dem, energy_ = &energy;
   PetscCheck(dem.Particles().HasHeatFields(), comm_, PETSC_ERR_ORDER, "particle heat: the swarm was created without the heat fields (Dem::UseHeatFields before Dem::SetUp)");
@@ -100,9 +101,16 @@ PetscErrorCode ParticleHeat::SetUp(Coupling &coupling, Flow &flow, Dem &dem, Ene
     beam_.SetUp(sg.Base(), energy.Beam(), eta, raysPerCell_);
     energy.SetBeamTaken([this]() { return &taken_; });
   }
+  if (melting_) PetscCall(melt_.SetUp(coupling, flow, vof, dem, energy, material_));
   energy.SetParticleHeat(sourceEnergy_, [this](PetscReal *now, PetscReal *brought) { return Held(now, brought); });
   // The cells' energy counts the fluid's share eps of their volume, moved with d(eps)/dt as alpha is (F7 with eps).
   PetscCall(energy.SetFluidFraction(flow.FluidFraction(), coupling.FluidFractionChange()));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode ParticleHeat::Melt() {
+  PetscFunctionBeginUser;
+  if (melting_) PetscCall(melt_.Melt());
   PetscFunctionReturn(0);
 }
 
@@ -246,23 +254,28 @@ PetscErrorCode ParticleHeat::View(PetscViewer viewer) const {
 // The particles' enthalpy and temperature travel in the swarm (DemSaveLoad.cpp); here the account's sums.
 PetscErrorCode ParticleHeat::Save(PetscViewer viewer) const {
   PetscFunctionBeginUser;
-  const PetscReal state[5] = {brought_, exchanged_, toFluid_, deposited_, nusseltMax_};
-  const char     *names[5] = {"particle_heat_brought", "particle_heat_exchanged", "particle_heat_to_fluid", "particle_heat_deposited", "particle_heat_nusselt_max"};
-  for (int k = 0; k < 5; ++k) PetscCall(PetscViewerHDF5WriteAttribute(viewer, "/", names[k], PETSC_REAL, &state[k]));
+  const MeltSummary &m = melt_.Summary();
+  const PetscReal state[8] = {brought_, exchanged_, toFluid_, deposited_, nusseltMax_, (PetscReal)m.melted, m.mass, m.spin};
+  const char     *names[8] = {"particle_heat_brought", "particle_heat_exchanged", "particle_heat_to_fluid", "particle_heat_deposited", "particle_heat_nusselt_max", "particle_melted", "particle_melted_mass", "particle_melt_spin"};
+  for (int k = 0; k < 8; ++k) PetscCall(PetscViewerHDF5WriteAttribute(viewer, "/", names[k], PETSC_REAL, &state[k]));
   PetscFunctionReturn(0);
 }
 
 PetscErrorCode ParticleHeat::Load(PetscViewer viewer) {
   PetscFunctionBeginUser;
-  PetscReal  *state[5] = {&brought_, &exchanged_, &toFluid_, &deposited_, &nusseltMax_};
-  const char *names[5] = {"particle_heat_brought", "particle_heat_exchanged", "particle_heat_to_fluid", "particle_heat_deposited", "particle_heat_nusselt_max"};
-  for (int k = 0; k < 5; ++k) PetscCall(PetscViewerHDF5ReadAttribute(viewer, "/", names[k], PETSC_REAL, nullptr, state[k]));
+  MeltSummary &m = melt_.State();
+  PetscReal    melted = 0;
+  PetscReal   *state[8] = {&brought_, &exchanged_, &toFluid_, &deposited_, &nusseltMax_, &melted, &m.mass, &m.spin};
+  const char  *names[8] = {"particle_heat_brought", "particle_heat_exchanged", "particle_heat_to_fluid", "particle_heat_deposited", "particle_heat_nusselt_max", "particle_melted", "particle_melted_mass", "particle_melt_spin"};
+  for (int k = 0; k < 8; ++k) PetscCall(PetscViewerHDF5ReadAttribute(viewer, "/", names[k], PETSC_REAL, nullptr, state[k]));
+  m.melted = (PetscInt64)melted;
   PetscFunctionReturn(0);
 }
 
 PetscErrorCode ParticleHeat::Destroy() {
   PetscFunctionBeginUser;
   if (energy_) energy_->SetParticleHeat(nullptr, nullptr);
+  PetscCall(melt_.Destroy());
   for (Vec *v : {&T_, &source_, &sourceEnergy_, &capacity_, &capacityCells_}) PetscCall(VecDestroy(v));
   PetscFunctionReturn(0);
 }

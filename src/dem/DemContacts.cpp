@@ -23,6 +23,23 @@ inline void Cross(const PetscReal a[3], const PetscReal b[3], PetscReal c[3]) {
 
 }  // namespace
 
+PetscErrorCode Dem::RemoveParticles(const std::vector<PetscInt> &local) {
+  ParticleArrays a;
+  PetscReal      mine[2] = {0, 0}, all[2];
+
+  PetscFunctionBeginUser;
+  PetscCall(swarm_.GetArrays(&a));
+  for (PetscInt p : local) removeIds_.push_back(a.id[p]), mine[0] += 1, mine[1] += a.mass[p];
+  PetscCall(swarm_.RestoreArrays(&a));
+  PetscCallMPI(MPI_Allreduce(mine, all, 2, MPIU_REAL, MPIU_SUM, comm_));
+  if (all[0] == 0) PetscFunctionReturn(0);
+  sources_.CountRemoved((PetscInt64)all[0], all[1]);
+  PetscCall(PetscLogEventBegin(evRebuild_, 0, 0, 0, 0));
+  PetscCall(Rebuild());
+  PetscCall(PetscLogEventEnd(evRebuild_, 0, 0, 0, 0));
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode Dem::Rebuild() {
   ParticleArrays          a;
   std::vector<PetscInt64> localIds;
@@ -61,6 +78,20 @@ PetscErrorCode Dem::Rebuild() {
       halo_.Images().Wrap(a.n, a.x);
       PetscCall(swarm_.RestoreArrays(&a));
     }
+  }
+  // 1c. Particles a coupling took (RemoveParticles, which counted them), with their springs.
+  if (!removeIds_.empty()) {
+    std::sort(removeIds_.begin(), removeIds_.end());
+    auto gone = [&](PetscInt64 id) { return std::binary_search(removeIds_.begin(), removeIds_.end(), id); };
+    PetscCall(swarm_.GetArrays(&a));
+    std::vector<PetscInt> remove;
+    for (PetscInt p = a.n - 1; p >= 0; --p)
+      if (gone(a.id[p])) remove.push_back(p);
+    PetscCall(swarm_.RestoreArrays(&a));
+    for (PetscInt p : remove) PetscCall(DMSwarmRemovePointAtIndex(swarm_.Dm(), p));
+    PetscCall(swarm_.FieldsMoved());
+    for (auto it = springs_.begin(); it != springs_.end();) it = gone(it->first.lo) || (!it->first.IsWall() && gone(it->first.hi)) ? springs_.erase(it) : std::next(it);
+    removeIds_.clear();
   }
   PetscBool repartitioned;
   PetscCall(Balance(&repartitioned));  // -dem_balance: new ownership ranges when the counts are uneven

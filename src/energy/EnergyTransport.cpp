@@ -60,6 +60,24 @@ PetscReal Energy::CellTemperature(PetscReal E, PetscReal a, PetscReal guess) con
   return T;
 }
 
+PetscErrorCode Energy::CreateTransportScratch() {
+  const StaggeredGrid &sg = *sg_;
+
+  PetscFunctionBeginUser;
+  if (Tsg_) PetscFunctionReturn(0);
+  PetscCall(DMCreateGlobalVector(sg.Cells(), &Tsg_));
+  PetscCall(VecDuplicate(Tsg_, &Fsg_));
+  PetscCall(DMCreateLocalVector(sg.Cells(), &TsgLocal_));
+  PetscCall(VecDuplicate(TsgLocal_, &FsgLocal_));
+  PetscCall(VecDuplicate(TsgLocal_, &AsgLocal_));
+  PetscCall(VecDuplicate(TsgLocal_, &EpsSgLocal_));
+  for (int e = 0; e < 3; ++e) {
+    PetscCall(DMCreateLocalVector(sg.Face(e), &uLocal_[e]));
+    PetscCall(DMCreateLocalVector(sg.Face(e), &fluxLocal_[e]));
+  }
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode Energy::TransportSweep(int d, PetscReal dt, Vec u, Vec phaseFlux, const std::vector<char> &full) {
   const StaggeredGrid &sg = *sg_;
   const PetscReal      r  = dt / grid_->Spacing()[d];
@@ -68,18 +86,7 @@ PetscErrorCode Energy::TransportSweep(int d, PetscReal dt, Vec u, Vec phaseFlux,
 
   PetscFunctionBeginUser;
   PetscCall(PetscLogEventBegin(evTransport_, 0, 0, 0, 0));
-  if (!Tsg_) {
-    PetscCall(DMCreateGlobalVector(sg.Cells(), &Tsg_));
-    PetscCall(VecDuplicate(Tsg_, &Fsg_));
-    PetscCall(DMCreateLocalVector(sg.Cells(), &TsgLocal_));
-    PetscCall(VecDuplicate(TsgLocal_, &FsgLocal_));
-    PetscCall(VecDuplicate(TsgLocal_, &AsgLocal_));
-    PetscCall(VecDuplicate(TsgLocal_, &EpsSgLocal_));
-    for (int e = 0; e < 3; ++e) {
-      PetscCall(DMCreateLocalVector(sg.Face(e), &uLocal_[e]));
-      PetscCall(DMCreateLocalVector(sg.Face(e), &fluxLocal_[e]));
-    }
-  }
+  PetscCall(CreateTransportScratch());
   sg.Owned(3, s, n);
   if (!swept_) {  // the step's first sweep: X from the state at its start
     PetscScalar ***Tn, ***Fn, ***Xn;
@@ -250,6 +257,7 @@ PetscErrorCode Energy::FollowRedistribution(const std::vector<CellMove> &moves) 
 
   PetscFunctionBeginUser;
   PetscCall(PetscLogEventBegin(evTransport_, 0, 0, 0, 0));
+  PetscCall(CreateTransportScratch());  // a melt before the first sweeps
   sg.Owned(3, s, n);
   PetscCall(VecCopy(T_, Tsg_));
   PetscCall(VecCopy(F_, Fsg_));
@@ -271,6 +279,47 @@ PetscErrorCode Energy::FollowRedistribution(const std::vector<CellMove> &moves) 
   PetscCall(sg.RestoreLocal(3, TsgLocal_, &T));
   PetscCall(FollowInterface(0));
   PetscCall(PetscLogEventEnd(evTransport_, 0, 0, 0, 0));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode Energy::AddEnthalpy(Vec dE, Vec gas) {
+  PetscScalar ***E, ***d, ***g = nullptr, ***T;
+  PetscInt       s[3], n[3];
+  PetscReal      pool[2] = {0, 0};  // the moved gas's enthalpy (J) and the gaining cells' volume (m^3)
+
+  PetscFunctionBeginUser;
+  const PetscReal *h = grid_->Spacing();
+  const PetscReal  V = h[0] * h[1] * h[2];
+  sg_->Owned(3, s, n);
+  touched_.assign((size_t)n[0] * n[1] * n[2], 0);
+  PetscCall(DMDAVecGetArray(dm_, E_, &E));
+  PetscCall(DMDAVecGetArrayRead(dm_, dE, &d));
+  PetscCall(DMDAVecGetArrayRead(dm_, T_, &T));
+  if (gas) PetscCall(DMDAVecGetArrayRead(dm_, gas, &g));
+  auto loop = [&](auto &&f) {
+    for (PetscInt k = s[2]; k < s[2] + n[2]; ++k)
+      for (PetscInt j = s[1]; j < s[1] + n[1]; ++j)
+        for (PetscInt i = s[0]; i < s[0] + n[0]; ++i) f(i, j, k, (size_t)((i - s[0]) + n[0] * ((j - s[1]) + n[1] * (k - s[2]))));
+  };
+  if (g) {
+    loop([&](PetscInt i, PetscInt j, PetscInt k, size_t) {
+      const PetscReal v = g[k][j][i];
+      if (v < 0) pool[0] += -v * gas_.density * gas_.Sensible(T[k][j][i]);
+      else pool[1] += v;
+    });
+    PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, pool, 2, MPIU_REAL, MPI_SUM, comm_));
+  }
+  loop([&](PetscInt i, PetscInt j, PetscInt k, size_t c) {
+    PetscReal add = d[k][j][i];
+    if (g && g[k][j][i] < 0) add -= -g[k][j][i] * gas_.density * gas_.Sensible(T[k][j][i]);
+    else if (g && g[k][j][i] > 0 && pool[1] > 0) add += pool[0] * g[k][j][i] / pool[1];
+    if (add != 0 || (g && g[k][j][i] != 0)) E[k][j][i] += add / V, touched_[c] = 1;
+  });
+  if (g) PetscCall(DMDAVecRestoreArrayRead(dm_, gas, &g));
+  PetscCall(DMDAVecRestoreArrayRead(dm_, T_, &T));
+  PetscCall(DMDAVecRestoreArrayRead(dm_, dE, &d));
+  PetscCall(DMDAVecRestoreArray(dm_, E_, &E));
+  PetscCall(FollowInterface(0));  // alpha with the new metal, eps as the coupling left it
   PetscFunctionReturn(0);
 }
 

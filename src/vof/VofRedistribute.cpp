@@ -14,7 +14,46 @@
 
 namespace vofdem {
 
-PetscErrorCode Vof::Redistribute() {
+PetscErrorCode Vof::AddPhaseVolume(Vec volume, Vec before, Vec after) {
+  PetscScalar ***a, ***v, ***b, ***e;
+  PetscInt       s[3], n[3];
+
+  PetscFunctionBeginUser;
+  const PetscReal *h = grid_->Spacing();
+  const PetscReal  V = h[0] * h[1] * h[2];
+  Vec vs, bs, es;  // the flow's cell vectors in da_'s layout (the same ownership, one dof)
+  for (Vec *x : {&vs, &bs, &es}) PetscCall(DMCreateGlobalVector(da_, x));
+  PetscCall(VecCopy(volume, vs));
+  PetscCall(VecCopy(before, bs));
+  PetscCall(VecCopy(after, es));
+  PetscCall(DMDAGetCorners(da_, &s[0], &s[1], &s[2], &n[0], &n[1], &n[2]));
+  PetscCall(DMDAVecGetArray(da_, alpha_, &a));
+  PetscCall(DMDAVecGetArrayRead(da_, vs, &v));
+  PetscCall(DMDAVecGetArrayRead(da_, bs, &b));
+  PetscCall(DMDAVecGetArrayRead(da_, es, &e));
+  for (PetscInt k = s[2]; k < s[2] + n[2]; ++k)
+    for (PetscInt j = s[1]; j < s[1] + n[1]; ++j)
+      for (PetscInt i = s[0]; i < s[0] + n[0]; ++i) {
+        const PetscReal add = PetscRealPart(v[k][j][i]), eb = PetscRealPart(b[k][j][i]), ea = PetscRealPart(e[k][j][i]);
+        if (add != 0 || eb != ea) a[k][j][i] = (PetscRealPart(a[k][j][i]) * eb + add / V) / ea;
+      }
+  PetscCall(DMDAVecRestoreArrayRead(da_, es, &e));
+  PetscCall(DMDAVecRestoreArrayRead(da_, bs, &b));
+  PetscCall(DMDAVecRestoreArrayRead(da_, vs, &v));
+  PetscCall(DMDAVecRestoreArray(da_, alpha_, &a));
+  for (Vec *x : {&vs, &bs, &es}) PetscCall(VecDestroy(x));
+  PetscCall(FillGhosts());
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode Vof::BoundAt(Vec after) {
+  PetscFunctionBeginUser;
+  PetscCall(Redistribute(after));
+  PetscCall(FillGhosts());
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode Vof::Redistribute(Vec epsAt) {
   PetscInt        s[3], n[3];
   PetscScalar  ***a, ***e, ***room, ***fill, ***giveL, ***takeL;
   const PetscInt *N = grid_->Cells();
@@ -36,7 +75,8 @@ PetscErrorCode Vof::Redistribute() {
   };
   // Pass 1: clip, and each cell's room (eps (1 - alpha), for excess) and liquid (eps alpha, for deficits), in
   // cell volumes; the excess or deficit eps (alpha - clip) is kept in give (positive) or take (positive).
-  PetscCall(VecCopy(eps_, cellScratch_));
+  if (!cellScratch_) PetscCall(FluidFractionGhosts());  // its scratch (before the first sweeps: a melt at the first step)
+  PetscCall(VecCopy(epsAt ? epsAt : eps_, cellScratch_));
   PetscCall(DMDAVecGetArray(da_, alpha_, &a));
   PetscCall(DMDAVecGetArrayRead(da_, cellScratch_, &e));
   PetscCall(DMDAVecGetArray(da_, roomG_, &room));

@@ -136,6 +136,7 @@ def main():
             for ranks in rank_counts:
                 out = os.path.join(tmp, "%s-%d" % (name, ranks))
                 extra = (["-grid_ranks", "2,1,1"] if ranks == 2 else []) + (["-dem_output_every", "75"] if name == "sensible" else [])
+                extra += ["-coupling_heat_melt", "0"] if name == "melting" else []  # a particle through its melting range (P12 would take it at the liquidus)
                 run_vofdem(exe, ranks, arguments(out, t_gas, t0, d, t_end, every) + extra)
                 r = rows(out)
                 runs[ranks] = r

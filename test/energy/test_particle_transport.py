@@ -1,7 +1,8 @@
 #!/usr/bin/python3
 """The energy with moving particles (docs/physics.md F7 with eps, F9; docs/modules/energy.md): V6's glass sphere
 (d 2.7 mm, cells 0.8 d) falls 20 mm through air into water, -physics dem,flow,vof,energy, with water and air given
-their own rho, cp and k (the metal of the energy is the water: liquid throughout, nothing held). The cells' energy
+their own rho, cp and k (the metal of the energy is the water: liquid throughout, nothing held; the sphere takes the
+water's h(T) and does not melt, -coupling_heat_melt 0). The cells' energy
 counts the fluid's share eps of each cell, the sweeps move it with eps_f u and d(eps)/dt, and the interface's
 redistribution of alpha (particles push it out of [0, 1]) moves the phases' enthalpy with it.
   (a) all at 350 K: T stays uniform through the entry to 1e-9 K (cells counting their whole volume left 0.17 K, and
@@ -25,7 +26,7 @@ SCENE = (["-options_file_yaml", os.path.join(ROOT, "config", "scenes", "sphere-e
          ("-physics dem,flow,vof,energy -energy_metal_density 1000 -energy_gas_density 1.2 -energy_metal_specific_heat 4180 "
           "-energy_gas_specific_heat 1005 -energy_metal_conductivity 0.6 -energy_gas_conductivity 0.026 -energy_metal_latent_heat 0 "
           "-energy_metal_solidus 250 -energy_metal_liquidus 260 -energy_reference_temperature 300 -energy_interface_radiation 0 "
-          "-energy_tolerance 1e-10 -coupling_heat_material energy_metal -final_time 0.12 -monitor_every 4 -monitor_timing 0 "
+          "-energy_tolerance 1e-10 -coupling_heat_material energy_metal -coupling_heat_melt 0 -final_time 0.12 -monitor_every 4 -monitor_timing 0 "
           "-flow_output_every 0 -dem_output_every 0").split())
 CASES = {"uniform": "-energy_initial_temperature 350 -coupling_heat_initial_temperature 350".split(),
          "hot_water": "-energy_initial_temperature 300 -energy_substrate_top 0.11 -energy_substrate_temperature 350 -coupling_heat_initial_temperature 300".split()}

@@ -20,11 +20,13 @@
 // the highest first (ParticleBeam.hpp), absorbing -coupling_heat_absorptivity of it, added to its enthalpy (the
 // exchange then relaxes it: a split step); the columns lose what the particles took before the melt sees them
 // (Energy::SetBeamTaken), and the account counts what the particles absorbed as input (brought).
-// Not here yet: contact conduction, melting into the VOF (P12).
+// Particles at their liquidus join the melt before the next step (ParticleMelt.hpp, P12). Not here yet: contact
+// conduction.
 #pragma once
 
 #include "vofdem/coupling/Coupling.hpp"
 #include "vofdem/coupling/ParticleBeam.hpp"
+#include "vofdem/coupling/ParticleMelt.hpp"
 #include "vofdem/energy/Energy.hpp"
 
 #include <vector>
@@ -46,7 +48,9 @@ class ParticleHeat {
 public:
   PetscErrorCode SetFromOptions(MPI_Comm comm);
   // After the coupling's and the energy's set-up: the particles take -coupling_heat_initial_temperature.
-  PetscErrorCode SetUp(Coupling &coupling, Flow &flow, Dem &dem, Energy &energy);
+  PetscErrorCode SetUp(Coupling &coupling, Flow &flow, Vof &vof, Dem &dem, Energy &energy);
+  PetscErrorCode Melt();  // before a step: the particles at their liquidus into the melt (ParticleMelt.hpp; -coupling_heat_melt)
+  const MeltSummary &MeltBooks() const { return melt_.Summary(); }
   PetscErrorCode Exchange(PetscReal time, PetscReal dt);  // the step from time to time + dt: particles' enthalpy, the cells' source
   PetscErrorCode Summarize(ParticleHeatSummary *s) const;  // collective
   PetscErrorCode Held(PetscReal *now, PetscReal *brought) const;  // collective: sum m h now, and what particles brought
@@ -81,6 +85,8 @@ private:
   Vec                    capacity_ = nullptr, capacityCells_ = nullptr;  // the cells' heat capacity (sg's cells; the energy's)
   std::vector<PetscReal> H_, Tbar_, rho_, eps_, power_, Cbar_, beamPower_, taken_;
   ParticleBeam           beam_;
+  ParticleMelt           melt_;
+  PetscBool              melting_ = PETSC_TRUE;  // -coupling_heat_melt
   bool                   beamOn_ = false;
 
   // state (saved): global sums, equal on every rank

@@ -12,6 +12,7 @@ namespace vofdem {
 class CouplingModule;
 class DemModule;
 class FlowModule;
+class VofModule;
 class ModuleRegistry;
 
 class ParticleHeatModule final : public Module {
@@ -26,7 +27,7 @@ public:
   bool           CheapSetUp() const override { return false; }  // after the particles and the coupling
   PetscErrorCode SetUp(ModuleSet &modules, const RunContext &run) override;
 
-  std::vector<Stage> Stages() const override { return {Stage::Exchange}; }
+  std::vector<Stage> Stages() const override { return {Stage::Prepare, Stage::Exchange}; }  // melting (P12), then the exchange
   PetscErrorCode     Run(Stage stage, StepState &step) override;
 
   std::string    MonitorColumns() const override;
@@ -42,6 +43,7 @@ private:
   CouplingModule *coupling_ = nullptr;
   DemModule      *dem_      = nullptr;
   FlowModule     *flow_     = nullptr;
+  VofModule      *vof_      = nullptr;
 };
 
 void RegisterParticleHeatModule(ModuleRegistry &registry);  // from the coupling's RegisterModule_coupling

@@ -74,6 +74,11 @@ public:
     return linear_ ? "dem (-dem_dt_factor x contact time/10 of the linear spring, P4)" : "dem (-dem_dt_factor x Rayleigh time, P9)";
   }
   PetscErrorCode Step(PetscReal dt);  // one velocity-Verlet step
+  // Collective: removes the local particles of indices `local` (this rank's; their springs go with them) through a
+  // rebuild, and counts them in the deletion books (ParticleSources: deleted, mass deleted). For a coupling that
+  // takes particles into the fluid (melting, docs/physics.md P12). Their neighbours keep the forces of the last
+  // evaluation for the next half kick.
+  PetscErrorCode RemoveParticles(const std::vector<PetscInt> &local);
   PetscErrorCode Summarize(DemSummary *s) const;
   // Collective: writes every particle, in id order, as the CSV that -dem_particles_file reads
   // (x,y,z,vx,vy,vz,wx,wy,wz), through rank 0; the file is written to a temporary name and renamed.
@@ -212,6 +217,7 @@ private:
   WallList      walls_;
   WallSet       wallSet_;  // -dem_walls: planes, cylinders, STL meshes (Walls.hpp)
   ContactHistory springs_;  // only during Rebuild()
+  std::vector<PetscInt64> removeIds_;  // RemoveParticles: the ids the next Rebuild() removes
   Bonds          bonds_;    // -dem_cohesion bond (P13): histories per list pair, carried like the springs
   PetscReal      bondStepLimit_ = PETSC_MAX_REAL;  // s (SetUp)
   LocalStats    stats_;

@@ -82,6 +82,8 @@ public:
   PetscErrorCode Apply(PetscReal t, ParticleSwarm &swarm, ContactHistory *springs, PetscReal rMax);
   PetscErrorCode View(PetscViewer viewer) const;
 
+  // Particles removed by something else (Dem::RemoveParticles: melted into the fluid), all ranks' count and mass.
+  void       CountRemoved(PetscInt64 count, PetscReal mass) { deleted_ += count, massDeleted_ += mass; }
   PetscInt64 Inserted() const { return inserted_; }
   PetscInt64 Deleted() const { return deleted_; }
   PetscReal  MassInserted() const { return massInserted_; }

@@ -77,6 +77,11 @@ public:
   // After the sweeps: the interface's redistribution of alpha between neighbours (particles; grid/CellMove.hpp),
   // with the metal's enthalpy at the giver's T and the gas's at the taker's (EnergyTransport.cpp).
   PetscErrorCode FollowRedistribution(const std::vector<CellMove> &moves);
+  // Enthalpy put into the cells between steps (melted particles, docs/physics.md P12): dE J per cell (a global vector
+  // of the cells), and gas moved between cells, gas m^3 per cell (summing to zero; nullptr: none), with the enthalpy
+  // the losing cells' gas has at their T shared among the gaining cells by volume; T and f then follow from E, the
+  // interface's alpha and the coupling's eps as they are now. Collective.
+  PetscErrorCode AddEnthalpy(Vec dE, Vec gas);
   PetscErrorCode Step(PetscReal time, PetscReal dt);  // advances T from time to time + dt
   // With a moving interface: the Darcy term of the mushy zone and the solid metal (docs/physics.md F2) as a rate
   // per face of the staggered grid, c = D_c s_f^2/((1 - s_f)^3 + D_cs)/rho_f (1/s; s = alpha (1 - f_l) the
@@ -137,6 +142,7 @@ private:
   PetscErrorCode Residual(PetscReal a, PetscReal dt, PetscReal *maxResidual);  // r = a E - H - dt R(T)
   PetscErrorCode Update(PetscReal lambda);          // the enthalpy update with a fraction lambda of the correction
   PetscErrorCode CloseBalance(PetscReal a);         // E = (H + dt R)/a exactly from the last Residual; T, f from E
+  PetscErrorCode CreateTransportScratch();          // the sweeps' ghosted work vectors, once
   PetscErrorCode FollowInterface(PetscReal later);  // alpha from the interface; T, f of the touched_ cells from E/eps
   PetscReal      CellTemperature(PetscReal E, PetscReal alpha, PetscReal guess) const;  // T with E(T, f_l(T)) = E
   XdmfEntry      OutputEntry(PetscInt step, PetscReal time) const;

@@ -136,6 +136,13 @@ public:
   using Move = CellMove;
   using RedistributionObserver = std::function<PetscErrorCode(const std::vector<Move> &moves)>;
   void AddRedistributionObserver(RedistributionObserver observer) { movedObservers_.push_back(std::move(observer)); }
+  // Phase-1 volume put into the cells (melted particles, docs/physics.md P12; before the step's sweeps): with the fluid
+  // fraction going from before to after (global cell vectors of the flow's cells; alpha is relative to `before`),
+  // alpha = (before alpha V + volume)/(after V) (volume: m^3 per cell, a global cell vector). Then, if `bound`, the
+  // excess over 1 goes to neighbours with room at `after` (Redistribute, reported to the redistribution's observers);
+  // sum eps alpha V grows by the volume's sum to round-off. Collective.
+  PetscErrorCode AddPhaseVolume(Vec volume, Vec before, Vec after);
+  PetscErrorCode BoundAt(Vec after);  // the excursions of alpha out of [0, 1] to neighbours at eps = after (Redistribute)
   // c_i of the step's sweeps (Weymouth and Yue: alpha > 1/2 at the step's start), owned cells, x fastest.
   const std::vector<char> &FullAtStart() const { return fullAtStart_; }
   DM  FractionDM() const { return da_; }
@@ -178,7 +185,7 @@ private:
   // The PLIC plane of the cell at q in cell units (n, c); false for a full, empty or flat-field cell.
   PetscErrorCode MomentumSweep(int d, PetscReal dt);  // VofMomentum.cpp
   PetscErrorCode MomentumSweepStart(bool later);       // VofMomentum.cpp: the densities of the sweep's start (later: not the step's first sweep)
-  PetscErrorCode Redistribute();  // alpha back into [0, 1] with particles, conservatively (VofRedistribute.cpp)
+  PetscErrorCode Redistribute(Vec eps = nullptr);  // alpha back into [0, 1] with particles, conservatively, at eps (default eps_) (VofRedistribute.cpp)
   bool Reconstruct(const LocalField &a, const PetscInt q[3], double n[3], double *c, bool *fromHeights) const;
 
   const Grid          *grid_ = nullptr;
