@@ -29,6 +29,8 @@ vofdem_checkpoint_test(bitwise_coupled_heat_1 1 bitwise coupledheat 1)
 vofdem_checkpoint_test(bitwise_coupled_heat_2 2 bitwise coupledheat 2)
 vofdem_checkpoint_test(bitwise_coupled_beam_1 1 bitwise coupledbeam 1)
 vofdem_checkpoint_test(bitwise_coupled_beam_2 2 bitwise coupledbeam 2)
+vofdem_checkpoint_test(bitwise_coupled_melt_1 1 bitwise coupledmelt 1)
+vofdem_checkpoint_test(bitwise_coupled_melt_2 2 bitwise coupledmelt 2)
 # Bonds (P13) breaking across a restart: bitwise on 1 and 2 ranks, the intact ones carried 2 -> 1 and 1 -> 2 ranks.
 vofdem_checkpoint_test(bitwise_dembonds_1 1 bitwise dembonds 1)
 vofdem_checkpoint_test(bitwise_dembonds_2 2 bitwise dembonds 2)

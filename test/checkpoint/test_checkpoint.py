@@ -26,7 +26,7 @@
                         zero exit on every rank (test/badinput/expect-error); -restart latest skips a
                         corrupted newest file and says so; a write that fails mid-run is one error line
                         and leaves the previous checkpoint valid.
-SCENE is dem, demclumps, demperiodic, dembalance, demfunnel, demdelete, flow, vof, vofimplicit, vofopen, energy, energyvof, coupled, coupledvof, coupledwet, coupledheat or coupledbeam (the coupled ones: bitwise only). Usage: test_checkpoint.py VOFDEM CASE ARGS..."""
+SCENE is dem, demclumps, demperiodic, dembalance, demfunnel, demdelete, flow, vof, vofimplicit, vofopen, energy, energyvof, coupled, coupledvof, coupledwet, coupledheat, coupledbeam or coupledmelt (the coupled ones: bitwise only). Usage: test_checkpoint.py VOFDEM CASE ARGS..."""
 import glob
 import os
 import re
@@ -142,6 +142,13 @@ SCENES = {
                     "-energy_initial_temperature 1400 -energy_interface_radiation 0 -energy_pc boomeramg -coupling_heat_initial_temperature 573 "
                     "-dem_radius 5e-4 -dem_density 8380 -dem_fill_count 20 -dem_fill_lower 0,0,0.0075 -dem_fill_upper 0.008,0.008,0.012 -dem_fill_jitter 0.5 "
                     "-coupling_fluid_drag implicit -dt 1e-3 -dt_force -seed 7 -laser_power 50 -laser_radius 1e-3 -laser_path 0.004,0.004".split(), 10, (10, 10)),
+    # Two IN718 spheres at 1580 K (in their melting range) in argon at 1700 K above a pool, one under a 100 W beam of 60 um:
+    # it reaches the liquidus and melts into the cells at step 12, after the restart from step 10 (P12), the other stays.
+    "coupledmelt": ("-physics dem,flow,vof,energy -grid_upper 1.232e-3,1.232e-3,1.232e-3 -grid_cells 16,16,16 -gravity 0,0,-9.81 -flow_density 1.6 "
+                    "-flow_viscosity 2.1e-5 -vof_density 8380 -vof_viscosity 6e-3 -vof_boxes 0,0,0,1.232e-3,1.232e-3,1.54e-4 -energy_interface_radiation 0 "
+                    "-energy_initial_temperature 1700 -dem_radius 4.8e-5 -dem_density 8380 -dem_youngs_modulus 1e6 -coupling_heat_initial_temperature 1580 "
+                    "-laser_power 100 -laser_radius 6e-5 -laser_path 0.000616,0.000616 -dt 1e-6".split() +
+                    ["-dem_particles_file", os.path.join(ROOT, "test", "checkpoint", "data", "melt-particles.csv")], 10, (10, 10)),
     # V6's sphere entering water at its own size (8 x 8 x 67 cells, the seed's fixed step of 1 ms): the pressure
     # preconditioner is reused while the sphere falls through the air (steps 1-72) and rebuilt as it nears the
     # surface. The reuse case restarts at a step inside the reuse and at the last reused step before a rebuild.
@@ -197,7 +204,7 @@ def case_bitwise(exe, scene, ranks):
                     "coupled": ("particles.xmf", "-dem_output_every"), "coupledvof": ("particles.xmf", "-dem_output_every"),
                     "coupledwet": ("particles.xmf", "-dem_output_every"), "energy": ("energy.xmf", "-energy_output_every"),
                     "energyvof": ("energy.xmf", "-energy_output_every"), "coupledheat": ("particles.xmf", "-dem_output_every"),
-                    "coupledbeam": ("particles.xmf", "-dem_output_every")}[scene]
+                    "coupledbeam": ("particles.xmf", "-dem_output_every"), "coupledmelt": ("particles.xmf", "-dem_output_every")}[scene]
     out = [every, str(n // 4)]  # the ParaView series, whose index a restart must continue
     run(exe, ranks, scene, ["-max_steps", str(2 * n), "-checkpoint_dir", a, "-output_dir", a + "-out"] + out)
     run(exe, ranks, scene, ["-max_steps", str(n), "-checkpoint_dir", b, "-output_dir", b + "-out"] + out)
