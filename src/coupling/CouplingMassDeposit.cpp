@@ -1,6 +1,6 @@
 // The fluid's reaction to explicit particle forces, shared by face mass (Coupling.hpp, docs/physics.md F5).
 #include "vofdem/coupling/Coupling.hpp"
-#include "vofdem/grid/FaceProperties.hpp"
+#include "vofdem/grid/FaceMass.hpp"
 
 namespace vofdem {
 
@@ -12,34 +12,13 @@ namespace vofdem {
 // (eps rho)_f as the flow's predictor forms it (Project): the fluid's momentum changes by
 // sum_J M_J V_c a_J dt = G Mbar dt = -F dt exactly. massWork_[d] is scratch, created on the first call.
 PetscErrorCode Coupling::DepositByFaceMass(int d, const ParticleArrays &a, LocalField &eps, LocalField &rho, PetscReal *source) {
-  LocalField M;
-  PetscInt   s[3], n[3];
-
   PetscFunctionBeginUser;
   const StaggeredGrid &sg   = flow_->Staggered();
   const PetscReal     *h    = sg.Base().Spacing();
   const PetscReal      Vc   = h[0] * h[1] * h[2];
   if (!massWork_[d]) PetscCall(VecDuplicate(faceEps_[d], &massWork_[d]));
   Vec work = massWork_[d];
-  PetscCall(sg.GetGlobal(d, work, &M));
-  sg.Owned(d, s, n);
-  const PetscInt last = sg.Points(d, d) - 1;
-  for (PetscInt k = s[2]; k < s[2] + n[2]; ++k)
-    for (PetscInt j = s[1]; j < s[1] + n[1]; ++j)
-      for (PetscInt i = s[0]; i < s[0] + n[0]; ++i) {
-        PetscInt q[3] = {i, j, k}, cm[3] = {i, j, k};
-        if (!sg.Base().Periodic(d) && (q[d] == 0 || q[d] == last)) {
-          M.at(q) = 0;  // wall faces take no deposit
-          continue;
-        }
-        cm[d] -= 1;
-        const PetscReal eL = PetscRealPart(eps.at(cm)), eR = PetscRealPart(eps.at(q));
-        const PetscReal bL = eL / PetscRealPart(rho.at(cm)), bR = eR / PetscRealPart(rho.at(q));
-        const FaceProperties face = FaceAverage(eL, eR, bL, bR);
-        const PetscReal eF = face.eps, bF = face.beta;
-        M.at(q) = eF * eF / bF;
-      }
-  PetscCall(sg.RestoreGlobal(d, work, &M));
+  PetscCall(FaceMass(sg, d, eps, rho, 1, work));  // wall faces take no deposit
   capMass_.resize(a.n);
   capShare_.resize(a.n);
   PetscCall(avg_.Average(d, work, nullptr, a.n, a.x, H_.data(), capMass_.data(), 1, false));

@@ -2,7 +2,7 @@
 #include "vofdem/coupling/ParticleMelt.hpp"
 
 #include "vofdem/base/Runtime.hpp"
-#include "vofdem/grid/FaceProperties.hpp"
+#include "vofdem/grid/FaceMass.hpp"
 
 #include <petscdmda.h>
 
@@ -36,32 +36,14 @@ PetscErrorCode ParticleMelt::FaceMasses(Vec M[3]) {
   const StaggeredGrid &sg = flow_->Staggered();
   const PetscReal     *h  = sg.Base().Spacing();
   const PetscReal      V  = h[0] * h[1] * h[2];
-  LocalField           eps, rho, F;
-  PetscInt             s[3], n[3];
+  LocalField           eps, rho;
 
   PetscFunctionBeginUser;
   PetscCall(DMGlobalToLocal(sg.Cells(), flow_->FluidFraction(), INSERT_VALUES, cellLocal_));
   PetscCall(DMGlobalToLocal(sg.Cells(), flow_->Density(), INSERT_VALUES, rhoLocal_));
   PetscCall(sg.GetLocal(3, cellLocal_, &eps));
   PetscCall(sg.GetLocal(3, rhoLocal_, &rho));
-  for (int d = 0; d < 3; ++d) {
-    PetscCall(sg.GetGlobal(d, M[d], &F));
-    sg.Owned(d, s, n);
-    const PetscInt last = sg.Points(d, d) - 1;
-    for (PetscInt k = s[2]; k < s[2] + n[2]; ++k)
-      for (PetscInt j = s[1]; j < s[1] + n[1]; ++j)
-        for (PetscInt i = s[0]; i < s[0] + n[0]; ++i) {
-          PetscInt q[3] = {i, j, k}, cm[3] = {i, j, k};
-          if (!sg.Base().Periodic(d) && (q[d] == 0 || q[d] == last)) {
-            F.at(q) = 0;
-            continue;
-          }
-          cm[d] -= 1;
-          const PetscReal eL = PetscRealPart(eps.at(cm)), eR = PetscRealPart(eps.at(q));
-          F.at(q) = FaceAverage(eL, eR, eL / PetscRealPart(rho.at(cm)), eR / PetscRealPart(rho.at(q))).EpsRho() * V;
-        }
-    PetscCall(sg.RestoreGlobal(d, M[d], &F));
-  }
+  for (int d = 0; d < 3; ++d) PetscCall(FaceMass(sg, d, eps, rho, V, M[d]));
   PetscCall(sg.RestoreLocal(3, rhoLocal_, &rho));
   PetscCall(sg.RestoreLocal(3, cellLocal_, &eps));
   PetscFunctionReturn(0);
