@@ -97,6 +97,15 @@ PetscErrorCode Energy::HeatCapacity(Vec out) const {
   PetscFunctionReturn(0);
 }
 
+PetscErrorCode Energy::SolidFraction(Vec out) const {
+  PetscFunctionBeginUser;
+  PetscCall(VecCopy(F_, out));
+  PetscCall(VecScale(out, -1));
+  PetscCall(VecShift(out, 1));                    // 1 - f
+  PetscCall(VecPointwiseMult(out, out, alpha_));  // alpha (1 - f)
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode Energy::Summarize(EnergySummary *s) {
   const PetscReal *h = grid_->Spacing();
   const PetscReal  V = h[0] * h[1] * h[2];

@@ -82,8 +82,8 @@ private:
 
   // fields and scratch
   Vec                    T_ = nullptr, source_ = nullptr, sourceEnergy_ = nullptr;  // Tbar's field and the deposit (cells), the energy's copy
-  Vec                    capacity_ = nullptr, capacityCells_ = nullptr;  // the cells' heat capacity (sg's cells; the energy's)
-  std::vector<PetscReal> H_, Tbar_, rho_, eps_, power_, Cbar_, beamPower_, taken_;
+  Vec                    capacity_ = nullptr, capacityCells_ = nullptr, solid_ = nullptr;  // the cells' heat capacity (sg's cells; the energy's), solid metal
+  std::vector<PetscReal> H_, Tbar_, rho_, eps_, power_, Cbar_, solidBar_, beamPower_, taken_;
   ParticleBeam           beam_;
   ParticleMelt           melt_;
   PetscBool              melting_ = PETSC_TRUE;  // -coupling_heat_melt

@@ -118,6 +118,7 @@ public:
   // Each cell's heat capacity per cell volume at its state now, eps [alpha rho_m dh_m/dT + (1 - alpha) rho_g cp_g]
   // (J/(m^3 K); the melt law's latent share included), into out (a global vector of the cells).
   PetscErrorCode HeatCapacity(Vec out) const;
+  PetscErrorCode SolidFraction(Vec out) const;  // each cell's solid metal, alpha (1 - f), of its fluid (a global vector of the cells)
   const Laser   &Beam() const { return laser_; }
   const ThermalMaterial &Metal() const { return metal_; }
   const ThermalMaterial &Gas() const { return gas_; }
