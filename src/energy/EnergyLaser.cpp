@@ -11,7 +11,7 @@ namespace vofdem {
 
 // The laser's deposit q (W/m^3) at time t (docs/physics.md F8). first_interface: down each column the metal
 // takes eta of the column's power, shared by the metal volume each cell adds until one cell's worth of
-// metal has been met (a cell full of metal takes it all); the metal of the ranks above comes from a scan
+// metal has been met (a cell full of metal takes it all; a column with less than a cell's worth takes that share); the metal of the ranks above comes from a scan
 // over the process column. gradient: eta (P_col / footprint) |grad alpha| in every cell. P_col is what is left of the
 // column's power after the particles above the melt took their share (SetBeamTaken; coupling/ParticleBeam.hpp).
 PetscErrorCode Energy::LaserSource(PetscReal t) {
@@ -56,13 +56,15 @@ PetscErrorCode Energy::LaserSource(PetscReal t) {
       if (columnRank == 0) sums[0] += power[c];
       if (taken) power[c] -= (*taken)[c];  // what particles above took (SetBeamTaken)
       if (laser_.Deposition() == LaserDeposition::FirstInterface) {
-        const PetscReal met = std::min((PetscReal)1, total[c]);  // the metal the beam meets, in cells
-        if (!(met > 0)) continue;                                // no metal: the beam leaves through the bottom
+        // The metal the beam meets, in cells: a column with less than one cell's worth takes that share of the
+        // column's power and the rest leaves through the bottom (the rim of a drop smaller than a cell, alpha 3e-5,
+        // took a whole column's power and reached 2e5 K when the share was not scaled so).
+        if (!(total[c] > 0)) continue;  // no metal: the beam leaves through the bottom
         PetscReal cum = above[c];
         for (PetscInt z = b.s[2] + b.m[2] - 1; z >= b.s[2]; --z) {
           const PetscReal a = al[z][y][x], w = std::max((PetscReal)0, std::min(a, 1 - cum));
           cum += a;
-          if (w > 0) q[z][y][x] = eta * power[c] * (w / met) / V, sums[1] += q[z][y][x] * V;
+          if (w > 0) q[z][y][x] = eta * power[c] * w / V, sums[1] += q[z][y][x] * V;
         }
       } else {
         for (PetscInt z = b.s[2]; z < b.s[2] + b.m[2]; ++z) {
