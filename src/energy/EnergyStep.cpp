@@ -220,6 +220,7 @@ PetscErrorCode Energy::Residual(PetscReal a, PetscReal dt, PetscReal *maxResidua
   };
   // The box faces of a cell with coordinate p along d (bits 2d, 2d + 1: its low and high face).
   auto boxFaces = [&](int d, PetscInt p) { return periodic[d] ? 0u : (p == 0 ? 1u << 2 * d : 0u) | (p == n[d] - 1 ? 2u << 2 * d : 0u); };
+  const unsigned xLow = boxFaces(0, 0) & 1u, xHigh = boxFaces(0, n[0] - 1) & 2u;
   // The cells, with the conductances computed (fill) or read: one loop in two instances.
   auto sweep = [&](auto fillTag) {
     constexpr bool fill = decltype(fillTag)::value;
@@ -229,7 +230,7 @@ PetscErrorCode Energy::Residual(PetscReal a, PetscReal dt, PetscReal *maxResidua
         const unsigned yz = boxFaces(1, y) | boxFaces(2, z);
         PetscInt       l  = ((z - gs[2]) * gm[1] + (y - gs[1])) * gm[0] + (b.s[0] - gs[0]);  // the cell in the ghosted arrays
         for (PetscInt x = b.s[0]; x < b.s[0] + b.m[0]; ++x, ++c, ++l) {
-          const unsigned  box = yz | boxFaces(0, x);
+          const unsigned  box = yz | (x == 0 ? xLow : 0u) | (x == n[0] - 1 ? xHigh : 0u);
           const PetscReal t = T[l], kc = k[l], e = ep[l];
           PetscReal       R = q[c] + (qp ? PetscRealPart(qp[c]) : 0), boundary = 0;
           PetscReal      *G = &faceConductance_[6 * c];
