@@ -319,9 +319,12 @@ PetscErrorCode Energy::SetFluidFraction(Vec eps, Vec change) {
 
 PetscErrorCode Energy::RefreshFluidFraction() {
   PetscFunctionBeginUser;
+  // Without particles eps = 1 is set once: the unchanged epsLocal_ keeps Residual's face conductances (its key).
+  if (!epsFluid_ && epsUnit_) PetscFunctionReturn(0);
   if (epsFluid_) PetscCall(VecCopy(epsFluid_, epsCells_));  // the flow's cells: the same layout as dm_'s
   else PetscCall(VecSet(epsCells_, 1));
   PetscCall(DMGlobalToLocal(dm_, epsCells_, INSERT_VALUES, epsLocal_));
+  epsUnit_ = !epsFluid_;
   PetscFunctionReturn(0);
 }
 

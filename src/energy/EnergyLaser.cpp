@@ -2,6 +2,7 @@
 #include "vofdem/energy/Energy.hpp"
 
 #include <petscdmda.h>
+#include <petsc/private/petscimpl.h>  // PetscObjectStateGet: the deposit's key
 
 #include <algorithm>
 #include <cmath>
@@ -27,6 +28,23 @@ PetscErrorCode Energy::LaserSource(PetscReal t) {
   PetscFunctionBeginUser;
   PetscCall(DMDAGetCorners(dm_, &b.s[0], &b.s[1], &b.s[2], &b.m[0], &b.m[1], &b.m[2]));
   PetscCall(PetscLogEventBegin(evLaser_, 0, 0, 0, 0));
+  // The deposit depends on the beam's power and centre and on alpha alone (FootprintPower), unless particles take
+  // their share: a beam that neither moved nor changed over the same metal (alphaLocal_'s object state) leaves
+  // q_ as the last call filled it (q_'s state unchanged since), the same bits.
+  LaserKey key;
+  key.valid = laser_.On() && !beamTaken_, key.power = laser_.On() ? laser_.Power(t) : 0;
+  laser_.Centre(t, &key.x, &key.y);
+  PetscCall(PetscObjectStateGet((PetscObject)alphaLocal_, &key.alpha));
+  PetscCall(PetscObjectStateGet((PetscObject)q_, &key.q));
+  PetscInt same = key.valid && key.power > 0 && laserKey_.valid && key.power == laserKey_.power && key.x == laserKey_.x && key.y == laserKey_.y && key.alpha == laserKey_.alpha &&
+                  key.q == laserKey_.q;
+  PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, &same, 1, MPIU_INT, MPI_LAND, comm_));
+  if (same) {
+    last_.beam = laserKey_.beam, last_.absorbed = laserKey_.absorbed;
+    PetscCall(PetscLogEventEnd(evLaser_, 0, 0, 0, 0));
+    PetscFunctionReturn(0);
+  }
+  laserKey_.valid = false;
   PetscCall(VecSet(q_, 0));
   last_.beam = last_.absorbed = 0;
   if (!laser_.On() || laser_.Power(t) == 0) {
@@ -86,6 +104,9 @@ PetscErrorCode Energy::LaserSource(PetscReal t) {
   PetscCall(DMDAVecRestoreArrayRead(dm_, alphaLocal_, &al));
   PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, sums, 2, MPIU_REAL, MPI_SUM, comm_));
   last_.beam = sums[0], last_.absorbed = sums[1];
+  PetscCall(PetscObjectStateGet((PetscObject)q_, &key.q));
+  key.beam = sums[0], key.absorbed = sums[1];
+  laserKey_ = key;
   PetscCall(PetscLogEventEnd(evLaser_, 0, 0, 0, 0));
   PetscFunctionReturn(0);
 }

@@ -1,10 +1,11 @@
-// Energy.hpp: one step, the cells' properties and the implicit system (docs/physics.md F7; the laser's deposit: EnergyLaser.cpp).
+// Energy.hpp: one step and the implicit system (docs/physics.md F7; the cells' properties: EnergyProperties.cpp, the laser's deposit: EnergyLaser.cpp).
 #include "vofdem/energy/Energy.hpp"
 
 #include "vofdem/base/Runtime.hpp"
 #include "vofdem/grid/FaceProperties.hpp"
 
 #include <petscdmda.h>
+#include <petsc/private/petscimpl.h>  // PetscObjectStateGet: the caches' keys (every write access moves a vector's state)
 
 #include <algorithm>
 #include <cmath>
@@ -26,72 +27,8 @@ Box Owned(DM dm) {
   DMDAGetCorners(dm, &b.s[0], &b.s[1], &b.s[2], &b.m[0], &b.m[1], &b.m[2]);
   return b;
 }
+
 }  // namespace
-
-// Per volume of fluid: alpha rho_m (int cp_m dT + L f) + (1 - alpha) rho_g int cp_g dT, f the metal's melt fraction
-// (the state; f = f_l(T) once a step has converged); the cells hold eps times it (Properties).
-PetscReal Energy::CellEnergy(PetscReal a, PetscReal T, PetscReal f) const {
-  return a * metal_.density * (metal_.Sensible(T) + metal_.latentHeat * f) + (1 - a) * gas_.density * gas_.Sensible(T);
-}
-PetscReal Energy::CellSensibleCapacity(PetscReal a, PetscReal T) const { return a * metal_.density * metal_.cp.At(T) + (1 - a) * gas_.density * gas_.cp.At(T); }
-PetscReal Energy::CellConductivity(PetscReal a, PetscReal T) const { return a * metal_.k.At(T) + (1 - a) * gas_.k.At(T); }
-
-// The linearisation of the melt fraction about the state (T, f) (Voller and Swaminathan): f = f^k + F' (T - T_F),
-// T_F = F^{-1}(f^k). A cell consistently solid (f = 0, T <= T_s) or liquid (f = 1, T >= T_l) has F' = 0; any other
-// (in the mushy range, or one that crossed the solidus or liquidus in the last iteration) the law's slope at T_F.
-PetscReal Energy::LatentSlope(PetscReal T, PetscReal f, PetscReal *TF) const {
-  const ThermalMaterial &m = metal_;
-  if (m.melt == MeltLaw::Linear) {
-    if ((f <= 0 && T <= m.solidus) || (f >= 1 && T >= m.liquidus)) return *TF = T, 0;
-    *TF = m.MeltInverse(std::min((PetscReal)1, std::max((PetscReal)0, f)));
-    return 1 / (m.liquidus - m.solidus);
-  }
-  const PetscReal fc = std::min(1 - 1e-15, std::max((PetscReal)1e-300, f));
-  *TF                = m.MeltInverse(fc);
-  return m.MeltSlope(*TF);
-}
-
-PetscErrorCode Energy::Properties() {
-  PetscScalar ***T, ***F, ***E, ***C, ***k, ***al, ***S, ***TF, ***ep;
-  const Box     b = Owned(dm_);
-
-  PetscFunctionBeginUser;
-  PetscCall(PetscLogEventBegin(evProperties_, 0, 0, 0, 0));
-  PetscCall(DMDAVecGetArrayRead(dm_, epsCells_, &ep));
-  cacheValid_ = false;  // Residual fills the face conductances of the new state
-  PetscCall(DMDAVecGetArrayRead(dm_, T_, &T));
-  PetscCall(DMDAVecGetArrayRead(dm_, F_, &F));
-  PetscCall(DMDAVecGetArrayRead(dm_, alpha_, &al));
-  PetscCall(DMDAVecGetArray(dm_, Ecur_, &E));
-  PetscCall(DMDAVecGetArray(dm_, C_, &C));
-  PetscCall(DMDAVecGetArray(dm_, k_, &k));
-  PetscCall(DMDAVecGetArray(dm_, slope_, &S));
-  PetscCall(DMDAVecGetArray(dm_, TF_, &TF));
-  for (PetscInt z = b.s[2]; z < b.s[2] + b.m[2]; ++z)
-    for (PetscInt y = b.s[1]; y < b.s[1] + b.m[1]; ++y)
-      for (PetscInt x = b.s[0]; x < b.s[0] + b.m[0]; ++x) {
-        const PetscReal a = al[z][y][x], t = T[z][y][x], f = F[z][y][x], e = ep[z][y][x];
-        PetscReal       tf;
-        E[z][y][x]  = e * CellEnergy(a, t, f);  // per cell volume: the fluid's share eps
-        S[z][y][x]  = a > 0 ? LatentSlope(t, f, &tf) : (tf = t, 0);
-        TF[z][y][x] = tf;
-        C[z][y][x]  = e * (CellSensibleCapacity(a, t) + a * metal_.density * metal_.latentHeat * S[z][y][x]);
-        k[z][y][x]  = CellConductivity(a, t);
-      }
-  PetscCall(DMDAVecRestoreArrayRead(dm_, epsCells_, &ep));
-  PetscCall(DMDAVecRestoreArray(dm_, TF_, &TF));
-  PetscCall(DMDAVecRestoreArray(dm_, slope_, &S));
-  PetscCall(DMDAVecRestoreArray(dm_, k_, &k));
-  PetscCall(DMDAVecRestoreArray(dm_, C_, &C));
-  PetscCall(DMDAVecRestoreArray(dm_, Ecur_, &E));
-  PetscCall(DMDAVecRestoreArrayRead(dm_, alpha_, &al));
-  PetscCall(DMDAVecRestoreArrayRead(dm_, F_, &F));
-  PetscCall(DMDAVecRestoreArrayRead(dm_, T_, &T));
-  PetscCall(DMGlobalToLocal(dm_, k_, INSERT_VALUES, kLocal_));
-  PetscCall(DMGlobalToLocal(dm_, T_, INSERT_VALUES, TLocal_));
-  PetscCall(PetscLogEventEnd(evProperties_, 0, 0, 0, 0));
-  PetscFunctionReturn(0);
-}
 
 namespace {
 
@@ -129,6 +66,23 @@ PetscErrorCode Energy::Assemble(PetscReal a, PetscReal dt, int slot) {
   PetscFunctionBeginUser;
   PetscCall(PetscLogEventBegin(evAssemble_, 0, 0, 0, 0));
   for (int d = 0; d < 3; ++d) periodic[d] = grid_->Periodic(d);
+  // The matrix of the same inputs is the one A_[slot] holds (JacobianKey): left as it is, its preconditioner too
+  // (PCSetUp sees the matrix unchanged). Radiation (a convective box face's or the interfaces') makes it follow T.
+  JacobianKey key;
+  key.valid = true, key.a = a, key.dt = dt, key.capacity = capacityVersion_;
+  PetscCall(PetscObjectStateGet((PetscObject)kLocal_, &key.k));
+  PetscCall(PetscObjectStateGet((PetscObject)epsLocal_, &key.eps));
+  PetscCall(PetscObjectStateGet((PetscObject)alphaLocal_, &key.alpha));
+  bool followsT = losses && interfaceRadiation_ && metal_.emissivity > 0;
+  for (int f = 0; f < 6; ++f) followsT = followsT || (!periodic[f / 2] && face_[f].type == EnergyBoundary::Convective && face_[f].emissivity > 0);
+  const JacobianKey &held = jacobianKey_[slot];
+  PetscInt           same = !followsT && held.valid && held.a == a && held.dt == dt && held.capacity == key.capacity && held.k == key.k && held.eps == key.eps && held.alpha == key.alpha;
+  PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, &same, 1, MPIU_INT, MPI_LAND, comm_));
+  if (same) {
+    PetscCall(PetscLogEventEnd(evAssemble_, 0, 0, 0, 0));
+    PetscFunctionReturn(0);
+  }
+  jacobianKey_[slot].valid = false;  // until the assembly below is complete
   PetscCall(DMDAVecGetArrayRead(dm_, TLocal_, &T));
   PetscCall(DMDAVecGetArrayRead(dm_, kLocal_, &k));
   PetscCall(DMDAVecGetArrayRead(dm_, alphaLocal_, &al));
@@ -210,86 +164,119 @@ PetscErrorCode Energy::Assemble(PetscReal a, PetscReal dt, int slot) {
   PetscCall(DMDAVecRestoreArrayRead(dm_, alphaLocal_, &al));
   PetscCall(DMDAVecRestoreArrayRead(dm_, kLocal_, &k));
   PetscCall(DMDAVecRestoreArrayRead(dm_, TLocal_, &T));
+  jacobianKey_[slot] = key;
   PetscCall(PetscLogEventEnd(evAssemble_, 0, 0, 0, 0));
   PetscFunctionReturn(0);
 }
 
 // r = a E(T) - H - dt R(T) per cell (J/m^3), with R the exact (not linearised) fluxes, losses and deposit at
-// the current T (Properties done); also the step's rates: through the box faces, lost, in all.
+// the current T (Properties done); also the step's rates: through the box faces, lost, in all. The face
+// conductances eps_f k_f/h^2 and the interface densities depend on k, eps and alpha alone: they are kept from the
+// last fill while kLocal_, epsLocal_ and alphaLocal_ are unchanged (their object states), the same bits.
 PetscErrorCode Energy::Residual(PetscReal a, PetscReal dt, PetscReal *maxResidual) {
-  const Box        b = Owned(dm_);
-  const PetscReal *h = grid_->Spacing();
-  const PetscInt  *n = grid_->Cells();
-  const PetscReal  V = h[0] * h[1] * h[2];
-  bool             periodic[3];
-  PetscScalar   ***T, ***k, ***al, ***E, ***H, ***q, ***r, ***ep, ***qp = nullptr;  // qp: the particles' heat (F9, SetParticleHeat)
-  PetscReal        rates[3] = {0, 0, 0}, rmax = 0;  // box faces, losses, residual sum (J)
+  const Box          b = Owned(dm_);
+  const PetscReal   *h = grid_->Spacing();
+  const PetscInt    *n = grid_->Cells();
+  const PetscReal    V = h[0] * h[1] * h[2];
+  bool               periodic[3];
+  const PetscScalar *T, *k, *ep, *E, *H, *q, *qp = nullptr;  // qp: the particles' heat (F9, SetParticleHeat)
+  PetscScalar       *r, ***al = nullptr;
+  PetscReal          rates[3] = {0, 0, 0}, rmax = 0;  // box faces, losses, residual sum (J)
+  PetscInt           gs[3], gm[3];
+  PetscObjectState   key[3];
 
   PetscFunctionBeginUser;
   PetscCall(PetscLogEventBegin(evResidual_, 0, 0, 0, 0));
   for (int d = 0; d < 3; ++d) periodic[d] = grid_->Periodic(d);
-  PetscCall(DMDAVecGetArrayRead(dm_, TLocal_, &T));
-  PetscCall(DMDAVecGetArrayRead(dm_, kLocal_, &k));
-  PetscCall(DMDAVecGetArrayRead(dm_, alphaLocal_, &al));
-  PetscCall(DMDAVecGetArrayRead(dm_, Ecur_, &E));
-  PetscCall(DMDAVecGetArrayRead(dm_, H_, &H));
-  PetscCall(DMDAVecGetArrayRead(dm_, q_, &q));
-  PetscCall(DMDAVecGetArray(dm_, r_, &r));
-  PetscCall(DMDAVecGetArrayRead(dm_, epsLocal_, &ep));
-  if (particleSource_) PetscCall(DMDAVecGetArrayRead(dm_, particleSource_, &qp));
-  PetscReal rsum = 0;
-  const PetscReal ih2[3] = {1 / (h[0] * h[0]), 1 / (h[1] * h[1]), 1 / (h[2] * h[2])};
+  PetscCall(DMDAGetGhostCorners(dm_, &gs[0], &gs[1], &gs[2], &gm[0], &gm[1], &gm[2]));
+  PetscCall(PetscObjectStateGet((PetscObject)kLocal_, &key[0]));
+  PetscCall(PetscObjectStateGet((PetscObject)epsLocal_, &key[1]));
+  PetscCall(PetscObjectStateGet((PetscObject)alphaLocal_, &key[2]));
   const bool      losses = interfaceConvection_ > 0 || (interfaceRadiation_ && metal_.emissivity > 0);
   const size_t    cells  = (size_t)b.m[0] * b.m[1] * b.m[2];
-  faceConductance_.resize(6 * cells), interfaceDensity_.resize(cells);  // for Assemble at this state
-  size_t c = 0;
-  for (PetscInt z = b.s[2]; z < b.s[2] + b.m[2]; ++z)
-    for (PetscInt y = b.s[1]; y < b.s[1] + b.m[1]; ++y)
-      for (PetscInt x = b.s[0]; x < b.s[0] + b.m[0]; ++x, ++c) {
-        const PetscReal t = T[z][y][x], kc = k[z][y][x], e = ep[z][y][x];
-        PetscReal       R = q[z][y][x] + (qp ? PetscRealPart(qp[z][y][x]) : 0), boundary = 0;
-        PetscReal      *G = &faceConductance_[6 * c];
-        for (int d = 0; d < 3; ++d)
-          for (int side = 0; side < 2; ++side) {
-            PetscInt nb[3] = {x, y, z};
-            nb[d] += side ? 1 : -1;
-            if (!periodic[d] && (nb[d] < 0 || nb[d] >= n[d])) {
-              const EnergyFace &f = face_[2 * d + side];
-              PetscReal         flux = 0;  // W/m^2 into the cell
-              if (f.type == EnergyBoundary::Temperature) flux = 2 * kc * (f.value - t) / h[d];
-              else if (f.type == EnergyBoundary::Flux) flux = f.value;
-              else if (f.type == EnergyBoundary::Convective)
-                flux = f.value * (f.ambient - t) + f.emissivity * kStefanBoltzmann * (Pow4(f.ambient) - Pow4(t));
-              boundary += e * flux / h[d];  // through the fluid's share of the face
-              G[2 * d + side] = 0;
-              continue;
+  const bool      reuse  = facesFilled_ && faceConductance_.size() == 6 * cells && std::equal(key, key + 3, faceKey_);
+  PetscCall(VecGetArrayRead(TLocal_, &T));
+  PetscCall(VecGetArrayRead(kLocal_, &k));
+  PetscCall(VecGetArrayRead(epsLocal_, &ep));
+  PetscCall(VecGetArrayRead(Ecur_, &E));
+  PetscCall(VecGetArrayRead(H_, &H));
+  PetscCall(VecGetArrayRead(q_, &q));
+  PetscCall(VecGetArray(r_, &r));
+  if (particleSource_) PetscCall(VecGetArrayRead(particleSource_, &qp));
+  if (losses && !reuse) PetscCall(DMDAVecGetArrayRead(dm_, alphaLocal_, &al));
+  PetscReal       rsum   = 0;
+  const PetscReal ih2[3] = {1 / (h[0] * h[0]), 1 / (h[1] * h[1]), 1 / (h[2] * h[2])};
+  const PetscInt  off[6] = {-1, 1, -gm[0], gm[0], -gm[0] * gm[1], gm[0] * gm[1]};  // the neighbours in the ghosted arrays
+  if (!reuse) faceConductance_.resize(6 * cells), interfaceDensity_.resize(cells);  // for Assemble at this state
+  // A box face's flux into the cell through the fluid's share of the face, per cell volume (W/m^3).
+  auto boxFlux = [&](int f, PetscReal e, PetscReal kc, PetscReal t) {
+    const EnergyFace &bf = face_[f];
+    const int         d  = f / 2;
+    PetscReal         flux = 0;  // W/m^2 into the cell
+    if (bf.type == EnergyBoundary::Temperature) flux = 2 * kc * (bf.value - t) / h[d];
+    else if (bf.type == EnergyBoundary::Flux) flux = bf.value;
+    else if (bf.type == EnergyBoundary::Convective) flux = bf.value * (bf.ambient - t) + bf.emissivity * kStefanBoltzmann * (Pow4(bf.ambient) - Pow4(t));
+    return e * flux / h[d];
+  };
+  // The box faces of a cell with coordinate p along d (bits 2d, 2d + 1: its low and high face).
+  auto boxFaces = [&](int d, PetscInt p) { return periodic[d] ? 0u : (p == 0 ? 1u << 2 * d : 0u) | (p == n[d] - 1 ? 2u << 2 * d : 0u); };
+  const unsigned xLow = boxFaces(0, 0) & 1u, xHigh = boxFaces(0, n[0] - 1) & 2u;
+  // The cells, with the conductances computed (fill) or read: one loop in two instances.
+  auto sweep = [&](auto fillTag) {
+    constexpr bool fill = decltype(fillTag)::value;
+    size_t         c    = 0;
+    for (PetscInt z = b.s[2]; z < b.s[2] + b.m[2]; ++z)
+      for (PetscInt y = b.s[1]; y < b.s[1] + b.m[1]; ++y) {
+        const unsigned yz = boxFaces(1, y) | boxFaces(2, z);
+        PetscInt       l  = ((z - gs[2]) * gm[1] + (y - gs[1])) * gm[0] + (b.s[0] - gs[0]);  // the cell in the ghosted arrays
+        for (PetscInt x = b.s[0]; x < b.s[0] + b.m[0]; ++x, ++c, ++l) {
+          const unsigned  box = yz | (x == 0 ? xLow : 0u) | (x == n[0] - 1 ? xHigh : 0u);
+          const PetscReal t = T[l], kc = k[l], e = ep[l];
+          PetscReal       R = q[c] + (qp ? PetscRealPart(qp[c]) : 0), boundary = 0;
+          PetscReal      *G = &faceConductance_[6 * c];
+          // the faces in the order x-, x+, y-, y+, z-, z+ (R's sum in that order, the same bits in both branches)
+          auto inner = [&](int f) {
+            const PetscInt m = l + off[f];
+            if (fill) G[f] = 0.5 * (e + ep[m]) * FaceConductivity(kc, k[m]) * ih2[f / 2];  // eps_f k_f/h^2
+            R += G[f] * (T[m] - t);
+          };
+          if (!box) inner(0), inner(1), inner(2), inner(3), inner(4), inner(5);
+          else
+            for (int f = 0; f < 6; ++f) {
+              if (!(box >> f & 1u)) {
+                inner(f);
+                continue;
+              }
+              boundary += boxFlux(f, e, kc, t);
+              if (fill) G[f] = 0;
             }
-            const PetscReal tn = T[nb[2]][nb[1]][nb[0]];
-            G[2 * d + side]    = 0.5 * (e + ep[nb[2]][nb[1]][nb[0]]) * FaceConductivity(kc, k[nb[2]][nb[1]][nb[0]]) * ih2[d];  // eps_f k_f/h^2
-            R += G[2 * d + side] * (tn - t);
+          PetscReal loss = 0;
+          if (fill) interfaceDensity_[c] = losses ? e * InterfaceDensity(al, x, y, z, n, h, periodic) : 0;  // the fluid's share
+          if (losses) {
+            const PetscReal ds = interfaceDensity_[c];
+            const PetscReal em = interfaceRadiation_ ? metal_.emissivity : 0;
+            loss               = ds * (interfaceConvection_ * (t - ambient_) + em * kStefanBoltzmann * (Pow4(t) - Pow4(ambient_)));
           }
-        PetscReal loss = 0;
-        interfaceDensity_[c] = 0;
-        if (losses) {
-          const PetscReal ds = interfaceDensity_[c] = e * InterfaceDensity(const_cast<PetscScalar ***>(al), x, y, z, n, h, periodic);  // the fluid's share
-          const PetscReal em = interfaceRadiation_ ? metal_.emissivity : 0;
-          loss               = ds * (interfaceConvection_ * (t - ambient_) + em * kStefanBoltzmann * (Pow4(t) - Pow4(ambient_)));
+          R += boundary - loss;
+          rates[0] += boundary * V, rates[1] += loss * V;
+          r[c] = a * E[c] - H[c] - dt * R;
+          rsum += r[c] * V;
+          rmax = std::max(rmax, (PetscReal)std::fabs(r[c]));
         }
-        R += boundary - loss;
-        rates[0] += boundary * V, rates[1] += loss * V;
-        r[z][y][x] = a * E[z][y][x] - H[z][y][x] - dt * R;
-        rsum += r[z][y][x] * V;
-        rmax = std::max(rmax, (PetscReal)std::fabs(r[z][y][x]));
       }
-  PetscCall(DMDAVecRestoreArrayRead(dm_, epsLocal_, &ep));
-  PetscCall(DMDAVecRestoreArray(dm_, r_, &r));
-  if (particleSource_) PetscCall(DMDAVecRestoreArrayRead(dm_, particleSource_, &qp));
-  PetscCall(DMDAVecRestoreArrayRead(dm_, q_, &q));
-  PetscCall(DMDAVecRestoreArrayRead(dm_, H_, &H));
-  PetscCall(DMDAVecRestoreArrayRead(dm_, Ecur_, &E));
-  PetscCall(DMDAVecRestoreArrayRead(dm_, alphaLocal_, &al));
-  PetscCall(DMDAVecRestoreArrayRead(dm_, kLocal_, &k));
-  PetscCall(DMDAVecRestoreArrayRead(dm_, TLocal_, &T));
+  };
+  if (reuse) sweep(std::false_type());
+  else sweep(std::true_type());
+  if (al) PetscCall(DMDAVecRestoreArrayRead(dm_, alphaLocal_, &al));
+  if (particleSource_) PetscCall(VecRestoreArrayRead(particleSource_, &qp));
+  PetscCall(VecRestoreArray(r_, &r));
+  PetscCall(VecRestoreArrayRead(q_, &q));
+  PetscCall(VecRestoreArrayRead(H_, &H));
+  PetscCall(VecRestoreArrayRead(Ecur_, &E));
+  PetscCall(VecRestoreArrayRead(epsLocal_, &ep));
+  PetscCall(VecRestoreArrayRead(kLocal_, &k));
+  PetscCall(VecRestoreArrayRead(TLocal_, &T));
+  std::copy(key, key + 3, faceKey_), facesFilled_ = true;
   rates[2] = rsum;
   PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, rates, 3, MPIU_REAL, MPI_SUM, comm_));
   PetscCallMPI(MPI_Allreduce(&rmax, maxResidual, 1, MPIU_REAL, MPI_MAX, comm_));

@@ -10,8 +10,7 @@
 
 namespace vofdem {
 
-PetscReal PropertyTable::At(PetscReal t) const {
-  if (v.size() == 1) return v[0];
+PetscReal PropertyTable::TableAt(PetscReal t) const {
   if (t <= T.front()) return v.front();
   if (t >= T.back()) return v.back();
   const size_t i = std::upper_bound(T.begin(), T.end(), t) - T.begin();  // T[i-1] <= t < T[i]
@@ -22,9 +21,8 @@ PetscReal PropertyTable::At(PetscReal t) const {
 PetscReal PropertyTable::Min() const { return *std::min_element(v.begin(), v.end()); }
 
 // int_a^b of the piecewise-linear table: constant beyond the ends, trapezoids (exact) between nodes.
-PetscReal PropertyTable::Integral(PetscReal a, PetscReal b) const {
-  if (v.size() == 1) return v[0] * (b - a);
-  if (a > b) return -Integral(b, a);
+PetscReal PropertyTable::TableIntegral(PetscReal a, PetscReal b) const {
+  if (a > b) return -TableIntegral(b, a);
   PetscReal sum = 0, lo = a;
   auto      piece = [&](PetscReal x0, PetscReal x1) { sum += 0.5 * (At(x0) + At(x1)) * (x1 - x0); };
   for (size_t i = 0; i < T.size() && lo < b; ++i) {

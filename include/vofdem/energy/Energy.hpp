@@ -200,7 +200,27 @@ private:
   std::function<Vec()> interfaceAlpha_;  // the interface's alpha (once it is set up)
   AijRowWriter         writer_[2];  // Assemble: the rows in place after the first (AIJ matrices)
   std::vector<PetscReal> faceConductance_, interfaceDensity_;  // Residual's k_f/h^2 per cell face and delta_s, for Assemble
-  bool                 cacheValid_ = false;                   // they belong to the current state (Properties clears it)   // Assemble: the rows in place after the first (AIJ matrices)
+  bool                 cacheValid_ = false;                   // they belong to the current state (Properties clears it)
+  bool                 facesFilled_ = false;                  // Residual filled them, at the object states faceKey_ of
+  PetscObjectState     faceKey_[3] = {0, 0, 0};               // kLocal_, epsLocal_, alphaLocal_
+  bool                 kFilled_ = false;                      // Properties filled k_ (and kLocal_), at alpha_'s state kAlphaState_
+  PetscObjectState     kAlphaState_ = 0;
+  bool                 epsUnit_ = false;                      // epsCells_, epsLocal_ hold eps = 1 (no particles; RefreshFluidFraction)
+  PetscInt             capacityVersion_ = 0;                  // Properties: how often some cell's C changed (Assemble's key)
+  // Assemble: the inputs of the Jacobian in A_[slot] as last assembled (a, dt, the object states of kLocal_, epsLocal_,
+  // alphaLocal_, capacityVersion_); the same inputs leave the matrix as it is, unless it depends on T (radiation).
+  struct JacobianKey {
+    bool             valid = false;
+    PetscReal        a = 0, dt = 0;
+    PetscObjectState k = 0, eps = 0, alpha = 0;
+    PetscInt         capacity = 0;
+  } jacobianKey_[2];
+  // LaserSource: the beam (power, centre) and the object states of alphaLocal_ and q_ of the deposit q_ holds, its sums.
+  struct LaserKey {
+    bool             valid = false;
+    PetscReal        power = 0, x = 0, y = 0, beam = 0, absorbed = 0;
+    PetscObjectState alpha = 0, q = 0;
+  } laserKey_;
   std::vector<char>    touched_;  // TransportSweep: the owned cells a sweep changed
   PetscLogEvent        evLaser_ = 0, evProperties_ = 0, evResidual_ = 0, evAssemble_ = 0, evClose_ = 0, evTransport_ = 0, evMushy_ = 0;  // -log_view
   Vec                  Tsg_ = nullptr, TsgLocal_ = nullptr, Fsg_ = nullptr, FsgLocal_ = nullptr, AsgLocal_ = nullptr, uLocal_[3] = {nullptr, nullptr, nullptr},

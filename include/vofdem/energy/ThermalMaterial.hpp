@@ -16,10 +16,16 @@ namespace vofdem {
 // A property as a function of temperature: one value, or a piecewise-linear table (constant beyond its ends).
 struct PropertyTable {
   std::vector<PetscReal> T, v;  // K, ascending; the property
-  PetscReal At(PetscReal t) const;
-  PetscReal Integral(PetscReal a, PetscReal b) const;  // int_a^b v dT, exact
+  // One value inline (the cells' loops call these per cell and step), a table out of line: the same arithmetic.
+  PetscReal At(PetscReal t) const { return v.size() == 1 ? v[0] : TableAt(t); }
+  PetscReal Integral(PetscReal a, PetscReal b) const { return v.size() == 1 ? v[0] * (b - a) : TableIntegral(a, b); }  // int_a^b v dT, exact
+  bool      Constant() const { return v.size() == 1; }
   bool      Valid() const { return !v.empty(); }
   PetscReal Min() const;
+
+private:
+  PetscReal TableAt(PetscReal t) const;
+  PetscReal TableIntegral(PetscReal a, PetscReal b) const;
 };
 
 enum class MeltLaw { Linear, Erf };  // F3: clamp((T - T_s)/(T_l - T_s), 0, 1), or seed 000's erf form
