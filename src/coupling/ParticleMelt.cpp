@@ -200,7 +200,7 @@ PetscErrorCode ParticleMelt::Melt() {
   const PetscReal     *h  = sg.Base().Spacing();
   const PetscReal      V  = h[0] * h[1] * h[2];
   Vec                  eps = flow_->FluidFraction();
-  PetscReal            metal0, melt[3] = {0, 0, 0}, meltP[3] = {0, 0, 0}, spin = 0, energy0, held, brought, p0[3] = {0, 0, 0};
+  PetscReal            metal0, melt[3] = {0, 0, 0}, meltP[3] = {0, 0, 0}, spin = 0, energy0, p0[3] = {0, 0, 0};
   for (const Melted &m : all) {
     melt[0] += m.m / vof_->Density(), melt[1] += m.m * m.h, melt[2] += m.m;
     for (int d = 0; d < 3; ++d) meltP[d] += m.m * m.v[d];
@@ -262,7 +262,6 @@ PetscErrorCode ParticleMelt::Melt() {
     PetscCall(energy_->Summarize(&es));
     energy1 = es.total;
   }
-  (void)held, (void)brought;
   PetscReal pnorm = 0, perr = 0;
   for (int d = 0; d < 3; ++d) pnorm += std::fabs(p0[d]) + std::fabs(meltP[d]), perr = std::max(perr, std::fabs(p1[d] - p0[d] - meltP[d]));
   summary_.volumeError   = std::fabs((metal1 - metal0) * V - melt[0]) / std::max(metal1 * V, melt[0]);

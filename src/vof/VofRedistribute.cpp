@@ -15,33 +15,27 @@
 namespace vofdem {
 
 PetscErrorCode Vof::AddPhaseVolume(Vec volume, Vec before, Vec after) {
-  PetscScalar ***a, ***v, ***b, ***e;
-  PetscInt       s[3], n[3];
+  PetscScalar       *a;
+  const PetscScalar *v, *b, *e;
+  PetscInt           n;
 
   PetscFunctionBeginUser;
   const PetscReal *h = grid_->Spacing();
   const PetscReal  V = h[0] * h[1] * h[2];
-  Vec vs, bs, es;  // the flow's cell vectors in da_'s layout (the same ownership, one dof)
-  for (Vec *x : {&vs, &bs, &es}) PetscCall(DMCreateGlobalVector(da_, x));
-  PetscCall(VecCopy(volume, vs));
-  PetscCall(VecCopy(before, bs));
-  PetscCall(VecCopy(after, es));
-  PetscCall(DMDAGetCorners(da_, &s[0], &s[1], &s[2], &n[0], &n[1], &n[2]));
-  PetscCall(DMDAVecGetArray(da_, alpha_, &a));
-  PetscCall(DMDAVecGetArrayRead(da_, vs, &v));
-  PetscCall(DMDAVecGetArrayRead(da_, bs, &b));
-  PetscCall(DMDAVecGetArrayRead(da_, es, &e));
-  for (PetscInt k = s[2]; k < s[2] + n[2]; ++k)
-    for (PetscInt j = s[1]; j < s[1] + n[1]; ++j)
-      for (PetscInt i = s[0]; i < s[0] + n[0]; ++i) {
-        const PetscReal add = PetscRealPart(v[k][j][i]), eb = PetscRealPart(b[k][j][i]), ea = PetscRealPart(e[k][j][i]);
-        if (add != 0 || eb != ea) a[k][j][i] = (PetscRealPart(a[k][j][i]) * eb + add / V) / ea;
-      }
-  PetscCall(DMDAVecRestoreArrayRead(da_, es, &e));
-  PetscCall(DMDAVecRestoreArrayRead(da_, bs, &b));
-  PetscCall(DMDAVecRestoreArrayRead(da_, vs, &v));
-  PetscCall(DMDAVecRestoreArray(da_, alpha_, &a));
-  for (Vec *x : {&vs, &bs, &es}) PetscCall(VecDestroy(x));
+  // The flow's cell vectors have alpha_'s layout (the same ownership, one dof, x fastest): flat arrays.
+  PetscCall(VecGetLocalSize(alpha_, &n));
+  PetscCall(VecGetArray(alpha_, &a));
+  PetscCall(VecGetArrayRead(volume, &v));
+  PetscCall(VecGetArrayRead(before, &b));
+  PetscCall(VecGetArrayRead(after, &e));
+  for (PetscInt c = 0; c < n; ++c) {
+    const PetscReal add = PetscRealPart(v[c]), eb = PetscRealPart(b[c]), ea = PetscRealPart(e[c]);
+    if (add != 0 || eb != ea) a[c] = (PetscRealPart(a[c]) * eb + add / V) / ea;
+  }
+  PetscCall(VecRestoreArrayRead(after, &e));
+  PetscCall(VecRestoreArrayRead(before, &b));
+  PetscCall(VecRestoreArrayRead(volume, &v));
+  PetscCall(VecRestoreArray(alpha_, &a));
   PetscCall(FillGhosts());
   PetscFunctionReturn(0);
 }
