@@ -79,6 +79,7 @@ PetscErrorCode ParticleHeat::SetUp(Coupling &coupling, Flow &flow, Vof &vof, Dem
   material_.referenceTemperature = energy.Metal().referenceTemperature;  // one zero of enthalpy for the whole account
   if (emissivity_ >= 0) material_.emissivity = emissivity_;
   if (!radiation_) material_.emissivity = 0;
+  PetscCall(BuildParticleMaterials(comm_, material_, types_, melting_, radiation_ ? emissivity_ : 0, &materials_));
   kernelVolume_ = KernelVolume(coupling.KernelSettings());
   const StaggeredGrid &sg = flow.Staggered();
   PetscCall(DMCreateGlobalVector(sg.Cells(), &T_));
@@ -102,16 +103,16 @@ PetscErrorCode ParticleHeat::SetUp(Coupling &coupling, Flow &flow, Vof &vof, Dem
     beam_.SetUp(sg.Base(), energy.Beam(), eta, raysPerCell_);
     energy.SetBeamTaken([this]() { return &taken_; });
   }
-  if (melting_) PetscCall(melt_.SetUp(coupling, flow, vof, dem, energy, material_));
+  if (melting_) PetscCall(melt_.SetUp(coupling, flow, vof, dem, energy, materials_));
   energy.SetParticleHeat(sourceEnergy_, [this](PetscReal *now, PetscReal *brought) { return Held(now, brought); });
   // The cells' energy counts the fluid's share eps of their volume, moved with d(eps)/dt as alpha is (F7 with eps).
   PetscCall(energy.SetFluidFraction(flow.FluidFraction(), coupling.FluidFractionChange()));
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode ParticleHeat::Melt() {
+PetscErrorCode ParticleHeat::Melt(PetscReal time) {
   PetscFunctionBeginUser;
-  if (melting_) PetscCall(melt_.Melt());
+  if (melting_) PetscCall(melt_.Melt(time, T0_));
   PetscFunctionReturn(0);
 }
 
@@ -119,9 +120,9 @@ PetscErrorCode ParticleHeat::StartNew(ParticleArrays &a) {
   PetscReal mine = 0, all = 0;
 
   PetscFunctionBeginUser;
-  const PetscReal h0 = material_.Enthalpy(T0_);
   for (PetscInt p = 0; p < a.n; ++p)
     if (a.temperature[p] == 0) {
+      const PetscReal h0 = materials_[a.type[p]].Enthalpy(T0_);
       a.temperature[p] = T0_, a.enthalpy[p] = h0;
       mine += a.mass[p] * h0;
     }
@@ -219,11 +220,14 @@ PetscErrorCode ParticleHeat::Exchange(PetscReal time, PetscReal dt) {
     // docs/physics.md (P11): the particle's step; (F9): what it loses the fluid gains.
     if (beamPower_[p] > 0) {  // the beam's share first (a split step: exact in energy)
       a.enthalpy[p] += beamPower_[p] * dt / a.mass[p];
-      a.temperature[p] = heat::TemperatureOf(material_, a.enthalpy[p], a.temperature[p]);
+      a.heatAbsorbed[p] += beamPower_[p] * dt;
+      a.temperature[p] = heat::TemperatureOf(materials_[a.type[p]], a.enthalpy[p], a.temperature[p]);
     }
-    const heat::StepResult r = heat::Step(material_, a.mass[p], PETSC_PI * d * d, Nu * kf / d, material_.emissivity, Tb, Cg, a.enthalpy[p], a.temperature[p], dt);
+    const ThermalMaterial &mp = materials_[a.type[p]];
+    const heat::StepResult r  = heat::Step(mp, a.mass[p], PETSC_PI * d * d, Nu * kf / d, mp.emissivity, Tb, Cg, a.enthalpy[p], a.temperature[p], dt);
     a.enthalpy[p] = r.h, a.temperature[p] = r.T;
     power_[p] = dt > 0 ? -r.heat / dt : 0;
+    a.heatExchanged[p] -= r.heat;
     sums[0] += power_[p];
   }
   // K3: the same kernel, normalised over the cells that take part: the cells' total is the particles' to round-off.
@@ -286,6 +290,12 @@ PetscErrorCode ParticleHeat::View(PetscViewer viewer) const {
                                    material_.path.empty() ? material_.name.c_str() : material_.path.c_str(), (double)material_.cp.At(T0_), (double)T0_, (double)material_.latentHeat,
                                    (double)material_.solidus, (double)material_.liquidus, (double)material_.emissivity, (double)T0_, (double)kernelVolume_,
                                    gasResponse_ ? " (the fluid's response in each step)" : " (fixed fluid temperature over a step)", capacityDeposit_ ? "kernel weight x heat capacity" : "kernel weight (volume)"));
+  for (size_t t = 0; t < types_.size(); ++t)
+    if (!types_[t].material.empty() || types_[t].specificHeat > 0) {
+      const ThermalMaterial &m = materials_[t];
+      PetscCall(PetscViewerASCIIPrintf(viewer, "particle heat: type %s: material %s, cp %g J/(kg K) at %g K, latent heat %g J/kg, solidus %g K, liquidus %g K\n", types_[t].name.c_str(),
+                                       m.path.empty() ? m.name.c_str() : m.path.c_str(), (double)m.cp.At(T0_), (double)T0_, (double)m.latentHeat, (double)m.solidus, (double)m.liquidus));
+    }
   if (beamOn_)
     PetscCall(PetscViewerASCIIPrintf(viewer, "particle heat: the beam's share first (P11; rays within 3 R_l, %s per cell edge, the highest disc takes each; absorptivity %g)\n",
                                      raysPerCell_ > 0 ? std::to_string((long long)raysPerCell_).c_str() : "automatic", (double)beam_.Absorptivity()));

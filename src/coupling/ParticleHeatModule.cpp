@@ -23,11 +23,13 @@ PetscErrorCode ParticleHeatModule::Configure(ModuleSet &modules, const RunContex
   PetscCheck(dem_ && flow_ && coupling_, run.comm, PETSC_ERR_PLIB, "particle heat: needs the dem, flow and coupling modules below it");
   // The energy moves with the interface's sweeps (and steps with backward Euler there): the energy module refuses flow without vof.
   dem_->Get().UseHeatFields();  // the swarm's enthalpy and temperature, before the particles are made
+  PetscCall(heat_.SetTypeOptions(dem_->Get().TypeNames()));  // -coupling_heat_type_<name>_*
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode ParticleHeatModule::SetUp(ModuleSet &modules, const RunContext &) {
+PetscErrorCode ParticleHeatModule::SetUp(ModuleSet &modules, const RunContext &run) {
   PetscFunctionBeginUser;
+  restarting_ = run.restarting;
   EnergyModule *energy = modules.Get<EnergyModule>("energy");  // after this module in the registry: found at set-up
   PetscCheck(energy, PETSC_COMM_WORLD, PETSC_ERR_PLIB, "particle heat: no energy module");
   PetscCheck(vof_, PETSC_COMM_WORLD, PETSC_ERR_PLIB, "particle heat: no vof module");
@@ -37,7 +39,7 @@ PetscErrorCode ParticleHeatModule::SetUp(ModuleSet &modules, const RunContext &)
 
 PetscErrorCode ParticleHeatModule::Run(Stage stage, StepState &step) {
   PetscFunctionBeginUser;
-  if (stage == Stage::Prepare) PetscCall(heat_.Melt());
+  if (stage == Stage::Prepare) PetscCall(heat_.Melt(step.time));
   if (stage == Stage::Exchange) PetscCall(heat_.Exchange(step.time, step.dt));
   PetscFunctionReturn(0);
 }

@@ -11,9 +11,9 @@
 
 namespace vofdem {
 
-PetscErrorCode ParticleMelt::SetUp(Coupling &coupling, Flow &flow, Vof &vof, Dem &dem, Energy &energy, const ThermalMaterial &particles) {
+PetscErrorCode ParticleMelt::SetUp(Coupling &coupling, Flow &flow, Vof &vof, Dem &dem, Energy &energy, const std::vector<ThermalMaterial> &particles) {
   PetscFunctionBeginUser;
-  coupling_ = &coupling, flow_ = &flow, vof_ = &vof, dem_ = &dem, energy_ = &energy, material_ = particles;
+  coupling_ = &coupling, flow_ = &flow, vof_ = &vof, dem_ = &dem, energy_ = &energy, materials_ = particles;
   const StaggeredGrid &sg = flow.Staggered();
   for (Vec *v : {&volume_, &enthalpy_, &kernel_, &before_, &gas_}) PetscCall(DMCreateGlobalVector(sg.Cells(), v));
   for (int d = 0; d < 3; ++d) {
@@ -26,9 +26,10 @@ PetscErrorCode ParticleMelt::SetUp(Coupling &coupling, Flow &flow, Vof &vof, Dem
   PetscFunctionReturn(0);
 }
 
-bool ParticleMelt::MeltsAt(PetscReal T) const {
-  if (material_.melt == MeltLaw::Erf) return material_.MeltFraction(T) >= 1 - 1e-3;
-  return T >= material_.liquidus;
+bool ParticleMelt::MeltsAt(PetscReal T, PetscInt type) const {
+  const ThermalMaterial &m = materials_[type];
+  if (m.melt == MeltLaw::Erf) return m.MeltFraction(T) >= 1 - 1e-3;
+  return T >= m.liquidus;
 }
 
 // (eps rho)_f V of each owned face, the flow's definition (FaceAverage); 0 on the walls (their velocity is set).
@@ -58,12 +59,15 @@ PetscErrorCode ParticleMelt::Share(const std::vector<Melted> &all) {
   const PetscInt      *N = g.Cells();
   const PetscInt       ns = samples_;
   const PetscReal      rhoM = vof_->Density();
-  LocalField           Vf, Hf;
+  LocalField           Vf, Hf, Af;
   PetscInt             cs[3], cn[3], fs[3][3], fn[3][3];
 
   PetscFunctionBeginUser;
   PetscCall(sg.GetGlobal(3, volume_, &Vf));
   PetscCall(sg.GetGlobal(3, enthalpy_, &Hf));
+  PetscCall(VecCopy(vof_->Fraction(), gas_));  // alpha before the conversion (gas_ is free until step 3 of Melt)
+  PetscCall(sg.GetGlobal(3, gas_, &Af));
+  around_.assign(all.size(), 0);
   sg.Owned(3, cs, cn);
   for (int d = 0; d < 3; ++d) sg.Owned(d, fs[d], fn[d]);
   faces_.assign(all.size(), {});
@@ -103,7 +107,7 @@ PetscErrorCode ParticleMelt::Share(const std::vector<Melted> &all) {
               c[d] = (S[d] >= 0 ? S[d] / ns : -((-S[d] + ns - 1) / ns));  // floor division
               if (g.Periodic(d)) c[d] = ((c[d] % N[d]) + N[d]) % N[d];
             }
-            if (owned(c, cs, cn)) Vf.at(c) += w * p.m / rhoM, Hf.at(c) += w * p.m * p.h;
+            if (owned(c, cs, cn)) Vf.at(c) += w * p.m / rhoM, Hf.at(c) += w * p.m * p.h, around_[pi] += w * Af.at(c);
             for (int d = 0; d < 3; ++d) {  // the face whose control volume holds the sample: floor(S/ns + 1/2)
               PetscInt f[3] = {c[0], c[1], c[2]};
               const PetscInt two = 2 * S[d] + 1 + ns;  // the sample's centre plus half a cell, in half samples
@@ -116,8 +120,10 @@ PetscErrorCode ParticleMelt::Share(const std::vector<Melted> &all) {
     std::sort(faces_[pi].begin(), faces_[pi].end());
     faces_[pi].erase(std::unique(faces_[pi].begin(), faces_[pi].end()), faces_[pi].end());
   }
+  PetscCall(sg.RestoreGlobal(3, gas_, &Af));
   PetscCall(sg.RestoreGlobal(3, enthalpy_, &Hf));
   PetscCall(sg.RestoreGlobal(3, volume_, &Vf));
+  PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, around_.data(), (PetscMPIInt)around_.size(), MPIU_REAL, MPIU_SUM, g.Comm()));
   PetscFunctionReturn(0);
 }
 
@@ -162,7 +168,46 @@ PetscErrorCode ParticleMelt::ShareMomentum(const std::vector<Melted> &all) {
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode ParticleMelt::Melt() {
+PetscErrorCode ParticleMelt::OpenLog(const std::string &dir, bool restarting) {
+  PetscMPIInt rank;
+  int         ok = 1;
+
+  PetscFunctionBeginUser;
+  MPI_Comm comm = flow_->Staggered().Base().Comm();
+  PetscCallMPI(MPI_Comm_rank(comm, &rank));
+  if (rank == 0) {
+    const std::string path = dir + "/melted_particles.csv";
+    FILE             *old  = restarting ? std::fopen(path.c_str(), "r") : nullptr;
+    if (old) std::fclose(old);
+    log_ = std::fopen(path.c_str(), old ? "a" : "w");
+    ok   = log_ != nullptr;
+    if (log_ && !old)
+      std::fprintf(log_, "time_s,id,type,x_m,y_m,z_m,vx_m_s,vy_m_s,vz_m_s,radius_m,mass_kg,temperature_K,metal_around,absorbed_J,exchanged_J,enthalpy_change_J,sensible_J,latent_J,account_error,spin_energy_J\n");
+  }
+  PetscCallMPI(MPI_Bcast(&ok, 1, MPI_INT, 0, comm));
+  if (!ok) VofdemInputError(comm, "option -output_dir: cannot write melted_particles.csv in '%s'", dir.c_str());
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode ParticleMelt::WriteLog(const std::vector<Melted> &all, PetscReal time, PetscReal T0) {
+  PetscFunctionBeginUser;
+  if (!log_) PetscFunctionReturn(0);
+  for (size_t k = 0; k < all.size(); ++k) {
+    const Melted          &p  = all[k];
+    const ThermalMaterial &mt = materials_[(size_t)p.type];
+    const PetscReal        h0 = mt.Enthalpy(T0);
+    const PetscReal latent = p.m * mt.latentHeat * mt.MeltFraction(p.T), change = p.m * (p.h - h0);
+    const PetscReal error  = std::fabs(change - p.absorbed + p.exchanged) / std::max(std::fabs(p.m * p.h), (PetscReal)PETSC_MIN_REAL);
+    const PetscReal spin   = 0.2 * p.m * p.r * p.r * (p.w[0] * p.w[0] + p.w[1] * p.w[1] + p.w[2] * p.w[2]);
+    std::fprintf(log_, "%.10e,%lld,%d,%.10e,%.10e,%.10e,%.8e,%.8e,%.8e,%.8e,%.8e,%.8f,%.6e,%.12e,%.12e,%.12e,%.12e,%.12e,%.3e,%.6e\n", (double)time, (long long)p.id, (int)p.type, (double)p.x[0],
+                 (double)p.x[1], (double)p.x[2], (double)p.v[0], (double)p.v[1], (double)p.v[2], (double)p.r, (double)p.m, (double)p.T, (double)around_[k], (double)p.absorbed,
+                 (double)p.exchanged, (double)change, (double)(change - latent), (double)latent, (double)error, (double)spin);
+  }
+  std::fflush(log_);  // a run killed now loses none of it
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode ParticleMelt::Melt(PetscReal time, PetscReal T0) {
   ParticleArrays a;
   MPI_Comm       comm = flow_->Staggered().Base().Comm();
 
@@ -174,11 +219,12 @@ PetscErrorCode ParticleMelt::Melt() {
   std::vector<PetscReal> H, vol, xs;
   PetscCall(sw.GetArrays(&a));
   for (PetscInt p = 0; p < a.n; ++p)
-    if (a.temperature[p] > 0 && MeltsAt(a.temperature[p])) {
+    if (a.temperature[p] > 0 && MeltsAt(a.temperature[p], a.type[p])) {
       local.push_back(p);
       Melted m;
       for (int d = 0; d < 3; ++d) m.x[d] = a.x[3 * p + d], m.v[d] = a.v[3 * p + d], m.w[d] = a.omega[3 * p + d];
-      m.r = a.radius[p], m.m = a.mass[p], m.h = a.enthalpy[p];
+      m.r = a.radius[p], m.m = a.mass[p], m.h = a.enthalpy[p], m.T = a.temperature[p], m.id = (PetscReal)a.id[p];
+      m.absorbed = a.heatAbsorbed[p], m.exchanged = a.heatExchanged[p], m.type = (PetscReal)a.type[p];
       mine.push_back(m);
       H.push_back(coupling_->KernelWidth(2 * m.r));
       vol.push_back(4.0 / 3.0 * PETSC_PI * m.r * m.r * m.r);
@@ -268,6 +314,7 @@ PetscErrorCode ParticleMelt::Melt() {
   summary_.energyError   = std::fabs(energy1 - energy0) / std::max(std::fabs(energy0), std::fabs(melt[1]));
   summary_.momentumError = pnorm > 0 ? perr / pnorm : 0;
   summary_.melted += (PetscInt64)all.size(), summary_.mass += melt[2], summary_.spin += spin;
+  PetscCall(WriteLog(all, time, T0));
   if (summary_.volumeError > 1e-12 || summary_.energyError > 1e-12 || summary_.momentumError > 1e-12)
     VofdemInputError(comm, "coupling: melting %d particle(s) broke the books (physics.md P12): metal volume %.2e, energy %.2e, momentum %.2e (relative; tolerance 1e-12)", (int)all.size(),
                      (double)summary_.volumeError, (double)summary_.energyError, (double)summary_.momentumError);
@@ -276,6 +323,8 @@ PetscErrorCode ParticleMelt::Melt() {
 
 PetscErrorCode ParticleMelt::Destroy() {
   PetscFunctionBeginUser;
+  if (log_) std::fclose(log_);
+  log_ = nullptr;
   for (Vec *v : {&volume_, &enthalpy_, &kernel_, &before_, &gas_, &cellLocal_, &rhoLocal_}) PetscCall(VecDestroy(v));
   for (int d = 0; d < 3; ++d) {
     PetscCall(VecDestroy(&massBefore_[d]));

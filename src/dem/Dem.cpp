@@ -102,6 +102,8 @@ PetscErrorCode Dem::SetFromOptions(MPI_Comm comm) {
     if (wallYoungs_ != -1 && !(wallYoungs_ > 0)) VofdemInputError(comm, "option -dem_wall_youngs_modulus: must be positive (or -1 for the particles')");
     if (wallPoisson_ != -1 && !(wallPoisson_ > -1 && wallPoisson_ <= 0.5)) VofdemInputError(comm, "option -dem_wall_poisson_ratio: must be in (-1, 0.5] (or -1 for the particles')");
     if (wallFriction_ != -1 && !(wallFriction_ >= 0)) VofdemInputError(comm, "option -dem_wall_friction: must be non-negative (or -1 for the particles')");
+    PetscCall(opt.Real("-wall_restitution", "Coefficient of restitution against the walls (default -1: each particle type's)", "-", &wallRestitution_));
+    if (wallRestitution_ != -1 && !(wallRestitution_ > 0 && wallRestitution_ <= 1)) VofdemInputError(comm, "option -dem_wall_restitution: must be in (0, 1] (or -1 for the particles')");
     skin_ = 0.4 * radius_;
     PetscCall(opt.Real("-skin", "Verlet skin: lists are rebuilt and particles migrate once one has moved half of it (default: 0.2 diameters)", "m", &skin_, RealRange::Positive()));
     PetscCall(sort_.SetFromOptions(opt));  // -dem_sort_every (MortonOrder.cpp)
@@ -184,7 +186,7 @@ PetscErrorCode Dem::SetUp(Grid &grid, const PetscReal gravity[3], std::uint64_t 
   grid_ = &grid;
   std::copy(gravity, gravity + 3, gravity_);
   WallMaterial wall;
-  wall.youngs = wallYoungs_, wall.poisson = wallPoisson_, wall.friction = wallFriction_, wall.surfaceEnergy = wallSurfaceEnergy_;
+  wall.youngs = wallYoungs_, wall.poisson = wallPoisson_, wall.friction = wallFriction_, wall.surfaceEnergy = wallSurfaceEnergy_, wall.restitution = wallRestitution_;
   table_.Build(types_, pairValues_, wall, linear_, linearKtRatio_, limitForce_, jkr_, rollingParams_);
   // The single-type fast path of the contact loop binds these.
   pair_          = table_.Pair(0);

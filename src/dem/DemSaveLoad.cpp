@@ -139,8 +139,8 @@ PetscErrorCode Dem::ArchiveState(RankArchive &ar, SavedState &st) {
   }
   // Appended 2026-12-04: the particles' enthalpy and temperature (P11; empty without a heat coupling; files
   // written before them load without them, which a run with particle heat refuses in Load).
-  if (ar.HasMore())
-    for (int f = 0; f < kNumHeatFields; ++f) PetscCall(ar.Array((std::string("swarm_") + kHeatFields[f].name).c_str(), &st.heat[f], kHeatFields[f].width));
+  // Appended 2026-12-07: each particle's energy account (heat_absorbed, heat_exchanged); older files load it as 0.
+  for (int f = 0; f < kNumHeatFields && ar.HasMore(); ++f) PetscCall(ar.Array((std::string("swarm_") + kHeatFields[f].name).c_str(), &st.heat[f], kHeatFields[f].width));
   PetscFunctionReturn(0);
 }
 
@@ -372,7 +372,8 @@ PetscErrorCode Dem::Load(PetscViewer viewer) {
       PetscCheck(st.heat[f].empty(), PETSC_COMM_SELF, PETSC_ERR_FILE_UNEXPECTED, "checkpoint: the particles' field %s holds their heat, but this run's particles exchange none", kHeatFields[f].name);
       continue;
     }
-    PetscCheck(held || saved == 0, PETSC_COMM_SELF, PETSC_ERR_FILE_UNEXPECTED, "checkpoint: it holds no particle %s (written without particle heat); this run's particles exchange heat (-physics with dem and energy)",
+    if (!held && f >= kNumHeatState) st.heat[f].assign(saved, 0);  // a file from before the account: it starts here
+    else PetscCheck(held || saved == 0, PETSC_COMM_SELF, PETSC_ERR_FILE_UNEXPECTED, "checkpoint: it holds no particle %s (written without particle heat); this run's particles exchange heat (-physics with dem and energy)",
                kHeatFields[f].name);
     for (size_t j = 0; j < keep.size(); ++j) st.heat[f][j] = st.heat[f][keep[j]];
     PetscInt bsOut;

@@ -141,10 +141,10 @@ void MaterialTable::Build(const std::vector<DemMaterial> &types, const std::vect
   for (PetscInt t = 0; t < nt_; ++t) {
     const DemMaterial &a = types[t];
     const PetscReal    E = wall.youngs > 0 ? wall.youngs : a.youngs, nu = wall.poisson > -1 ? wall.poisson : a.poisson;
-    const PetscReal    mu = wall.friction >= 0 ? wall.friction : a.friction;
+    const PetscReal    mu = wall.friction >= 0 ? wall.friction : a.friction, e = wall.restitution >= 0 ? wall.restitution : a.restitution;
     const PetscReal    w  = jkr ? a.surfaceEnergy + (wall.surfaceEnergy >= 0 ? wall.surfaceEnergy : a.surfaceEnergy) : 0;
-    wall_[t]        = linear ? hertz::MakeLinearMaterial(a.restitution, mu, linearKtRatio, limitForce)
-                             : hertz::MakePairMaterial(a.youngs, a.poisson, E, nu, a.restitution, mu, limitForce, w);
+    wall_[t]        = linear ? hertz::MakeLinearMaterial(e, mu, linearKtRatio, limitForce)
+                             : hertz::MakePairMaterial(a.youngs, a.poisson, E, nu, e, mu, limitForce, w);
     wallRolling_[t] = {a.rollingFriction, rollingModel.eta, rollingModel.load, rollingModel.twist};
   }
 }

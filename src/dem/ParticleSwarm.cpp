@@ -92,10 +92,12 @@ PetscErrorCode ParticleSwarm::RefreshCache() const {
     PetscCall(FieldAddress(swarm_, field::fluidRotation, &c.fluidRotation));
     PetscCall(FieldAddress(swarm_, field::fluidViscosity, &c.fluidViscosity));
   }
-  c.enthalpy = c.temperature = nullptr;
+  c.enthalpy = c.temperature = c.heatAbsorbed = c.heatExchanged = nullptr;
   if (heatRegistered_) {
     PetscCall(FieldAddress(swarm_, field::enthalpy, &c.enthalpy));
     PetscCall(FieldAddress(swarm_, field::temperature, &c.temperature));
+    PetscCall(FieldAddress(swarm_, field::heatAbsorbed, &c.heatAbsorbed));
+    PetscCall(FieldAddress(swarm_, field::heatExchanged, &c.heatExchanged));
   }
   cacheN_     = c.n;
   cacheValid_ = true;

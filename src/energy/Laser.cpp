@@ -30,6 +30,7 @@ PetscErrorCode Laser::SetFromOptions(const Grid &grid, PetscReal absorptivityDef
     PetscCall(opt.RealList("-path", "Way points of the beam centre x0,y0,x1,y1,... (one point: a fixed beam)", "m", &points_, 2000, RealRange::Any(), &pathSet));
     PetscCall(opt.Real("-speed", "Speed of the beam along its path", "m/s", &speed_, RealRange::NonNegative()));
     PetscCall(opt.Real("-start_time", "Time the beam switches on", "s", &start_, RealRange::NonNegative()));
+    PetscCall(opt.Real("-stop_time", "Time the beam switches off (default: never)", "s", &stop_, RealRange::Positive()));
     PetscCall(opt.Real("-ramp_time", "The power rises linearly from 0 to P over this time after the start", "s", &ramp_, RealRange::NonNegative()));
     PetscCall(opt.NameList("-deposition",
                            "Where the absorbed power goes: first_interface (the first metal of each column takes eta of what reaches it) or gradient (seed 000: eta I |grad alpha| in every cell)",
@@ -39,6 +40,7 @@ PetscErrorCode Laser::SetFromOptions(const Grid &grid, PetscReal absorptivityDef
   PetscOptionsEnd();
   deposition_ = deposition[0] == "gradient" ? LaserDeposition::Gradient : LaserDeposition::FirstInterface;
   if (power_ == 0) PetscFunctionReturn(0);
+  if (!(stop_ > start_)) VofdemInputError(comm, "option -laser_stop_time: %g s is not after -laser_start_time %g s", (double)stop_, (double)start_);
   if (!(radius_ > 0)) VofdemInputError(comm, "option -laser_radius: a laser with -laser_power %g W needs a positive radius", (double)power_);
   if (!(eta_ >= 0 && eta_ <= 1))
     VofdemInputError(comm, "option -laser_absorptivity: not given, and the metal's material file gives no absorptivity (a value in [0, 1])");
@@ -71,7 +73,7 @@ void Laser::Centre(PetscReal t, PetscReal *x, PetscReal *y) const {
 }
 
 PetscReal Laser::Power(PetscReal t) const {
-  if (power_ == 0 || t < start_) return 0;
+  if (power_ == 0 || t < start_ || t >= stop_) return 0;
   if (points_.size() > 2) {  // off after the end of the path
     PetscReal length = 0;
     for (size_t p = 2; p < points_.size(); p += 2) length += std::hypot(points_[p] - points_[p - 2], points_[p + 1] - points_[p - 1]);
@@ -92,8 +94,9 @@ PetscReal Laser::FootprintPower(PetscReal t, PetscReal x0, PetscReal x1, PetscRe
 PetscErrorCode Laser::View(PetscViewer viewer) const {
   PetscFunctionBeginUser;
   if (power_ == 0) PetscFunctionReturn(0);
-  PetscCall(PetscViewerASCIIPrintf(viewer, "laser: P %g W, R %g m (1/e^2), absorptivity %g, %d way point(s) at %g m/s from t = %g s (ramp %g s); deposition %s; column powers exact (erf)\n",
+  PetscCall(PetscViewerASCIIPrintf(viewer, "laser: P %g W, R %g m (1/e^2), absorptivity %g, %d way point(s) at %g m/s from t = %g s (ramp %g s)%s; deposition %s; column powers exact (erf)\n",
                                    (double)power_, (double)radius_, (double)eta_, (int)(points_.size() / 2), (double)speed_, (double)start_, (double)ramp_,
+                                   stop_ < PETSC_MAX_REAL ? (" until t = " + std::to_string((double)stop_) + " s").c_str() : "",
                                    deposition_ == LaserDeposition::Gradient ? "gradient (seed 000: eta I |grad alpha|)" : "first metal interface of each column"));
   PetscFunctionReturn(0);
 }

@@ -201,7 +201,7 @@ PetscErrorCode Checkpoint::FindLatest(std::string *path) {
 
 PetscErrorCode Checkpoint::Restore(Simulation &sim) {
   PetscMPIInt rank, size;
-  std::string path = restart_, options, why;
+  std::string path = restart_, options, why, changed;
   PetscViewer viewer;
 
   PetscFunctionBeginUser;
@@ -219,6 +219,7 @@ PetscErrorCode Checkpoint::Restore(Simulation &sim) {
     if (ok && h.physics != sim.PhysicsDescription()) ok = false, why = "it is of physics " + h.physics + ", this run " + sim.PhysicsDescription();
     if (ok && !FirstDifference(h.options, options).empty()) ok = false, why = "another scene: " + FirstDifference(h.options, options);
     if (ok) why = std::to_string(h.ranks);
+    if (ok) changed = ChangedAtRestart(h.options, options);
   }
   PetscCall(Agree(comm_, &ok, &why));
   if (!ok) VofdemInputError(comm_, "option -restart: '%s': %s", path.c_str(), why.c_str());
@@ -229,6 +230,7 @@ PetscErrorCode Checkpoint::Restore(Simulation &sim) {
   lastStep_ = sim.StepNumber();
   PetscCall(PetscPrintf(comm_, "vofdem: restarted from %s at step %" PetscInt_FMT ", t = %.17g s (written on %d rank%s)\n", path.c_str(), sim.StepNumber(),
                         (double)sim.Time(), savedRanks, savedRanks > 1 ? "s" : ""));
+  if (!changed.empty()) PetscCall(PetscPrintf(comm_, "vofdem: the restart changes %s (from t = %.17g s on)\n", changed.c_str(), (double)sim.Time()));
   PetscFunctionReturn(0);
 }
 

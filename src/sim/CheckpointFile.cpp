@@ -23,6 +23,17 @@ const char *const kFreeExact[] = {"-restart", "-max_steps", "-final_time", "-out
 // -analysis_*: the powder-bed analysis reads the particles at the end and changes nothing in the run.
 const char *const kFreePrefix[] = {"-checkpoint_", "-monitor_", "-log_", "-options_", "-malloc", "-memory_", "-analysis_"};
 
+// Options that may change at a restart, deliberately changing what is computed from then on (docs/modules/checkpoint.md):
+// the laser's power, path and timing (a long track continued with another power or path). The beam's place and power
+// at time t follow the new values as if they had held from the start.
+const char *const kChangeable[] = {"-laser_power", "-laser_path", "-laser_speed", "-laser_start_time", "-laser_stop_time", "-laser_ramp_time"};
+
+bool IsChangeable(const std::string &name) {
+  for (const char *e : kChangeable)
+    if (name == e) return true;
+  return false;
+}
+
 bool IsFree(const std::string &name) {
   for (const char *e : kFreeExact)
     if (name == e) return true;
@@ -183,8 +194,10 @@ std::string FirstDifference(const std::string &saved, const std::string &current
   std::string        la, lb;
   // A checkpoint of an older vofdem may list options that are free now (-analysis_* since 2026-11-27).
   auto next = [](std::istringstream &in, std::string *line) {
-    while (std::getline(in, *line))
-      if (!IsFree(line->substr(0, line->find(' ')))) return true;
+    while (std::getline(in, *line)) {
+      const std::string name = line->substr(0, line->find(' '));
+      if (!IsFree(name) && !IsChangeable(name)) return true;
+    }
     return false;
   };
   while (true) {
@@ -198,6 +211,31 @@ std::string FirstDifference(const std::string &saved, const std::string &current
       return "'" + lb + "' in this run, not in the checkpoint";
     return "'" + la + "' in the checkpoint, '" + lb + "' in this run";
   }
+}
+
+std::string ChangedAtRestart(const std::string &saved, const std::string &current) {
+  auto values = [](const std::string &text) {
+    std::istringstream                               in(text);
+    std::string                                      line;
+    std::vector<std::pair<std::string, std::string>> kv;
+    while (std::getline(in, line)) {
+      const size_t      cut  = line.find(' ');
+      const std::string name = line.substr(0, cut);
+      if (IsChangeable(name)) kv.push_back({name, cut == std::string::npos ? "" : Canonical(line).substr(cut + 1)});
+    }
+    return kv;
+  };
+  const auto  a = values(saved), b = values(current);
+  std::string out;
+  for (const char *name : kChangeable) {
+    std::string va = "(not given)", vb = "(not given)";
+    for (const auto &kv : a)
+      if (kv.first == name) va = kv.second;
+    for (const auto &kv : b)
+      if (kv.first == name) vb = kv.second;
+    if (va != vb) out += std::string(out.empty() ? "" : "; ") + name + " " + va + " -> " + vb;
+  }
+  return out;
 }
 
 bool SealCheckpoint(const std::string &path, std::string *why) {

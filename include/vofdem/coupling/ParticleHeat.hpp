@@ -26,6 +26,7 @@
 
 #include "vofdem/coupling/Coupling.hpp"
 #include "vofdem/coupling/ParticleBeam.hpp"
+#include "vofdem/coupling/ParticleMaterials.hpp"
 #include "vofdem/coupling/ParticleMelt.hpp"
 #include "vofdem/energy/Energy.hpp"
 
@@ -47,9 +48,12 @@ struct ParticleHeatSummary {
 class ParticleHeat {
 public:
   PetscErrorCode SetFromOptions(MPI_Comm comm);
+  PetscErrorCode SetTypeOptions(const std::vector<std::string> &typeNames) { return ReadParticleTypeHeat(comm_, typeNames, &types_); }  // the DEM's types
   // After the coupling's and the energy's set-up: the particles take -coupling_heat_initial_temperature.
   PetscErrorCode SetUp(Coupling &coupling, Flow &flow, Vof &vof, Dem &dem, Energy &energy);
-  PetscErrorCode Melt();  // before a step: the particles at their liquidus into the melt (ParticleMelt.hpp; -coupling_heat_melt)
+  PetscErrorCode Melt(PetscReal time);  // before a step: the particles at their liquidus into the melt (ParticleMelt.hpp; -coupling_heat_melt)
+  // The melt log (melted_particles.csv, ParticleMelt.hpp) in the run's output folder; a restart appends to it.
+  PetscErrorCode SetOutputDir(const std::string &dir, bool restarting) { return melting_ ? melt_.OpenLog(dir, restarting) : 0; }
   const MeltSummary &MeltBooks() const { return melt_.Summary(); }
   PetscErrorCode Exchange(PetscReal time, PetscReal dt);  // the step from time to time + dt: particles' enthalpy, the cells' source
   PetscErrorCode Summarize(ParticleHeatSummary *s) const;  // collective
@@ -58,7 +62,8 @@ public:
   PetscErrorCode Save(PetscViewer viewer) const;
   PetscErrorCode Load(PetscViewer viewer);
   PetscErrorCode Destroy();
-  const ThermalMaterial &Material() const { return material_; }
+  const ThermalMaterial &Material() const { return material_; }  // the common one; per type: Materials()
+  const std::vector<ThermalMaterial> &Materials() const { return materials_; }
 
 private:
   PetscErrorCode StartNew(ParticleArrays &a);  // particles at 0 K (new): the initial temperature; brought_ grows
@@ -72,7 +77,9 @@ private:
   // options
   PetscReal       T0_ = 300;  // K
   std::string     materialName_ = "energy_metal";  // the energy module's metal (-energy_metal and its options), or a file
-  ThermalMaterial material_;
+  ThermalMaterial material_;                 // the common material (-coupling_heat_material)
+  std::vector<ParticleTypeHeat> types_;      // -coupling_heat_type_<name>_*
+  std::vector<ThermalMaterial>  materials_;  // per DEM type
   PetscReal       emissivity_ = -1;  // < 0: the material's
   PetscReal       absorptivity_ = -1;  // of the laser at the particles' surface (< 0: the material's, else the laser's)
   PetscInt        raysPerCell_ = 0;  // -coupling_heat_beam_rays (0: automatic)

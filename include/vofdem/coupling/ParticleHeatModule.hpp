@@ -27,6 +27,8 @@ public:
   bool           CheapSetUp() const override { return false; }  // after the particles and the coupling
   PetscErrorCode SetUp(ModuleSet &modules, const RunContext &run) override;
 
+  PetscErrorCode SetOutputDir(const std::string &dir) override { return dir.empty() ? 0 : heat_.SetOutputDir(dir, restarting_); }
+
   std::vector<Stage> Stages() const override { return {Stage::Prepare, Stage::Exchange}; }  // melting (P12), then the exchange
   PetscErrorCode     Run(Stage stage, StepState &step) override;
 
@@ -44,6 +46,7 @@ private:
   DemModule      *dem_      = nullptr;
   FlowModule     *flow_     = nullptr;
   VofModule      *vof_      = nullptr;
+  bool            restarting_ = false;
 };
 
 void RegisterParticleHeatModule(ModuleRegistry &registry);  // from the coupling's RegisterModule_coupling

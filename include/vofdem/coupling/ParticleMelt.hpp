@@ -18,6 +18,12 @@
 //    its spin energy I w^2/2, which the melt cannot carry, is reported;
 //  - it leaves the swarm through the DEM's deletion books (Dem::RemoveParticles).
 // After each conversion the books are checked: metal volume, energy and momentum to 1e-12 (relative), else an error.
+// The melt log (OpenLog: melted_particles.csv in the output folder, one row per melted particle, flushed at once; a
+// restart appends, so a row may repeat there: the last row of an id counts) gives where and when each particle melted,
+// its velocity, the metal it touched (the sphere's volume-weighted alpha before its own metal came: 0 in flight, > 0
+// on or in the melt) and its energy account since it entered: the laser it absorbed, the heat it gave the fluid, its
+// sensible and latent heat m (h - h_0) split by f_l(T), and the account's closure
+// |m (h - h_0) - absorbed + exchanged| / (m |h|).
 #pragma once
 
 #include "vofdem/coupling/Coupling.hpp"
@@ -25,6 +31,8 @@
 #include "vofdem/vof/Vof.hpp"
 
 #include <array>
+#include <cstdio>
+#include <string>
 #include <vector>
 
 namespace vofdem {
@@ -38,17 +46,21 @@ struct MeltSummary {
 
 class ParticleMelt {
 public:
-  PetscErrorCode SetUp(Coupling &coupling, Flow &flow, Vof &vof, Dem &dem, Energy &energy, const ThermalMaterial &particles);
-  PetscErrorCode Melt();  // collective; the particles' enthalpy and temperature are the swarm's
+  PetscErrorCode SetUp(Coupling &coupling, Flow &flow, Vof &vof, Dem &dem, Energy &energy, const std::vector<ThermalMaterial> &particles);  // per DEM type
+  // collective; the particles' enthalpy and temperature are the swarm's; T0 is their initial temperature (the account's
+  // h_0), time the step's start (the log's)
+  PetscErrorCode Melt(PetscReal time, PetscReal T0);
+  PetscErrorCode OpenLog(const std::string &dir, bool restarting);  // collective
   const MeltSummary &Summary() const { return summary_; }
   MeltSummary       &State() { return summary_; }  // the counters a checkpoint carries
   PetscErrorCode     Destroy();
 
 private:
   struct Melted {  // one particle's data, gathered on every rank
-    PetscReal x[3], v[3], w[3], r, m, h;
+    PetscReal x[3], v[3], w[3], r, m, h, T, id, absorbed, exchanged, type;
   };
-  bool           MeltsAt(PetscReal T) const;
+  PetscErrorCode WriteLog(const std::vector<Melted> &all, PetscReal time, PetscReal T0);
+  bool           MeltsAt(PetscReal T, PetscInt type) const;
   PetscErrorCode FaceMasses(Vec M[3]);  // (eps rho)_f V of the owned faces (0 on walls)
   // The sphere's shares over the lattice of the box: into the owned cells (volume, enthalpy); the owned faces whose
   // control volumes it reaches into faces_ (ShareMomentum).
@@ -60,12 +72,14 @@ private:
   Vof       *vof_      = nullptr;
   Dem       *dem_      = nullptr;
   Energy    *energy_   = nullptr;
-  ThermalMaterial material_;
+  std::vector<ThermalMaterial> materials_;  // per DEM type
   PetscInt   samples_ = 16;  // per cell edge
   Vec        volume_ = nullptr, enthalpy_ = nullptr, kernel_ = nullptr, before_ = nullptr, gas_ = nullptr;  // the flow's cells
   Vec        massBefore_[3] = {nullptr, nullptr, nullptr}, massAfter_[3] = {nullptr, nullptr, nullptr}, momentum_[3] = {nullptr, nullptr, nullptr};
   Vec        cellLocal_ = nullptr, rhoLocal_ = nullptr;
   MeltSummary summary_;
+  std::vector<PetscReal> around_;  // per melted particle: its volume-weighted alpha before the conversion
+  FILE                  *log_ = nullptr;  // rank 0
   std::vector<std::vector<std::array<PetscInt, 4>>> faces_;  // per melted particle: (component, face i, j, k) it reaches, owned
 };
 

@@ -227,7 +227,7 @@ private:
   std::vector<PairValues>  pairValues_;  // nt*nt, given pair values (< 0: mixed)
   MaterialTable            table_;
   PetscInt                 fillType_ = 0;  // -dem_fill_type
-  PetscReal     wallYoungs_ = -1, wallPoisson_ = -1, wallFriction_ = -1;  // default: the particles'
+  PetscReal     wallYoungs_ = -1, wallPoisson_ = -1, wallFriction_ = -1, wallRestitution_ = -1;  // default: the particles'
   PetscBool     limitForce_ = PETSC_FALSE;
   hertz::Rolling       rolling_ = hertz::Rolling::None;
   int                  normalRow_ = 0, cohesionRow_ = 0, rollingRow_ = 0;  // rows of ContactLawTable.hpp (hertz, none, none)

@@ -42,7 +42,7 @@ struct PairValues {
 };
 
 struct WallMaterial {
-  PetscReal youngs = -1, poisson = -1, friction = -1, surfaceEnergy = -1;  // < 0: the particle type's
+  PetscReal youngs = -1, poisson = -1, friction = -1, surfaceEnergy = -1, restitution = -1;  // < 0: the particle type's
 };
 
 class MaterialTable {

@@ -4,7 +4,7 @@
 // exact integral of I over the column's footprint (a product of differences of erf), so the columns of a
 // box that holds the beam sum to P to round-off whatever R/h and wherever the centre lies.
 // Options, prefix laser_: -laser_power, -laser_radius, -laser_absorptivity, -laser_path, -laser_speed,
-// -laser_start_time, -laser_ramp_time, -laser_deposition, -laser_step_fraction.
+// -laser_start_time, -laser_stop_time, -laser_ramp_time, -laser_deposition, -laser_step_fraction.
 #pragma once
 
 #include "vofdem/grid/Grid.hpp"
@@ -36,7 +36,7 @@ public:
   PetscErrorCode View(PetscViewer viewer) const;
 
 private:
-  PetscReal              power_ = 0, radius_ = 0, eta_ = -1, speed_ = 0, start_ = 0, ramp_ = 0, stepFraction_ = 0.25;
+  PetscReal              power_ = 0, radius_ = 0, eta_ = -1, speed_ = 0, start_ = 0, stop_ = PETSC_MAX_REAL, ramp_ = 0, stepFraction_ = 0.25;
   std::vector<PetscReal> points_;  // x0, y0, x1, y1, ... (m)
   LaserDeposition        deposition_ = LaserDeposition::FirstInterface;
 };

@@ -43,7 +43,9 @@ PetscErrorCode RunDefiningOptions(std::string *text);
 
 // The first line where two RunDefiningOptions() texts differ, as "A (in the checkpoint) against B
 // (in this run)"; empty when they are equal.
-std::string FirstDifference(const std::string &saved, const std::string &current);
+std::string FirstDifference(const std::string &saved, const std::string &current);  // ignores the options a restart may change
+// The options a restart may change (the laser's power, path and timing) that differ: "-laser_power 300 -> 500; ...", or "".
+std::string ChangedAtRestart(const std::string &saved, const std::string &current);
 
 // What ReadCheckpointHeader returns.
 struct CheckpointHeader {
