@@ -252,6 +252,8 @@ add_test(NAME energy/particle_beam COMMAND ${VOFDEM_PYTHON} ${CMAKE_CURRENT_SOUR
 set_tests_properties(energy/particle_beam PROPERTIES LABELS "quick;energy;coupling" PROCESSORS 2 TIMEOUT 300)
 add_test(NAME energy/particle_melt COMMAND ${VOFDEM_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/test/energy/test_particle_melt.py $<TARGET_FILE:vofdem_app>)
 set_tests_properties(energy/particle_melt PROPERTIES LABELS "quick;energy;coupling" PROCESSORS 2 TIMEOUT 300)
+add_test(NAME energy/contact_conduction COMMAND ${VOFDEM_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/test/energy/test_contact_conduction.py $<TARGET_FILE:vofdem_app>)
+set_tests_properties(energy/contact_conduction PROPERTIES LABELS "quick;energy;coupling" PROCESSORS 2 TIMEOUT 300)
 add_test(NAME energy/four_particles COMMAND ${VOFDEM_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/test/energy/test_four_particles.py $<TARGET_FILE:vofdem_app>)
 set_tests_properties(energy/four_particles PROPERTIES LABELS "quick;energy;coupling" PROCESSORS 2 TIMEOUT 900)
 add_test(NAME energy/deposition_restart COMMAND ${VOFDEM_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/test/energy/test_deposition_restart.py $<TARGET_FILE:vofdem_app>)
@@ -272,6 +274,8 @@ vofdem_bad_input(coupling_heat_deposit_unknown "option -coupling_heat_deposit: u
 # Deposition (issue 52): a particle type without cp or melting data, a melt criterion above the boiling point, no beam radius.
 set(VOFDEM_DEPOSITION -options_file_yaml ${CMAKE_CURRENT_SOURCE_DIR}/config/scenes/four-particles-two-heats.yaml -dem_particles_file ${CMAKE_CURRENT_SOURCE_DIR}/config/scenes/four-particles-two-types.csv -grid_cells 20,20,16 -dem_output_every 0 -flow_output_every 0 -max_steps 1)
 vofdem_bad_input(coupling_heat_type_no_cp "option -coupling_heat_type_left_material: the particles of type left have no positive specific_heat" ${VOFDEM_DEPOSITION} -coupling_heat_type_left_material ${CMAKE_CURRENT_SOURCE_DIR}/test/energy/particle_no_cp.yaml)
+vofdem_bad_input(coupling_heat_type_no_k "option -coupling_heat_type_left_material: the particles of type left have no positive conductivity .* for their contact conduction" ${VOFDEM_DEPOSITION} -coupling_heat_type_left_material ${CMAKE_CURRENT_SOURCE_DIR}/test/energy/particle_no_k.yaml)
+vofdem_bad_input(coupling_heat_type_initial_negative "option -coupling_heat_type_right_initial_temperature: -3\\.? K is not positive" ${VOFDEM_DEPOSITION} -coupling_heat_type_right_initial_temperature -3)
 vofdem_bad_input(coupling_heat_type_cp_negative "option -coupling_heat_type_left_specific_heat: -5\\.? J/\\(kg K\\) is not positive" ${VOFDEM_DEPOSITION} -coupling_heat_type_left_specific_heat -5)
 vofdem_bad_input(coupling_heat_type_unknown "unknown or unused option -coupling_heat_type_middle_specific_heat" ${VOFDEM_DEPOSITION} -coupling_heat_type_middle_specific_heat 500)
 vofdem_bad_input(coupling_heat_melt_above_boiling "option -coupling_heat_melt: the particles of type left would melt at their liquidus 1609\\.? K, not below their boiling point 1600\\.? K" ${VOFDEM_DEPOSITION} -energy_metal_boiling_point 1600)

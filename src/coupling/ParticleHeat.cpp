@@ -4,7 +4,6 @@
 #include "vofdem/base/Options.hpp"
 #include "vofdem/base/Runtime.hpp"
 #include "vofdem/coupling/HeatExchange.hpp"
-#include "vofdem/io/MaterialFile.hpp"
 
 #include <petscviewerhdf5.h>
 
@@ -46,6 +45,7 @@ PetscErrorCode ParticleHeat::SetFromOptions(MPI_Comm comm) {
     if (absorptivity_ != -1 && (absorptivity_ < 0 || absorptivity_ > 1)) VofdemInputError(comm, "option -coupling_heat_absorptivity: %g is out of range [0, 1]", (double)absorptivity_);
     PetscCall(opt.Int("-beam_rays", "Rays of the laser per cell edge for the particles' share (0: a ray at most a sixteenth of the smallest particle radius and of the beam radius; at most ~4e6 rays)", &raysPerCell_, 0));
     PetscCall(opt.Bool("-melt", "Particles that reach their liquidus join the melt (docs/physics.md P12: their volume, momentum and enthalpy into the cells, out of the swarm)", &melting_));
+    PetscCall(opt.Bool("-contact_conduction", "Heat through the contacts of touching particles, 4 k_i k_j/(k_i + k_j) sqrt(pi a^2) (T_j - T_i) with the contact radius a (P11; ContactConduction.hpp)", &conduction_));
     PetscCall(opt.Bool("-radiation", "Radiation between each particle and the fluid temperature it reads, e sigma (Tbar^4 - T^4) (P11)", &radiation_));
     std::vector<std::string> deposit = {capacityDeposit_ ? "capacity" : "volume"};
     PetscCall(opt.NameList("-deposit", "How a particle's heat is shared among the cells of its kernel: capacity (the kernel weight times the cell's heat capacity: the cells change their temperature alike) or volume (the kernel weight alone, K3)",
@@ -65,21 +65,14 @@ PetscErrorCode ParticleHeat::SetUp(Coupling &coupling, Flow &flow, Vof &vof, Dem
   // Latent heat needs the backward Euler of the moving energy (Energy::Step): there the cells gain exactly dt times the source.
   PetscCheck(energy.Moving(), comm_, PETSC_ERR_ORDER, "particle heat: the energy must move with the interface (-physics dem,flow,vof,energy)");
   if (materialName_ == "energy_metal") material_ = energy.Metal();
-  else {
-    const std::string path = FindMaterialFile(materialName_);
-    if (path.empty()) VofdemInputError(comm_, "option -coupling_heat_material: no material file '%s' (config/materials/%s.yaml or a path)", materialName_.c_str(), materialName_.c_str());
-    std::string message;
-    material_      = ThermalMaterial{};
-    material_.name = materialName_;
-    if (!ReadThermalMaterial(path, true, &material_, &message)) VofdemInputError(comm_, "option -coupling_heat_material: %s", message.c_str());
-    if (!material_.cp.Valid() || material_.cp.Min() <= 0) VofdemInputError(comm_, "option -coupling_heat_material: %s gives no positive specific_heat", path.c_str());
-    if (material_.latentHeat > 0 && !(material_.liquidus > material_.solidus && material_.solidus > 0))
-      VofdemInputError(comm_, "option -coupling_heat_material: %s has latent heat but no solidus below its liquidus", path.c_str());
-  }
+  else PetscCall(ReadParticleMaterial(comm_, "-coupling_heat_material", materialName_, &material_));  // checked per type below
   material_.referenceTemperature = energy.Metal().referenceTemperature;  // one zero of enthalpy for the whole account
   if (emissivity_ >= 0) material_.emissivity = emissivity_;
   if (!radiation_) material_.emissivity = 0;
-  PetscCall(BuildParticleMaterials(comm_, material_, types_, melting_, radiation_ ? emissivity_ : 0, &materials_));
+  initial_.assign(std::max((size_t)1, types_.size()), T0_);
+  for (size_t t = 0; t < types_.size(); ++t)
+    if (types_[t].initialTemperature > 0) initial_[t] = types_[t].initialTemperature;
+  PetscCall(BuildParticleMaterials(comm_, material_, types_, melting_, conduction_, radiation_ ? emissivity_ : 0, &materials_));
   kernelVolume_ = KernelVolume(coupling.KernelSettings());
   const StaggeredGrid &sg = flow.Staggered();
   PetscCall(DMCreateGlobalVector(sg.Cells(), &T_));
@@ -112,7 +105,7 @@ PetscErrorCode ParticleHeat::SetUp(Coupling &coupling, Flow &flow, Vof &vof, Dem
 
 PetscErrorCode ParticleHeat::Melt(PetscReal time) {
   PetscFunctionBeginUser;
-  if (melting_) PetscCall(melt_.Melt(time, T0_));
+  if (melting_) PetscCall(melt_.Melt(time, initial_));
   PetscFunctionReturn(0);
 }
 
@@ -122,8 +115,8 @@ PetscErrorCode ParticleHeat::StartNew(ParticleArrays &a) {
   PetscFunctionBeginUser;
   for (PetscInt p = 0; p < a.n; ++p)
     if (a.temperature[p] == 0) {
-      const PetscReal h0 = materials_[a.type[p]].Enthalpy(T0_);
-      a.temperature[p] = T0_, a.enthalpy[p] = h0;
+      const PetscReal T0 = initial_[a.type[p]], h0 = materials_[a.type[p]].Enthalpy(T0);
+      a.temperature[p] = T0, a.enthalpy[p] = h0;
       mine += a.mass[p] * h0;
     }
   PetscCallMPI(MPI_Allreduce(&mine, &all, 1, MPIU_REAL, MPIU_SUM, comm_));
@@ -140,6 +133,10 @@ PetscErrorCode ParticleHeat::Exchange(PetscReal time, PetscReal dt) {
   PetscCall(sw.GetArrays(&a));
   PetscCall(StartNew(a));
   const PetscInt n = a.n;
+  if (conduction_) {  // P11's contact term first, a split step (exact in energy: what one particle gains its partner loses)
+    PetscCall(contacts_.Step(comm_, *dem_, materials_, a, dt, a.heatConducted));
+    conductedPower_ = contacts_.Last().power, conductingPairs_ = contacts_.Last().contacts;
+  }
   beamPower_.assign(n, 0);
   if (beamOn_) {  // the beam at the step's end, as the energy's deposit takes it (Energy::LaserSource)
     PetscCall(beam_.Trace(time + dt, n, a.x, a.radius, beamPower_.data(), &taken_));
@@ -280,6 +277,7 @@ PetscErrorCode ParticleHeat::Summarize(ParticleHeatSummary *s) const {
   s->Tmax = any ? range[0] : 0, s->Tmin = any ? -range[1] : 0;
   s->toFluid = toFluid_, s->deposited = deposited_, s->exchanged = exchanged_, s->nusseltMax = nusseltMax_;
   s->beamAbsorbed = beamOn_ ? beam_.Absorbed() : 0, s->beamIntercepted = beamOn_ ? beam_.Intercepted() : 0;
+  s->conducted = conductedPower_, s->contacts = conductingPairs_;
   PetscFunctionReturn(0);
 }
 
@@ -291,11 +289,13 @@ PetscErrorCode ParticleHeat::View(PetscViewer viewer) const {
                                    (double)material_.solidus, (double)material_.liquidus, (double)material_.emissivity, (double)T0_, (double)kernelVolume_,
                                    gasResponse_ ? " (the fluid's response in each step)" : " (fixed fluid temperature over a step)", capacityDeposit_ ? "kernel weight x heat capacity" : "kernel weight (volume)"));
   for (size_t t = 0; t < types_.size(); ++t)
-    if (!types_[t].material.empty() || types_[t].specificHeat > 0) {
+    if (!types_[t].material.empty() || types_[t].specificHeat > 0 || types_[t].initialTemperature > 0) {
       const ThermalMaterial &m = materials_[t];
-      PetscCall(PetscViewerASCIIPrintf(viewer, "particle heat: type %s: material %s, cp %g J/(kg K) at %g K, latent heat %g J/kg, solidus %g K, liquidus %g K\n", types_[t].name.c_str(),
-                                       m.path.empty() ? m.name.c_str() : m.path.c_str(), (double)m.cp.At(T0_), (double)T0_, (double)m.latentHeat, (double)m.solidus, (double)m.liquidus));
+      PetscCall(PetscViewerASCIIPrintf(viewer, "particle heat: type %s: material %s, cp %g J/(kg K) at %g K, latent heat %g J/kg, solidus %g K, liquidus %g K, initial %g K\n", types_[t].name.c_str(),
+                                       m.path.empty() ? m.name.c_str() : m.path.c_str(), (double)m.cp.At(initial_[t]), (double)initial_[t], (double)m.latentHeat, (double)m.solidus, (double)m.liquidus,
+                                       (double)initial_[t]));
     }
+  PetscCall(PetscViewerASCIIPrintf(viewer, "particle heat: contact conduction %s\n", conduction_ ? "through the Hertz (or JKR) contact radius (P11)" : "off"));
   if (beamOn_)
     PetscCall(PetscViewerASCIIPrintf(viewer, "particle heat: the beam's share first (P11; rays within 3 R_l, %s per cell edge, the highest disc takes each; absorptivity %g)\n",
                                      raysPerCell_ > 0 ? std::to_string((long long)raysPerCell_).c_str() : "automatic", (double)beam_.Absorptivity()));
@@ -309,6 +309,9 @@ PetscErrorCode ParticleHeat::Save(PetscViewer viewer) const {
   const PetscReal state[8] = {brought_, exchanged_, toFluid_, deposited_, nusseltMax_, (PetscReal)m.melted, m.mass, m.spin};
   const char     *names[8] = {"particle_heat_brought", "particle_heat_exchanged", "particle_heat_to_fluid", "particle_heat_deposited", "particle_heat_nusselt_max", "particle_melted", "particle_melted_mass", "particle_melt_spin"};
   for (int k = 0; k < 8; ++k) PetscCall(PetscViewerHDF5WriteAttribute(viewer, "/", names[k], PETSC_REAL, &state[k]));
+  const PetscReal conduction[2] = {conductedPower_, (PetscReal)conductingPairs_};  // the monitor's last values
+  PetscCall(PetscViewerHDF5WriteAttribute(viewer, "/", "particle_heat_conducted_W", PETSC_REAL, &conduction[0]));
+  PetscCall(PetscViewerHDF5WriteAttribute(viewer, "/", "particle_heat_conducting_pairs", PETSC_REAL, &conduction[1]));
   PetscFunctionReturn(0);
 }
 
@@ -320,6 +323,14 @@ PetscErrorCode ParticleHeat::Load(PetscViewer viewer) {
   const char  *names[8] = {"particle_heat_brought", "particle_heat_exchanged", "particle_heat_to_fluid", "particle_heat_deposited", "particle_heat_nusselt_max", "particle_melted", "particle_melted_mass", "particle_melt_spin"};
   for (int k = 0; k < 8; ++k) PetscCall(PetscViewerHDF5ReadAttribute(viewer, "/", names[k], PETSC_REAL, nullptr, state[k]));
   m.melted = (PetscInt64)melted;
+  PetscBool has;  // checkpoints from before contact conduction (2026-12-08) lack these
+  PetscCall(PetscViewerHDF5HasAttribute(viewer, "/", "particle_heat_conducted_W", &has));
+  if (has) {
+    PetscReal pairs = 0;
+    PetscCall(PetscViewerHDF5ReadAttribute(viewer, "/", "particle_heat_conducted_W", PETSC_REAL, nullptr, &conductedPower_));
+    PetscCall(PetscViewerHDF5ReadAttribute(viewer, "/", "particle_heat_conducting_pairs", PETSC_REAL, nullptr, &pairs));
+    conductingPairs_ = (PetscInt)pairs;
+  }
   PetscFunctionReturn(0);
 }
 

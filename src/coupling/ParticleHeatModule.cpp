@@ -45,12 +45,12 @@ PetscErrorCode ParticleHeatModule::Run(Stage stage, StepState &step) {
 }
 
 std::string ParticleHeatModule::MonitorColumns() const {
-  return ",particle_enthalpy_J,particle_heat_to_fluid_W,particle_heat_deposited_W,particle_heat_exchanged_J,particle_temperature_max_K,particle_temperature_min_K,particle_nusselt_max,particle_beam_absorbed_W,particle_beam_intercepted_W,particles_melted,melted_mass_kg,melt_spin_energy_J,melt_volume_error,melt_energy_error,melt_momentum_error";
+  return ",particle_enthalpy_J,particle_heat_to_fluid_W,particle_heat_deposited_W,particle_heat_exchanged_J,particle_temperature_max_K,particle_temperature_min_K,particle_nusselt_max,particle_beam_absorbed_W,particle_beam_intercepted_W,particle_conduction_W,particle_conducting_pairs,particles_melted,melted_mass_kg,melt_spin_energy_J,melt_volume_error,melt_energy_error,melt_momentum_error";
 }
 
 PetscErrorCode ParticleHeatModule::Monitor(MonitorPart *part) {
   ParticleHeatSummary s;
-  char                b[400];
+  char                b[640];
 
   PetscFunctionBeginUser;
   PetscCall(heat_.Summarize(&s));
@@ -67,8 +67,8 @@ PetscErrorCode ParticleHeatModule::Monitor(MonitorPart *part) {
     part->screen += b;
   }
   const MeltSummary &m = heat_.MeltBooks();
-  std::snprintf(b, sizeof b, ",%.16e,%.16e,%.16e,%.16e,%.12e,%.12e,%.8e,%.16e,%.16e,%lld,%.16e,%.6e,%.3e,%.3e,%.3e", (double)s.enthalpy, (double)s.toFluid, (double)s.deposited,
-                (double)s.exchanged, (double)s.Tmax, (double)s.Tmin, (double)s.nusseltMax, (double)s.beamAbsorbed, (double)s.beamIntercepted, (long long)m.melted, (double)m.mass,
+  std::snprintf(b, sizeof b, ",%.16e,%.16e,%.16e,%.16e,%.12e,%.12e,%.8e,%.16e,%.16e,%.16e,%lld,%lld,%.16e,%.6e,%.3e,%.3e,%.3e", (double)s.enthalpy, (double)s.toFluid, (double)s.deposited,
+                (double)s.exchanged, (double)s.Tmax, (double)s.Tmin, (double)s.nusseltMax, (double)s.beamAbsorbed, (double)s.beamIntercepted, (double)s.conducted, (long long)s.contacts, (long long)m.melted, (double)m.mass,
                 (double)m.spin, (double)m.volumeError, (double)m.energyError, (double)m.momentumError);
   part->csv = b;
   PetscFunctionReturn(0);

@@ -20,13 +20,27 @@ PetscErrorCode ReadParticleTypeHeat(MPI_Comm comm, const std::vector<std::string
       PetscCall(opt.String("-material", "Material file of this type's h(T) (config/materials/NAME.yaml or a path; default: -coupling_heat_material)", &h.material));
       PetscCall(opt.Real("-specific_heat", "Specific heat of this type, constant (replaces its material's; default: the material's)", "J/(kg K)", &h.specificHeat, RealRange::Any()));
       if (h.specificHeat != -1 && !(h.specificHeat > 0)) VofdemInputError(comm, "option -%sspecific_heat: %g J/(kg K) is not positive", prefix.c_str(), (double)h.specificHeat);
+      PetscCall(opt.Real("-initial_temperature", "Initial temperature of this type's particles (default: -coupling_heat_initial_temperature)", "K", &h.initialTemperature, RealRange::Any()));
+      if (h.initialTemperature != -1 && !(h.initialTemperature > 0))
+        VofdemInputError(comm, "option -%sinitial_temperature: %g K is not positive", prefix.c_str(), (double)h.initialTemperature);
     }
     PetscOptionsEnd();
   }
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode BuildParticleMaterials(MPI_Comm comm, const ThermalMaterial &common, const std::vector<ParticleTypeHeat> &types, bool melting, PetscReal emissivity,
+PetscErrorCode ReadParticleMaterial(MPI_Comm comm, const std::string &option, const std::string &name, ThermalMaterial *m) {
+  PetscFunctionBeginUser;
+  const std::string path = FindMaterialFile(name);
+  if (path.empty()) VofdemInputError(comm, "option %s: no material file '%s' (config/materials/%s.yaml or a path)", option.c_str(), name.c_str(), name.c_str());
+  std::string message;
+  *m      = ThermalMaterial{};
+  m->name = name;
+  if (!ReadThermalMaterial(path, true, m, &message)) VofdemInputError(comm, "option %s: %s", option.c_str(), message.c_str());
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode BuildParticleMaterials(MPI_Comm comm, const ThermalMaterial &common, const std::vector<ParticleTypeHeat> &types, bool melting, bool conduction, PetscReal emissivity,
                                       std::vector<ThermalMaterial> *materials) {
   PetscFunctionBeginUser;
   materials->assign(std::max((size_t)1, types.size()), common);
@@ -35,12 +49,7 @@ PetscErrorCode BuildParticleMaterials(MPI_Comm comm, const ThermalMaterial &comm
     ThermalMaterial        &m = (*materials)[t];
     const std::string       option = "-coupling_heat_type_" + h.name + "_material";
     if (!h.material.empty()) {
-      const std::string path = FindMaterialFile(h.material);
-      if (path.empty()) VofdemInputError(comm, "option %s: no material file '%s' (config/materials/%s.yaml or a path)", option.c_str(), h.material.c_str(), h.material.c_str());
-      std::string message;
-      m      = ThermalMaterial{};
-      m.name = h.material;
-      if (!ReadThermalMaterial(path, true, &m, &message)) VofdemInputError(comm, "option %s: %s", option.c_str(), message.c_str());
+      PetscCall(ReadParticleMaterial(comm, option, h.material, &m));
       m.referenceTemperature = common.referenceTemperature;  // one zero of enthalpy for the whole account
       if (emissivity >= 0) m.emissivity = emissivity;
     }
@@ -49,6 +58,8 @@ PetscErrorCode BuildParticleMaterials(MPI_Comm comm, const ThermalMaterial &comm
     if (!m.cp.Valid() || !(m.cp.Min() > 0)) VofdemInputError(comm, "option %s: the particles of type %s have no positive specific_heat (%s)", what.c_str(), h.name.c_str(), m.path.c_str());
     if (m.latentHeat > 0 && !(m.liquidus > m.solidus && m.solidus > 0))
       VofdemInputError(comm, "option %s: the particles of type %s have latent heat but no solidus below their liquidus (%s)", what.c_str(), h.name.c_str(), m.path.c_str());
+    if (conduction && (!m.k.Valid() || !(m.k.Min() > 0)))
+      VofdemInputError(comm, "option %s: the particles of type %s have no positive conductivity (%s) for their contact conduction; give one or -coupling_heat_contact_conduction 0", what.c_str(), h.name.c_str(), m.path.c_str());
     if (melting && !(m.liquidus > 0))
       VofdemInputError(comm, "option -coupling_heat_melt: the particles of type %s have no liquidus to melt at (%s); give one or -coupling_heat_melt 0", h.name.c_str(), m.path.c_str());
     if (melting && m.boilingPoint > 0 && !(m.liquidus < m.boilingPoint))

@@ -182,32 +182,32 @@ PetscErrorCode ParticleMelt::OpenLog(const std::string &dir, bool restarting) {
     log_ = std::fopen(path.c_str(), old ? "a" : "w");
     ok   = log_ != nullptr;
     if (log_ && !old)
-      std::fprintf(log_, "time_s,id,type,x_m,y_m,z_m,vx_m_s,vy_m_s,vz_m_s,radius_m,mass_kg,temperature_K,metal_around,absorbed_J,exchanged_J,enthalpy_change_J,sensible_J,latent_J,account_error,spin_energy_J\n");
+      std::fprintf(log_, "time_s,id,type,x_m,y_m,z_m,vx_m_s,vy_m_s,vz_m_s,radius_m,mass_kg,temperature_K,metal_around,absorbed_J,exchanged_J,conducted_J,enthalpy_change_J,sensible_J,latent_J,account_error,spin_energy_J\n");
   }
   PetscCallMPI(MPI_Bcast(&ok, 1, MPI_INT, 0, comm));
   if (!ok) VofdemInputError(comm, "option -output_dir: cannot write melted_particles.csv in '%s'", dir.c_str());
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode ParticleMelt::WriteLog(const std::vector<Melted> &all, PetscReal time, PetscReal T0) {
+PetscErrorCode ParticleMelt::WriteLog(const std::vector<Melted> &all, PetscReal time, const std::vector<PetscReal> &T0) {
   PetscFunctionBeginUser;
   if (!log_) PetscFunctionReturn(0);
   for (size_t k = 0; k < all.size(); ++k) {
     const Melted          &p  = all[k];
     const ThermalMaterial &mt = materials_[(size_t)p.type];
-    const PetscReal        h0 = mt.Enthalpy(T0);
+    const PetscReal        h0 = mt.Enthalpy(T0[(size_t)p.type]);
     const PetscReal latent = p.m * mt.latentHeat * mt.MeltFraction(p.T), change = p.m * (p.h - h0);
-    const PetscReal error  = std::fabs(change - p.absorbed + p.exchanged) / std::max(std::fabs(p.m * p.h), (PetscReal)PETSC_MIN_REAL);
+    const PetscReal error  = std::fabs(change - p.absorbed + p.exchanged - p.conducted) / std::max(std::fabs(p.m * p.h), (PetscReal)PETSC_MIN_REAL);
     const PetscReal spin   = 0.2 * p.m * p.r * p.r * (p.w[0] * p.w[0] + p.w[1] * p.w[1] + p.w[2] * p.w[2]);
-    std::fprintf(log_, "%.10e,%lld,%d,%.10e,%.10e,%.10e,%.8e,%.8e,%.8e,%.8e,%.8e,%.8f,%.6e,%.12e,%.12e,%.12e,%.12e,%.12e,%.3e,%.6e\n", (double)time, (long long)p.id, (int)p.type, (double)p.x[0],
+    std::fprintf(log_, "%.10e,%lld,%d,%.10e,%.10e,%.10e,%.8e,%.8e,%.8e,%.8e,%.8e,%.8f,%.6e,%.12e,%.12e,%.12e,%.12e,%.12e,%.12e,%.3e,%.6e\n", (double)time, (long long)p.id, (int)p.type, (double)p.x[0],
                  (double)p.x[1], (double)p.x[2], (double)p.v[0], (double)p.v[1], (double)p.v[2], (double)p.r, (double)p.m, (double)p.T, (double)around_[k], (double)p.absorbed,
-                 (double)p.exchanged, (double)change, (double)(change - latent), (double)latent, (double)error, (double)spin);
+                 (double)p.exchanged, (double)p.conducted, (double)change, (double)(change - latent), (double)latent, (double)error, (double)spin);
   }
   std::fflush(log_);  // a run killed now loses none of it
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode ParticleMelt::Melt(PetscReal time, PetscReal T0) {
+PetscErrorCode ParticleMelt::Melt(PetscReal time, const std::vector<PetscReal> &T0) {
   ParticleArrays a;
   MPI_Comm       comm = flow_->Staggered().Base().Comm();
 
@@ -224,7 +224,7 @@ PetscErrorCode ParticleMelt::Melt(PetscReal time, PetscReal T0) {
       Melted m;
       for (int d = 0; d < 3; ++d) m.x[d] = a.x[3 * p + d], m.v[d] = a.v[3 * p + d], m.w[d] = a.omega[3 * p + d];
       m.r = a.radius[p], m.m = a.mass[p], m.h = a.enthalpy[p], m.T = a.temperature[p], m.id = (PetscReal)a.id[p];
-      m.absorbed = a.heatAbsorbed[p], m.exchanged = a.heatExchanged[p], m.type = (PetscReal)a.type[p];
+      m.absorbed = a.heatAbsorbed[p], m.exchanged = a.heatExchanged[p], m.conducted = a.heatConducted[p], m.type = (PetscReal)a.type[p];
       mine.push_back(m);
       H.push_back(coupling_->KernelWidth(2 * m.r));
       vol.push_back(4.0 / 3.0 * PETSC_PI * m.r * m.r * m.r);

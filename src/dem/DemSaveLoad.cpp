@@ -139,7 +139,8 @@ PetscErrorCode Dem::ArchiveState(RankArchive &ar, SavedState &st) {
   }
   // Appended 2026-12-04: the particles' enthalpy and temperature (P11; empty without a heat coupling; files
   // written before them load without them, which a run with particle heat refuses in Load).
-  // Appended 2026-12-07: each particle's energy account (heat_absorbed, heat_exchanged); older files load it as 0.
+  // Appended 2026-12-07: each particle's energy account (heat_absorbed, heat_exchanged; heat_conducted
+  // from 2026-12-08); older files load what they lack as 0.
   for (int f = 0; f < kNumHeatFields && ar.HasMore(); ++f) PetscCall(ar.Array((std::string("swarm_") + kHeatFields[f].name).c_str(), &st.heat[f], kHeatFields[f].width));
   PetscFunctionReturn(0);
 }

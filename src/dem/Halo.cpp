@@ -27,7 +27,7 @@ inline PetscReal BoxDistance2(const std::array<PetscReal, 6> &a, const std::arra
   return s;
 }
 
-constexpr int kTagCount = 200, kTagData = 300;  // + the sender's image code (0..26)
+constexpr int kTagCount = 200, kTagData = 300, kTagValues = 400;  // + the sender's image code (0..26)
 constexpr int kFull = 14;    // x3 v3 omega3 radius mass id(bits) type clump(bits)
 constexpr int kMoving = 9;   // x3 v3 omega3
 
@@ -172,6 +172,27 @@ PetscErrorCode Halo::Exchange(const ParticleArrays &a, const PetscReal *om, bool
       std::memcpy(&clump[g], &r[13], sizeof(PetscInt64));
     }
   }
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode Halo::SendValues(int width, const PetscReal *values, std::vector<PetscReal> *ghost) const {
+  const int                nq = (int)ranks_.size();
+  std::vector<MPI_Request> req(2 * nq);
+  size_t                   sendTotal = 0, recvTotal = 0;
+
+  PetscFunctionBeginUser;
+  for (int q = 0; q < nq; ++q) sendTotal += send_[q].size(), recvTotal += recvCount_[q];
+  std::vector<PetscReal> out(width * sendTotal);
+  ghost->resize(width * recvTotal);
+  PetscReal *s = out.data();
+  for (int q = 0; q < nq; ++q)
+    for (PetscInt p : send_[q]) s = std::copy(values + (size_t)width * p, values + (size_t)width * (p + 1), s);
+  for (int q = 0, so = 0, ro = 0; q < nq; ++q) {
+    PetscCallMPI(MPI_Irecv(ghost->data() + (size_t)width * ro, width * (int)recvCount_[q], MPIU_REAL, ranks_[q], kTagValues + PeriodicImages::Opposite(images_[q]), comm_, &req[q]));
+    PetscCallMPI(MPI_Isend(out.data() + (size_t)width * so, width * (int)send_[q].size(), MPIU_REAL, ranks_[q], kTagValues + images_[q], comm_, &req[nq + q]));
+    so += (int)send_[q].size(), ro += (int)recvCount_[q];
+  }
+  PetscCallMPI(MPI_Waitall(2 * nq, req.data(), MPI_STATUSES_IGNORE));
   PetscFunctionReturn(0);
 }
 

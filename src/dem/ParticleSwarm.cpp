@@ -92,12 +92,13 @@ PetscErrorCode ParticleSwarm::RefreshCache() const {
     PetscCall(FieldAddress(swarm_, field::fluidRotation, &c.fluidRotation));
     PetscCall(FieldAddress(swarm_, field::fluidViscosity, &c.fluidViscosity));
   }
-  c.enthalpy = c.temperature = c.heatAbsorbed = c.heatExchanged = nullptr;
+  c.enthalpy = c.temperature = c.heatAbsorbed = c.heatExchanged = c.heatConducted = nullptr;
   if (heatRegistered_) {
     PetscCall(FieldAddress(swarm_, field::enthalpy, &c.enthalpy));
     PetscCall(FieldAddress(swarm_, field::temperature, &c.temperature));
     PetscCall(FieldAddress(swarm_, field::heatAbsorbed, &c.heatAbsorbed));
     PetscCall(FieldAddress(swarm_, field::heatExchanged, &c.heatExchanged));
+    PetscCall(FieldAddress(swarm_, field::heatConducted, &c.heatConducted));
   }
   cacheN_     = c.n;
   cacheValid_ = true;

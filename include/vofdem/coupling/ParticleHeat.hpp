@@ -20,10 +20,12 @@
 // the highest first (ParticleBeam.hpp), absorbing -coupling_heat_absorptivity of it, added to its enthalpy (the
 // exchange then relaxes it: a split step); the columns lose what the particles took before the melt sees them
 // (Energy::SetBeamTaken), and the account counts what the particles absorbed as input (brought).
-// Particles at their liquidus join the melt before the next step (ParticleMelt.hpp, P12). Not here yet: contact
-// conduction.
+// Touching particles exchange heat through their contacts first (ContactConduction.hpp, P11's contact term;
+// -coupling_heat_contact_conduction), each particle's share on its own account (heat_conducted). Particles at their
+// liquidus join the melt before the next step (ParticleMelt.hpp, P12).
 #pragma once
 
+#include "vofdem/coupling/ContactConduction.hpp"
 #include "vofdem/coupling/Coupling.hpp"
 #include "vofdem/coupling/ParticleBeam.hpp"
 #include "vofdem/coupling/ParticleMaterials.hpp"
@@ -43,6 +45,8 @@ struct ParticleHeatSummary {
   PetscReal Tmax = 0, Tmin = 0;  // K, over all particles (0 without particles)
   PetscReal nusseltMax = 0;      // of the last step
   PetscReal beamAbsorbed = 0, beamIntercepted = 0;  // W of the laser the particles absorbed, and took from the beam, last step
+  PetscReal conducted = 0;  // W through the particles' contacts in the last step (sum over pairs of |Q|/dt)
+  PetscInt  contacts  = 0;  // the touching pairs that conducted it
 };
 
 class ParticleHeat {
@@ -80,10 +84,13 @@ private:
   ThermalMaterial material_;                 // the common material (-coupling_heat_material)
   std::vector<ParticleTypeHeat> types_;      // -coupling_heat_type_<name>_*
   std::vector<ThermalMaterial>  materials_;  // per DEM type
+  std::vector<PetscReal>        initial_;    // K, the initial temperature per DEM type
   PetscReal       emissivity_ = -1;  // < 0: the material's
   PetscReal       absorptivity_ = -1;  // of the laser at the particles' surface (< 0: the material's, else the laser's)
   PetscInt        raysPerCell_ = 0;  // -coupling_heat_beam_rays (0: automatic)
   PetscBool       radiation_ = PETSC_TRUE, gasResponse_ = PETSC_TRUE;
+  PetscBool       conduction_ = PETSC_TRUE;  // -coupling_heat_contact_conduction
+  ContactConduction contacts_;
   bool            capacityDeposit_ = true;  // -coupling_heat_deposit capacity|volume
   PetscReal       kernelVolume_ = 0;  // V_eff / H^3 of the kernel (0: cell-based, the cell's volume)
 
@@ -97,7 +104,8 @@ private:
   bool                   beamOn_ = false;
 
   // state (saved): global sums, equal on every rank
-  PetscReal brought_ = 0, exchanged_ = 0, toFluid_ = 0, deposited_ = 0, nusseltMax_ = 0;
+  PetscReal brought_ = 0, exchanged_ = 0, toFluid_ = 0, deposited_ = 0, nusseltMax_ = 0, conductedPower_ = 0;
+  PetscInt  conductingPairs_ = 0;
   PetscLogEvent ev_ = 0;
 };
 

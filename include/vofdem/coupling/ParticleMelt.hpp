@@ -21,9 +21,9 @@
 // The melt log (OpenLog: melted_particles.csv in the output folder, one row per melted particle, flushed at once; a
 // restart appends, so a row may repeat there: the last row of an id counts) gives where and when each particle melted,
 // its velocity, the metal it touched (the sphere's volume-weighted alpha before its own metal came: 0 in flight, > 0
-// on or in the melt) and its energy account since it entered: the laser it absorbed, the heat it gave the fluid, its
-// sensible and latent heat m (h - h_0) split by f_l(T), and the account's closure
-// |m (h - h_0) - absorbed + exchanged| / (m |h|).
+// on or in the melt) and its energy account since it entered: the laser it absorbed, the heat it gave the fluid, the
+// heat it took through its contacts, its sensible and latent heat m (h - h_0) split by f_l(T), and the account's
+// closure |m (h - h_0) - absorbed + exchanged - conducted| / (m |h|).
 #pragma once
 
 #include "vofdem/coupling/Coupling.hpp"
@@ -49,7 +49,7 @@ public:
   PetscErrorCode SetUp(Coupling &coupling, Flow &flow, Vof &vof, Dem &dem, Energy &energy, const std::vector<ThermalMaterial> &particles);  // per DEM type
   // collective; the particles' enthalpy and temperature are the swarm's; T0 is their initial temperature (the account's
   // h_0), time the step's start (the log's)
-  PetscErrorCode Melt(PetscReal time, PetscReal T0);
+  PetscErrorCode Melt(PetscReal time, const std::vector<PetscReal> &T0);
   PetscErrorCode OpenLog(const std::string &dir, bool restarting);  // collective
   const MeltSummary &Summary() const { return summary_; }
   MeltSummary       &State() { return summary_; }  // the counters a checkpoint carries
@@ -57,9 +57,9 @@ public:
 
 private:
   struct Melted {  // one particle's data, gathered on every rank
-    PetscReal x[3], v[3], w[3], r, m, h, T, id, absorbed, exchanged, type;
+    PetscReal x[3], v[3], w[3], r, m, h, T, id, absorbed, exchanged, conducted, type;
   };
-  PetscErrorCode WriteLog(const std::vector<Melted> &all, PetscReal time, PetscReal T0);
+  PetscErrorCode WriteLog(const std::vector<Melted> &all, PetscReal time, const std::vector<PetscReal> &T0);
   bool           MeltsAt(PetscReal T, PetscInt type) const;
   PetscErrorCode FaceMasses(Vec M[3]);  // (eps rho)_f V of the owned faces (0 on walls)
   // The sphere's shares over the lattice of the box: into the owned cells (volume, enthalpy); the owned faces whose

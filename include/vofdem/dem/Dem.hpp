@@ -79,6 +79,17 @@ public:
   // takes particles into the fluid (melting, docs/physics.md P12). Their neighbours keep the forces of the last
   // evaluation for the next half kick.
   PetscErrorCode RemoveParticles(const std::vector<PetscInt> &local);
+  // Collective (DemTouching.cpp), for a coupling that moves something through the contacts (contact conduction,
+  // docs/physics.md P11): the particle pairs of the neighbour list that touch at the particles' positions now
+  // (the ghosts' sent with the values), with their contact radius: Hertz's sqrt(R* delta), or with
+  // -dem_cohesion jkr the JKR radius the pair's spring holds while it is bonded. Pairs come lower id first (a, b;
+  // an index >= n is the ghost n + g), so that the two ranks of a pair see the same numbers. values (width per local
+  // particle, the swarm's order) go to the ghosts with the positions: ghostValues, width per ghost.
+  struct TouchingPair {
+    PetscInt  a, b;
+    PetscReal contactRadius;  // m
+  };
+  PetscErrorCode TouchingPairs(int width, const PetscReal *values, std::vector<PetscReal> *ghostValues, std::vector<TouchingPair> *pairs) const;
   PetscErrorCode Summarize(DemSummary *s) const;
   // Collective: writes every particle, in id order, as the CSV that -dem_particles_file reads
   // (x,y,z,vx,vy,vz,wx,wy,wz), through rank 0; the file is written to a temporary name and renamed.

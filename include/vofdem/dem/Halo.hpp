@@ -39,6 +39,10 @@ public:
 
   const PeriodicImages                     &Images() const { return periodic_; }
 
+  // Collective: `width` reals per local particle (values, the swarm's order as at the last Build) to the ghosts, in
+  // the ghosts' order (ghost: width per ghost), as they are sent nothing else; between Builds, as Refresh.
+  PetscErrorCode SendValues(int width, const PetscReal *values, std::vector<PetscReal> *ghost) const;
+
   // Ghost state, structure of arrays; vectors hold x,y,z per ghost. x is where the ghost is seen
   // from this rank (its owner's position plus the shift of its image), xOwner the position exactly
   // as its owner holds it, image the code of that shift (PeriodicImages::kNone if none).

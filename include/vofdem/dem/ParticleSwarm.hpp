@@ -52,9 +52,11 @@ inline constexpr const char *fluidViscosity = "fluid_viscosity";
 inline constexpr const char *enthalpy    = "enthalpy";     // J/kg
 inline constexpr const char *temperature = "temperature";  // K
 // The particle's own energy account since it entered (J): the laser it absorbed and the heat it gave the fluid
-// (convection and radiation); m (h - h_0) = absorbed - exchanged closes it (the melt log, ParticleMelt.hpp).
+// (convection and radiation) and the heat it took through its contacts with other particles;
+// m (h - h_0) = absorbed - exchanged + conducted closes it (the melt log, ParticleMelt.hpp).
 inline constexpr const char *heatAbsorbed  = "heat_absorbed";   // J
 inline constexpr const char *heatExchanged = "heat_exchanged";  // J
+inline constexpr const char *heatConducted = "heat_conducted";  // J
 }  // namespace field
 // q (4), centre in the body frame (3), clump mass, principal moments (3): see Clumps.hpp.
 inline constexpr int kRigidWidth = 11;
@@ -70,7 +72,7 @@ inline constexpr SwarmFieldWidth kFluidFields[] = {{field::fluidDrag, 1},       
                                                    {field::fluidRotation, 3},     {field::fluidViscosity, 1}};
 inline constexpr int kNumFluidFields = sizeof(kFluidFields) / sizeof(kFluidFields[0]);
 // The heat fields, likewise (zeroed for new particles; saved after the bonds, DemSaveLoad.cpp).
-inline constexpr SwarmFieldWidth kHeatFields[] = {{field::enthalpy, 1}, {field::temperature, 1}, {field::heatAbsorbed, 1}, {field::heatExchanged, 1}};
+inline constexpr SwarmFieldWidth kHeatFields[] = {{field::enthalpy, 1}, {field::temperature, 1}, {field::heatAbsorbed, 1}, {field::heatExchanged, 1}, {field::heatConducted, 1}};
 inline constexpr int             kNumHeatFields = sizeof(kHeatFields) / sizeof(kHeatFields[0]);
 inline constexpr int             kNumHeatState  = 2;  // enthalpy and temperature; the rest is the account (0 when a file lacks it)
 
@@ -86,7 +88,7 @@ struct ParticleArrays {
   PetscReal  *fluidExplicitImpulse = nullptr, *fluidCapillaryImpulse = nullptr, *fluidSurfacePlane = nullptr;
   PetscReal  *fluidRotationalDrag = nullptr, *fluidRotation = nullptr, *fluidViscosity = nullptr;
   PetscReal  *enthalpy = nullptr, *temperature = nullptr;  // null unless SetHeatFields(true) before Create
-  PetscReal  *heatAbsorbed = nullptr, *heatExchanged = nullptr;  // likewise
+  PetscReal  *heatAbsorbed = nullptr, *heatExchanged = nullptr, *heatConducted = nullptr;  // likewise
 };
 
 class ParticleSwarm {
