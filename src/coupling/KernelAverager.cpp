@@ -311,13 +311,14 @@ PetscErrorCode KernelAverager::LocalVectors(int loc, size_t count) {
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode KernelAverager::Deposit(int loc, PetscInt n, const PetscReal *x, const PetscReal *H, const PetscReal *value, PetscInt stride, Vec out, bool walls) {
+PetscErrorCode KernelAverager::Deposit(int loc, PetscInt n, const PetscReal *x, const PetscReal *H, const PetscReal *value, PetscInt stride, Vec out, bool walls, bool excluded) {
   PetscFunctionBeginUser;
-  PetscCall(Deposit(loc, n, x, H, 1, &value, stride, &out, walls));
+  PetscCall(Deposit(loc, n, x, H, 1, &value, stride, &out, walls, excluded));
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode KernelAverager::Deposit(int loc, PetscInt n, const PetscReal *x, const PetscReal *H, PetscInt nf, const PetscReal *const value[], PetscInt stride, Vec out[], bool walls) {
+PetscErrorCode KernelAverager::Deposit(int loc, PetscInt n, const PetscReal *x, const PetscReal *H, PetscInt nf, const PetscReal *const value[], PetscInt stride, Vec out[], bool walls,
+                                       bool excluded) {
   PetscInt bad = 0, anyBad;
 
   PetscFunctionBeginUser;
@@ -328,7 +329,9 @@ PetscErrorCode KernelAverager::Deposit(int loc, PetscInt n, const PetscReal *x, 
     PetscCall(VecGetArray(pool_[loc][f], &arrays_[f]));
   }
   values_.resize(nf);
-  const bool tent = settings_.shape == kernel::Shape::Linear;
+  const bool  exclude = excluding_ && !excluded;
+  const char *out_    = exclude ? excluded_[loc].data() : nullptr;  // the points left out
+  const bool  tent    = settings_.shape == kernel::Shape::Linear && !exclude;  // excluded points: the generic path
   if (tent) SizeTent(n);
   for (PetscInt p = 0; p < n; ++p) {
     if (tent) {
@@ -351,6 +354,24 @@ PetscErrorCode KernelAverager::Deposit(int loc, PetscInt n, const PetscReal *x, 
       continue;
     }
     for (PetscInt f = 0; f < nf; ++f) values_[f] = value[f][p * stride];
+    if (exclude && (walls ? sp.sumAll > 0 : sp.sumInner > 0)) {  // the same weights over the points that remain
+      PetscReal kept = 0;
+      bool      any  = false;
+      for (size_t k = 0; k < sp.n; ++k) {
+        if (!walls && sp.wall[k]) continue;
+        if (out_[sp.offsets[k]]) any = true;
+        else kept += walls ? sp.wAll[k] : sp.wInner[k];
+      }
+      if (any && kept > 0) {
+        for (size_t k = 0; k < sp.n; ++k) {
+          if ((!walls && sp.wall[k]) || out_[sp.offsets[k]]) continue;
+          const PetscReal w = (walls ? sp.wAll[k] : sp.wInner[k]) / kept;
+          const PetscInt  o = sp.offsets[k];
+          for (PetscInt f = 0; f < nf; ++f) arrays_[f][o] += values_[f] * w;
+        }
+        continue;
+      }
+    }
     if (walls ? sp.sumAll > 0 : sp.sumInner > 0) {  // all fields in one pass over the support
       for (size_t k = 0; k < sp.n; ++k) {
         if (!walls && sp.wall[k]) continue;

@@ -46,6 +46,7 @@ PetscErrorCode ParticleHeat::SetFromOptions(MPI_Comm comm) {
     PetscCall(opt.Int("-beam_rays", "Rays of the laser per cell edge for the particles' share (0: a ray at most a sixteenth of the smallest particle radius and of the beam radius; at most ~4e6 rays)", &raysPerCell_, 0));
     PetscCall(opt.Bool("-melt", "Particles that reach their liquidus join the melt (docs/physics.md P12: their volume, momentum and enthalpy into the cells, out of the swarm)", &melting_));
     PetscCall(opt.Bool("-contact_conduction", "Heat through the contacts of touching particles, 4 k_i k_j/(k_i + k_j) sqrt(pi a^2) (T_j - T_i) with the contact radius a (P11; ContactConduction.hpp)", &conduction_));
+    PetscCall(opt.Bool("-exclude_held", "The particles' volume and forces go only to cells (and faces) that the energy does not hold at rest as solid metal, so that particles may rest on a solid substrate (KernelAverager::SetExcludedCells); their heat goes to the solid too", &excludeHeld_));
     PetscCall(opt.Bool("-radiation", "Radiation between each particle and the fluid temperature it reads, e sigma (Tbar^4 - T^4) (P11)", &radiation_));
     std::vector<std::string> deposit = {capacityDeposit_ ? "capacity" : "volume"};
     PetscCall(opt.NameList("-deposit", "How a particle's heat is shared among the cells of its kernel: capacity (the kernel weight times the cell's heat capacity: the cells change their temperature alike) or volume (the kernel weight alone, K3)",
@@ -79,6 +80,9 @@ PetscErrorCode ParticleHeat::SetUp(Coupling &coupling, Flow &flow, Vof &vof, Dem
   PetscCall(VecDuplicate(T_, &source_));
   PetscCall(VecDuplicate(T_, &capacity_));
   PetscCall(VecDuplicate(T_, &solid_));
+  PetscCall(VecDuplicate(T_, &held_));
+  PetscCall(VecDuplicate(T_, &heldBefore_));
+  PetscCall(VecSet(held_, 0));
   PetscCall(DMCreateGlobalVector(sg.Base().CellDM(), &capacityCells_));
   PetscCall(VecSet(source_, 0));
   PetscCall(DMCreateGlobalVector(sg.Base().CellDM(), &sourceEnergy_));
@@ -105,7 +109,23 @@ PetscErrorCode ParticleHeat::SetUp(Coupling &coupling, Flow &flow, Vof &vof, Dem
 
 PetscErrorCode ParticleHeat::Melt(PetscReal time) {
   PetscFunctionBeginUser;
-  if (melting_) PetscCall(melt_.Melt(time, initial_));
+  if (melting_) PetscCall(melt_.Melt(time, initial_));  // with the mask of the last deposits (it gives back their kernel volume)
+  PetscCall(ExcludeHeld());
+  PetscFunctionReturn(0);
+}
+
+// The cells of solid metal held at rest now (Energy::HeldMask) take no share of the particles' volume and forces
+// from this step's deposits on (KernelAverager::SetExcludedCells).
+PetscErrorCode ParticleHeat::ExcludeHeld() {
+  PetscFunctionBeginUser;
+  if (!excludeHeld_) PetscFunctionReturn(0);
+  if (!coupling_->Averager().CanExclude()) {  // the smoothers deposit everywhere: the check below watches the solid metal as without
+    excludeHeld_ = PETSC_FALSE;
+    PetscFunctionReturn(0);
+  }
+  PetscCall(VecCopy(held_, heldBefore_));
+  PetscCall(energy_->HeldMask(held_));
+  PetscCall(coupling_->Averager().SetExcludedCells(held_, &excludedCells_));
   PetscFunctionReturn(0);
 }
 
@@ -152,7 +172,7 @@ PetscErrorCode ParticleHeat::Exchange(PetscReal time, PetscReal dt) {
   PetscCall(VecCopy(capacityCells_, solid_));
   solidBar_.resize(n);
   {
-    const Vec  fields[5]  = {T_, flow_->Density(), flow_->FluidFraction(), capacity_, solid_};
+    const Vec  fields[5]  = {T_, flow_->Density(), flow_->FluidFraction(), capacity_, excludeHeld_ ? held_ : solid_};
     const Vec  weights[5] = {flow_->FluidFraction(), flow_->FluidFraction(), nullptr, nullptr, nullptr};
     const bool walls[5]   = {true, true, true, true, true};
     PetscReal *outs[5]    = {Tbar_.data(), rho_.data(), eps_.data(), Cbar_.data(), solidBar_.data()};
@@ -163,20 +183,30 @@ PetscErrorCode ParticleHeat::Exchange(PetscReal time, PetscReal dt) {
      // reached 2e4 K): once eps changes by more than 1e-6 in a step in a cell of solid metal (the volume book then
      // drifts by about that much of a cell per step), stop, naming the particle whose kernel reads the most solid
      // metal, not run on to nonsense. The kernel's tail (1.5 widths) reaches solid metal a few diameters away.
+     // With -coupling_heat_exclude_held (the default) the deposits leave the held cells out, and what is checked is
+     // the cells held at this step's and the last step's deposits: eps changes there only for a particle whose
+     // whole support is held (inside the solid); a cell that froze since keeps the eps of its last deposit once.
     PetscReal          change = 0;
-    const PetscScalar *dc, *sc;
+    const PetscScalar *dc, *sc, *hb = nullptr;
     PetscInt           m;
     if (Vec dEps = coupling_->FluidFractionChange()) {
       PetscCall(VecGetLocalSize(dEps, &m));
       PetscCall(VecGetArrayRead(dEps, &dc));
-      PetscCall(VecGetArrayRead(solid_, &sc));
+      PetscCall(VecGetArrayRead(excludeHeld_ ? held_ : solid_, &sc));
+      if (excludeHeld_) PetscCall(VecGetArrayRead(heldBefore_, &hb));
       for (PetscInt c = 0; c < m; ++c)
-        if (PetscRealPart(sc[c]) > 0.5) change = std::max(change, (PetscReal)std::fabs(PetscRealPart(dc[c])));
-      PetscCall(VecRestoreArrayRead(solid_, &sc));
+        if (PetscRealPart(sc[c]) > 0.5 && (!hb || PetscRealPart(hb[c]) > 0.5)) change = std::max(change, (PetscReal)std::fabs(PetscRealPart(dc[c])));
+      if (hb) PetscCall(VecRestoreArrayRead(heldBefore_, &hb));
+      PetscCall(VecRestoreArrayRead(excludeHeld_ ? held_ : solid_, &sc));
       PetscCall(VecRestoreArrayRead(dEps, &dc));
     }
     PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, &change, 1, MPIU_REAL, MPIU_MAX, comm_));
-    if (change > 1e-6) {  // the particle whose kernel reads the most solid metal
+    // Excluding held cells, a particle whose kernel lies mostly in them has passed into the solid (its centre is in it).
+    PetscReal inside = 0;
+    if (excludeHeld_)
+      for (PetscInt p = 0; p < n; ++p) inside = std::max(inside, solidBar_[p]);
+    PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, &inside, 1, MPIU_REAL, MPIU_MAX, comm_));
+    if (change > 1e-6 || inside > 0.5) {  // the particle whose kernel reads the most solid metal
       struct {
         double s;
         int    rank;
@@ -191,8 +221,11 @@ PetscErrorCode ParticleHeat::Exchange(PetscReal time, PetscReal dt) {
       PetscReal at[4] = {0, 0, 0, 0};
       if (rank == worst.rank) at[0] = a.x[3 * where], at[1] = a.x[3 * where + 1], at[2] = a.x[3 * where + 2], at[3] = (PetscReal)a.id[where];
       PetscCallMPI(MPI_Bcast(at, 4, MPIU_REAL, worst.rank, comm_));
-      VofdemInputError(comm_, "coupling: particle %lld at (%g, %g, %g) m moves its volume into solid metal (eps changes there by %.1e in a step; %.1e of the fluid its kernel reads is solid), which the flow holds at rest and particles do not collide with; give the solid's surface as a DEM wall (-dem_walls) so that particles stop above it, or keep them away from it",
-                       (long long)at[3], (double)at[0], (double)at[1], (double)at[2], (double)change, (double)worst.s);
+      if (change > 1e-6)
+        VofdemInputError(comm_, "coupling: particle %lld at (%g, %g, %g) m moves its volume into solid metal (eps changes there by %.1e in a step; %.1e of the fluid its kernel reads is solid), which the flow holds at rest and particles do not collide with; give the solid's surface as a DEM wall (-dem_walls) so that particles stop above it, or keep them away from it",
+                         (long long)at[3], (double)at[0], (double)at[1], (double)at[2], (double)change, (double)worst.s);
+      VofdemInputError(comm_, "coupling: particle %lld at (%g, %g, %g) m has passed into solid metal (%.2f of its kernel lies in cells held at rest), which particles do not collide with; give the solid's surface as a DEM wall (-dem_walls) so that particles stop above it, or keep them away from it",
+                       (long long)at[3], (double)at[0], (double)at[1], (double)at[2], (double)worst.s);
     }
   }
   const ThermalMaterial &metal = energy_->Metal(), &gas = energy_->Gas();
@@ -231,9 +264,9 @@ PetscErrorCode ParticleHeat::Exchange(PetscReal time, PetscReal dt) {
   PetscCall(VecSet(source_, 0));
   if (capacityDeposit_) {  // cell J takes Q w_J C_J / sum_K w_K C_K: the kernel's share of Q/Cbar, times C_J
     for (PetscInt p = 0; p < n; ++p) power_[p] /= Cbar_[p];
-    PetscCall(coupling_->Averager().Deposit(3, n, a.x, H_.data(), power_.data(), 1, source_));
+    PetscCall(coupling_->Averager().Deposit(3, n, a.x, H_.data(), power_.data(), 1, source_, false, true));  // solid metal takes heat too
     PetscCall(VecPointwiseMult(source_, source_, capacity_));
-  } else PetscCall(coupling_->Averager().Deposit(3, n, a.x, H_.data(), power_.data(), 1, source_));
+  } else PetscCall(coupling_->Averager().Deposit(3, n, a.x, H_.data(), power_.data(), 1, source_, false, true));
   PetscCall(sw.RestoreArrays(&a));
   PetscCall(VecSum(source_, &sums[1]));
   PetscCall(VecScale(source_, 1 / Vc));  // W/m^3
@@ -338,7 +371,7 @@ PetscErrorCode ParticleHeat::Destroy() {
   PetscFunctionBeginUser;
   if (energy_) energy_->SetParticleHeat(nullptr, nullptr);
   PetscCall(melt_.Destroy());
-  for (Vec *v : {&T_, &source_, &sourceEnergy_, &capacity_, &capacityCells_, &solid_}) PetscCall(VecDestroy(v));
+  for (Vec *v : {&T_, &source_, &sourceEnergy_, &capacity_, &capacityCells_, &solid_, &held_, &heldBefore_}) PetscCall(VecDestroy(v));
   PetscFunctionReturn(0);
 }
 

@@ -106,6 +106,22 @@ PetscErrorCode Energy::SolidFraction(Vec out) const {
   PetscFunctionReturn(0);
 }
 
+PetscErrorCode Energy::HeldMask(Vec out) const {
+  PetscFunctionBeginUser;
+  PetscCall(VecSet(out, 0));
+  if (!sGlobal_) PetscFunctionReturn(0);  // no MushyDrag yet (no flow)
+  const PetscScalar *s;
+  PetscScalar       *o;
+  PetscInt           n;
+  PetscCall(VecGetLocalSize(out, &n));
+  PetscCall(VecGetArrayRead(sGlobal_, &s));
+  PetscCall(VecGetArray(out, &o));
+  for (PetscInt c = 0; c < n; ++c) o[c] = PetscRealPart(s[c]) < 0 ? 1 : 0;  // MushyDrag marks a held cell -1
+  PetscCall(VecRestoreArray(out, &o));
+  PetscCall(VecRestoreArrayRead(sGlobal_, &s));
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode Energy::Summarize(EnergySummary *s) {
   const PetscReal *h = grid_->Spacing();
   const PetscReal  V = h[0] * h[1] * h[2];

@@ -21,6 +21,12 @@ in still fluid Re = 0 and Nu = 2 whatever Pr (F10). Checked at every monitor row
       agree to 1e-10 (cells counting their whole volume left 1.2e-3 J of 0.07 J exchanged: the gas's div u = -d(eps)/dt/eps
       moved energy through the dilatation term); -energy_tolerance 1e-10 so that the ranks compare at round-off (at the
       default 1e-6 the iteration stops where the solve's decomposition leaves T_p 8e-10 apart);
+  (h) particles landing on solid metal (the same scene run on to 90 steps with the plate's top as a DEM wall): the
+      deposits leave the cells held at rest out (-coupling_heat_exclude_held), so the 20 spheres come to rest on the
+      plate (lowest centre within 1e-3 r of r above it), the held plate's eps stays exactly 1 while the layer above
+      takes their volume, the projected volume is theirs to 1e-12, the energy account closes within 1e-10 of the heat
+      exchanged, and 1 and 2 ranks agree to 1e-10; without the wall a sphere passing into the plate is stopped with one
+      line (falling on, above);
 a wrong sign or factor of the exchange fails (a) or (c).
   test_particle_heat.py VOFDEM"""
 import csv
@@ -128,7 +134,7 @@ def falling(exe, tmp):
     p = subprocess.run(["mpiexec", "-n", "2", "--oversubscribe", exe] + args + ["-output_dir", os.path.join(tmp, "falling-on")], capture_output=True, text=True, env=env, timeout=120)
     out = p.stdout + p.stderr
     errors = [l for l in out.splitlines() if l.startswith("vofdem: error")]
-    ok = p.returncode != 0 and len(errors) == 1 and re.search(r"coupling: particle \d+ at .* moves its volume into solid metal", errors[0]) and "PETSC ERROR" not in out
+    ok = p.returncode != 0 and len(errors) == 1 and re.search(r"coupling: particle \d+ at .* (moves its volume into|has passed into) solid metal", errors[0]) and "PETSC ERROR" not in out
     check(bool(ok), "falling on: the kernels reach the held plate: exit %d, %s" % (p.returncode, errors[0] if errors else "no error line"))
     a, b = runs[1], runs[2]
     dE = max(abs(x["energy_total_J"] - y["energy_total_J"]) for x, y in zip(a, b)) / (a[-1]["particle_enthalpy_J"] - a[0]["particle_enthalpy_J"])
@@ -136,11 +142,43 @@ def falling(exe, tmp):
     check(len(a) == len(b) and dE <= 1e-10 and dT <= 1e-10, "falling: 1 and 2 ranks agree: the energy to %.2e of the heat exchanged, T_p to %.2e (tolerance 1e-10)" % (dE, dT))
 
 
+def landing(exe, tmp):
+    """(h): particles resting on the held plate."""
+    runs = {}
+    args = FALLING[:FALLING.index("-max_steps")] + ["-max_steps", "90"] + FALLING[FALLING.index("-max_steps") + 2:] + ["-monitor_every", "10", "-flow_output_every", "90"]
+    args += ["-dem_walls", "plate", "-dem_wall_plate_type", "plane", "-dem_wall_plate_point", "0,0,0.002", "-dem_wall_plate_normal", "0,0,1"]
+    for ranks in (1, 2):
+        out = os.path.join(tmp, "landing-%d" % ranks)
+        run_vofdem(exe, ranks, args + ["-output_dir", out, "-dem_save_particles", os.path.join(out, "end.csv")])
+        r = rows(out)
+        runs[ranks] = r
+        label = "landing, %d rank(s)" % ranks
+        with open(os.path.join(out, "end.csv")) as f:
+            ps = [{k: float(v) for k, v in x.items()} for x in csv.DictReader(f)]
+        low = min(p["z"] for p in ps) if ps else 0.0
+        check(len(ps) == 20 and abs(low - 0.0025) <= 1e-3 * 5e-4 and r[-1]["step"] == 90,
+              "%s: 90 steps, %d spheres, the lowest centre %.7f m (on the plate: 0.0025 m)" % (label, len(ps), low))
+        with h5py.File(os.path.join(out, "flow_00000090.h5")) as f:
+            eps = np.array(f["flow_fluid_fraction"])  # z, y, x
+        check(np.all(eps[:2] == 1.0) and eps[2].min() < 0.95, "%s: the held plate's eps is exactly 1 (min %.17g), the layer above takes the spheres' volume (min eps %.4f)"
+              % (label, eps[:2].min(), eps[2].min()))
+        verr = max(x["coupling_volume_error"] for x in r)
+        exchanged = r[-1]["particle_enthalpy_J"] - r[0]["particle_enthalpy_J"]
+        worst = max(abs(x["energy_total_J"] - x["energy_accounted_J"]) for x in r) / exchanged
+        check(verr <= 1e-12 and worst <= 1e-10, "%s: projected volume to %.1e of the spheres' (tolerance 1e-12), the energy account to %.2e of the %.4e J exchanged (tolerance 1e-10)"
+              % (label, verr, worst, exchanged))
+    a, b = runs[1], runs[2]
+    dE = max(abs(x["energy_total_J"] - y["energy_total_J"]) for x, y in zip(a, b)) / (a[-1]["particle_enthalpy_J"] - a[0]["particle_enthalpy_J"])
+    dT = max(abs(x["particle_temperature_max_K"] / y["particle_temperature_max_K"] - 1) for x, y in zip(a, b))
+    check(len(a) == len(b) and dE <= 1e-10 and dT <= 1e-10, "landing: 1 and 2 ranks agree: the energy to %.2e of the heat exchanged, T_p to %.2e (tolerance 1e-10)" % (dE, dT))
+
+
 def main():
     exe = sys.argv[1]
     tmp = tempfile.mkdtemp(prefix="vofdem-particle-heat-")
     try:
         falling(exe, tmp)
+        landing(exe, tmp)
         # (name, gas and initial temperature, ranks, diameter, end time, monitor rows every so many steps)
         for name, t_gas, t0, rank_counts, d, t_end, every in (("sensible", 1400.0, 573.0, (1, 2), D, T_END, 5), ("melting", 1800.0, 1400.0, (1,), D, T_END, 5),
                                                               ("small", 1400.0, 573.0, (1,), 5e-6, 0.02, 1)):

@@ -42,7 +42,8 @@ public:
   // shared by the kernel of width H[p] around x[3p..3p+2]. Collective (ghost contributions are
   // summed into their owners). The wall faces of a face location's own direction take no share unless
   // `walls` (the particle forces: a wall face's half control volume takes its share, Coupling.cpp).
-  PetscErrorCode Deposit(int loc, PetscInt n, const PetscReal *x, const PetscReal *H, const PetscReal *value, PetscInt stride, Vec out, bool walls = false);
+  // Points excluded by SetExcludedCells take no share unless `excluded` is true (the heat, which solid metal takes).
+  PetscErrorCode Deposit(int loc, PetscInt n, const PetscReal *x, const PetscReal *H, const PetscReal *value, PetscInt stride, Vec out, bool walls = false, bool excluded = false);
   // out[p*stride] = sum_J f_J c_J w_pJ / sum_J c_J w_pJ over the points of location loc within the
   // cut-off, c = weight (a global vector of the same location; nullptr: 1). Wall faces take part
   // (their velocity is the wall's) unless `walls` is false. With walls, a wall face counts for the
@@ -52,7 +53,13 @@ public:
   PetscErrorCode Average(int loc, Vec field, Vec weight, PetscInt n, const PetscReal *x, const PetscReal *H, PetscReal *out, PetscInt stride, bool walls = true);
   // Several fields of one location at once (the kernel weights, the costly part, are computed once per
   // particle): value[f] into out[f], or field[f] (weighted by weight[f], walls[f]) into out[f].
-  PetscErrorCode Deposit(int loc, PetscInt n, const PetscReal *x, const PetscReal *H, PetscInt nf, const PetscReal *const value[], PetscInt stride, Vec out[], bool walls = false);
+  PetscErrorCode Deposit(int loc, PetscInt n, const PetscReal *x, const PetscReal *H, PetscInt nf, const PetscReal *const value[], PetscInt stride, Vec out[], bool walls = false,
+                         bool excluded = false);
+  // Cells a deposit leaves out (KernelAveragerExcluded.cpp): `cells` (the cells' layout; > 0.5: excluded, e.g. solid
+  // metal the flow holds at rest; nullptr: none) and the faces beside them. A particle's share is normalised over the
+  // points of its support that remain, so its total still reaches the grid to round-off; one whose support is all
+  // excluded deposits as without the mask. Averages read every point. Collective; returns the count of cells.
+  PetscErrorCode SetExcludedCells(Vec cells, PetscInt *count = nullptr);
   PetscErrorCode Average(int loc, PetscInt nf, const Vec field[], const Vec weight[], const bool walls[], PetscInt n, const PetscReal *x, const PetscReal *H, PetscReal *const out[],
                          PetscInt stride);
 
@@ -132,6 +139,8 @@ private:
   Vec                  local_[4] = {nullptr, nullptr, nullptr, nullptr};
   std::vector<Vec>     pool_[4];  // local vectors of the multi-field Deposit and Average, per location
   PetscInt             gs_[4][3] = {}, gm_[4][3] = {};  // ghosted corners of each location
+  std::vector<char>    excluded_[4];      // per location, over its ghosted box: 1 if a deposit leaves the point out
+  bool                 excluding_ = false;  // some point is excluded on some rank
   Points                     points_;  // scratch, reused: no allocation per particle
   std::vector<PetscInt>      offsets_, offsetsInner_;
   std::vector<PetscReal>     weights_, weightsInner_;

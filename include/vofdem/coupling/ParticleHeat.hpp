@@ -70,7 +70,8 @@ public:
   const std::vector<ThermalMaterial> &Materials() const { return materials_; }
 
 private:
-  PetscErrorCode StartNew(ParticleArrays &a);  // particles at 0 K (new): the initial temperature; brought_ grows
+  PetscErrorCode StartNew(ParticleArrays &a);
+  PetscErrorCode ExcludeHeld();  // the held cells (Energy::HeldMask) out of the coming deposits  // particles at 0 K (new): the initial temperature; brought_ grows
 
   Coupling *coupling_ = nullptr;
   Flow     *flow_ = nullptr;
@@ -90,13 +91,16 @@ private:
   PetscInt        raysPerCell_ = 0;  // -coupling_heat_beam_rays (0: automatic)
   PetscBool       radiation_ = PETSC_TRUE, gasResponse_ = PETSC_TRUE;
   PetscBool       conduction_ = PETSC_TRUE;  // -coupling_heat_contact_conduction
+  PetscBool       excludeHeld_ = PETSC_TRUE;  // -coupling_heat_exclude_held
+  PetscInt        excludedCells_ = 0;
   ContactConduction contacts_;
   bool            capacityDeposit_ = true;  // -coupling_heat_deposit capacity|volume
   PetscReal       kernelVolume_ = 0;  // V_eff / H^3 of the kernel (0: cell-based, the cell's volume)
 
   // fields and scratch
   Vec                    T_ = nullptr, source_ = nullptr, sourceEnergy_ = nullptr;  // Tbar's field and the deposit (cells), the energy's copy
-  Vec                    capacity_ = nullptr, capacityCells_ = nullptr, solid_ = nullptr;  // the cells' heat capacity (sg's cells; the energy's), solid metal
+  Vec                    capacity_ = nullptr, capacityCells_ = nullptr, solid_ = nullptr;
+  Vec                    held_ = nullptr, heldBefore_ = nullptr;  // the cells held at rest at this step's and the last step's deposits  // the cells' heat capacity (sg's cells; the energy's), solid metal
   std::vector<PetscReal> H_, Tbar_, rho_, eps_, power_, Cbar_, solidBar_, beamPower_, taken_;
   ParticleBeam           beam_;
   ParticleMelt           melt_;

@@ -38,14 +38,18 @@ public:
   const DiffusionSmoother &Smoother() const { return smoother_; }
   PetscReal      Spread(int e) const { return spread_[e]; }  // b_e^2 of the diffusion (m^2)
 
-  PetscErrorCode Deposit(int loc, PetscInt n, const PetscReal *x, const PetscReal *H, const PetscReal *value, PetscInt stride, Vec out, bool walls = false) {
-    return diffusion_ ? smoother_.Deposit(loc, n, x, H, value, stride, out, walls) : kernel_.Deposit(loc, n, x, H, value, stride, out, walls);
+  // Excluded cells (KernelAverager::SetExcludedCells): the kernel sums only; the smoothers deposit everywhere.
+  bool           CanExclude() const { return !diffusion_; }
+  PetscErrorCode SetExcludedCells(Vec cells, PetscInt *count) { return kernel_.SetExcludedCells(diffusion_ ? nullptr : cells, count); }
+  PetscErrorCode Deposit(int loc, PetscInt n, const PetscReal *x, const PetscReal *H, const PetscReal *value, PetscInt stride, Vec out, bool walls = false, bool excluded = false) {
+    return diffusion_ ? smoother_.Deposit(loc, n, x, H, value, stride, out, walls) : kernel_.Deposit(loc, n, x, H, value, stride, out, walls, excluded);
   }
   PetscErrorCode Average(int loc, Vec field, Vec weight, PetscInt n, const PetscReal *x, const PetscReal *H, PetscReal *out, PetscInt stride, bool walls = true) {
     return diffusion_ ? smoother_.Average(loc, field, weight, n, x, H, out, stride, walls) : kernel_.Average(loc, field, weight, n, x, H, out, stride, walls);
   }
-  PetscErrorCode Deposit(int loc, PetscInt n, const PetscReal *x, const PetscReal *H, PetscInt nf, const PetscReal *const value[], PetscInt stride, Vec out[], bool walls = false) {
-    return diffusion_ ? smoother_.Deposit(loc, n, x, H, nf, value, stride, out, walls) : kernel_.Deposit(loc, n, x, H, nf, value, stride, out, walls);
+  PetscErrorCode Deposit(int loc, PetscInt n, const PetscReal *x, const PetscReal *H, PetscInt nf, const PetscReal *const value[], PetscInt stride, Vec out[], bool walls = false,
+                         bool excluded = false) {
+    return diffusion_ ? smoother_.Deposit(loc, n, x, H, nf, value, stride, out, walls) : kernel_.Deposit(loc, n, x, H, nf, value, stride, out, walls, excluded);
   }
   PetscErrorCode Average(int loc, PetscInt nf, const Vec field[], const Vec weight[], const bool walls[], PetscInt n, const PetscReal *x, const PetscReal *H, PetscReal *const out[],
                          PetscInt stride) {

@@ -119,6 +119,7 @@ public:
   // (J/(m^3 K); the melt law's latent share included), into out (a global vector of the cells).
   PetscErrorCode HeatCapacity(Vec out) const;
   PetscErrorCode SolidFraction(Vec out) const;  // each cell's solid metal, alpha (1 - f), of its fluid (a global vector of the cells)
+  PetscErrorCode HeldMask(Vec out) const;       // 1 in the cells the last MushyDrag held at rest, else 0 (a global vector of the cells)
   const Laser   &Beam() const { return laser_; }
   const ThermalMaterial &Metal() const { return metal_; }
   const ThermalMaterial &Gas() const { return gas_; }
