@@ -414,6 +414,15 @@ PetscErrorCode Energy::Step(PetscReal time, PetscReal dt) {
     PetscCall(KSPSolve(ksp, rhs_, Tstar_));
     PetscCall(KSPGetIterationNumber(ksp, &its));
     linear += its;
+    {  // a failed linear solve would feed the update garbage (T reached 7e296 K before the balance check saw it)
+      KSPConvergedReason reason;
+      PetscReal          res;
+      PetscCall(KSPGetConvergedReason(ksp, &reason));
+      PetscCall(KSPGetResidualNorm(ksp, &res));
+      if (reason <= 0)
+        VofdemRunError(comm_, "energy solve did not converge at t = %g s: %s after %" PetscInt_FMT " iterations, residual %g (-energy_ksp_monitor shows the history)", (double)(time + dt),
+                       KSPConvergedReasons[reason], its, (double)res);
+    }
     // The update (Update), with lambda halved while the largest residual grows.
     PetscCall(VecCopy(T_, Tbase_));
     PetscCall(VecCopy(F_, Fbase_));
