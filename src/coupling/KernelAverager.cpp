@@ -64,6 +64,8 @@ PetscErrorCode KernelAverager::SetUp(const StaggeredGrid &sg, const Settings &s,
   const PetscReal reach = s.shape == kernel::Shape::Unresolved || s.shape == kernel::Shape::Linear ? hmin : s.shape == kernel::Shape::Divided ? hmin + maxCutoff : maxCutoff;
   width_ = (PetscInt)std::ceil((reach + margin) / hmin) + 1;
   tentKey_.clear(), tentState_.clear(), tentAxes_.clear();  // the tents remembered were for another grid
+  for (auto &e : excluded_) e.clear();                       // and so were the excluded points
+  excluding_ = false;
   for (int loc = 0; loc < 4; ++loc) {
     PetscCall(Layout(loc, &dm_[loc]));
     PetscCall(DMCreateLocalVector(dm_[loc], &local_[loc]));

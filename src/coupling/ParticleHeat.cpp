@@ -125,7 +125,10 @@ PetscErrorCode ParticleHeat::ExcludeHeld() {
   }
   PetscCall(VecCopy(held_, heldBefore_));
   PetscCall(energy_->HeldMask(held_));
-  PetscCall(coupling_->Averager().SetExcludedCells(held_, &excludedCells_));
+  PetscBool same = PETSC_FALSE;
+  if (maskSet_) PetscCall(VecEqual(held_, heldBefore_, &same));  // most steps: the averager's masks stand
+  if (!same) PetscCall(coupling_->Averager().SetExcludedCells(held_, &excludedCells_));
+  maskSet_ = true;
   PetscFunctionReturn(0);
 }
 
@@ -184,8 +187,10 @@ PetscErrorCode ParticleHeat::Exchange(PetscReal time, PetscReal dt) {
      // drifts by about that much of a cell per step), stop, naming the particle whose kernel reads the most solid
      // metal, not run on to nonsense. The kernel's tail (1.5 widths) reaches solid metal a few diameters away.
      // With -coupling_heat_exclude_held (the default) the deposits leave the held cells out, and what is checked is
-     // the cells held at this step's and the last step's deposits: eps changes there only for a particle whose
-     // whole support is held (inside the solid); a cell that froze since keeps the eps of its last deposit once.
+     // the cells held at this step's and the last step's deposits, where eps can fall only for a particle whose
+     // whole support is held (inside the solid); a cell that froze under a particle's kernel returns to eps = 1 once
+     // (over a few steps when the step shrinks: Coupling::Project moves eps by dt/dt_last of the way), which is not
+     // counted.
     PetscReal          change = 0;
     const PetscScalar *dc, *sc, *hb = nullptr;
     PetscInt           m;
@@ -195,7 +200,7 @@ PetscErrorCode ParticleHeat::Exchange(PetscReal time, PetscReal dt) {
       PetscCall(VecGetArrayRead(excludeHeld_ ? held_ : solid_, &sc));
       if (excludeHeld_) PetscCall(VecGetArrayRead(heldBefore_, &hb));
       for (PetscInt c = 0; c < m; ++c)
-        if (PetscRealPart(sc[c]) > 0.5 && (!hb || PetscRealPart(hb[c]) > 0.5)) change = std::max(change, (PetscReal)std::fabs(PetscRealPart(dc[c])));
+        if (PetscRealPart(sc[c]) > 0.5 && (!hb || PetscRealPart(hb[c]) > 0.5)) change = std::max(change, (PetscReal)(hb ? -PetscRealPart(dc[c]) : std::fabs(PetscRealPart(dc[c]))));
       if (hb) PetscCall(VecRestoreArrayRead(heldBefore_, &hb));
       PetscCall(VecRestoreArrayRead(excludeHeld_ ? held_ : solid_, &sc));
       PetscCall(VecRestoreArrayRead(dEps, &dc));

@@ -29,6 +29,11 @@ constexpr PetscReal kPureBand = 1e-6;  // a cell within this of alpha 0 or 1 cou
 PetscReal Energy::CellTemperature(PetscReal E, PetscReal a, PetscReal guess) const {
   auto f  = [&](PetscReal T) { return CellEnergy(a, T, metal_.MeltFraction(T)) - E; };
   auto df = [&](PetscReal T) { return CellSensibleCapacity(a, T) + a * metal_.density * metal_.latentHeat * metal_.MeltSlope(T); };
+  // alpha below -rho_g c_g/(rho_m c_m) (a sweep's intermediate excursion next to particles, which the interface's
+  // redistribution puts right after the step's last sweep, Vof::Advect): the mixture's capacity is not positive and
+  // E(T) falls with T, so it has no temperature of its own; the guess is kept (the bracket below ran off to 2e305 K
+  // in config/scenes/nozzle-track-reduced.yaml, and the redistribution then moved metal at that temperature).
+  if (a < 0 && !(CellSensibleCapacity(a, guess) > 0)) return guess;
   {  // Newton from the guess first: away from the ramp's ends it closes in a step or two
     PetscReal T = guess, fT = f(T);
     for (int it = 0; it < 4 && fT != 0; ++it) {

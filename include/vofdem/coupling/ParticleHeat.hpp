@@ -93,6 +93,7 @@ private:
   PetscBool       conduction_ = PETSC_TRUE;  // -coupling_heat_contact_conduction
   PetscBool       excludeHeld_ = PETSC_TRUE;  // -coupling_heat_exclude_held
   PetscInt        excludedCells_ = 0;
+  bool            maskSet_ = false;  // the averager holds held_ as its excluded cells
   ContactConduction contacts_;
   bool            capacityDeposit_ = true;  // -coupling_heat_deposit capacity|volume
   PetscReal       kernelVolume_ = 0;  // V_eff / H^3 of the kernel (0: cell-based, the cell's volume)
