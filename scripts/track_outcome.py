@@ -9,7 +9,9 @@ at the end, -dem_save_particles) and prints, on lines starting "track:":
     height (the largest h, and the median over y of each row's largest h along the part of the path behind the
     pool) and its width (per row the extent in x where h > 10 % of that row's largest, median over the same rows);
   - the cost: wall time, steps, wall time per simulated ms.
-  track_outcome.py OUT [--plate 0.8e-3] [--density 8380] [--path-y 0.6e-3,2.6e-3] [--json FILE]"""
+  - with --png, a picture: the metal above the plate seen from above (h(x, y)) and from the side (alpha's largest
+    value across x, y-z) with the particles left, coloured by temperature.
+  track_outcome.py OUT [--plate 0.8e-3] [--density 8380] [--path-y 0.6e-3,2.6e-3] [--json FILE] [--png FILE]"""
 import argparse
 import csv
 import json
@@ -35,6 +37,7 @@ def main():
     ap.add_argument("--density", type=float, default=8380.0, help="the metal's density (kg/m^3)")
     ap.add_argument("--path-y", default="0.6e-3,2.6e-3", help="the beam's path along y: start,end (m)")
     ap.add_argument("--json")
+    ap.add_argument("--png")
     a = ap.parse_args()
     mon = read_csv(os.path.join(a.out, "monitor.csv"))
     if not mon:
@@ -93,6 +96,25 @@ def main():
     if a.json:
         with open(a.json, "w") as f:
             json.dump(res, f, indent=1)
+    if a.png:
+        import matplotlib
+        matplotlib.use("Agg")
+        import matplotlib.pyplot as plt
+        fig, ax = plt.subplots(1, 2, figsize=(11, 4.2), gridspec_kw={"width_ratios": [1, 1.6]})
+        ext = [origin[0], origin[0] + nx * hx, origin[1], origin[1] + ny * hy]
+        im = ax[0].imshow(1e6 * h, origin="lower", extent=[1e3 * v for v in ext], cmap="viridis")
+        fig.colorbar(im, ax=ax[0], label="metal above the plate (um)")
+        ax[0].set_xlabel("x (mm)"), ax[0].set_ylabel("y (mm)"), ax[0].set_title("from above, t = %.2f ms" % (1e3 * (times[-1] if times else 0)))
+        side = alpha.max(axis=2)  # z, y
+        ax[1].imshow(side, origin="lower", extent=[1e3 * ext[2], 1e3 * ext[3], 1e3 * origin[2], 1e3 * (origin[2] + nz * hz)], cmap="Greys", vmin=0, vmax=1, aspect="auto")
+        if left:
+            sc = ax[1].scatter([1e3 * p["y"] for p in left], [1e3 * p["z"] for p in left], s=12, c="C1", edgecolors="k", linewidths=0.3, label="particles left")
+            ax[1].legend(loc="upper right", fontsize=8)
+        ax[1].axhline(1e3 * a.plate, color="C0", lw=0.8, ls="--")
+        ax[1].set_xlabel("y (mm), the beam moves to +y"), ax[1].set_ylabel("z (mm)"), ax[1].set_title("side (alpha's largest across x); plate top dashed")
+        fig.tight_layout()
+        fig.savefig(a.png, dpi=120)
+        print("track: picture %s" % a.png)
 
 
 if __name__ == "__main__":

@@ -1,5 +1,7 @@
 #include "vofdem/sim/Simulation.hpp"
 
+#include "vofdem/base/MemoryBudget.hpp"
+
 #include "vofdem/base/ModuleRegistry.hpp"
 #include "vofdem/base/Options.hpp"
 #include "vofdem/base/Runtime.hpp"
@@ -104,6 +106,16 @@ PetscErrorCode Simulation::SetUp() {
   }
   bool vertexGrid = false;
   for (const auto &m : modules_.All()) vertexGrid = vertexGrid || m->NeedsVertexGrid();
+  {  // a grid too large for the memory is refused before it is made (the full nozzle scene's 13 million cells took
+     // 24 GB and were killed); the largest rank holds at least the mean share of the cells
+    double      perCell = 0;
+    PetscMPIInt size;
+    for (const auto &m : modules_.All()) perCell += m->BytesPerCell();
+    PetscCallMPI(MPI_Comm_size(comm_, &size));
+    const PetscInt *n    = grid_.Cells();
+    const double    mean = (double)n[0] * (double)n[1] * (double)n[2] / size;
+    if (perCell > 0) PetscCall(CheckMemoryRequest(comm_, "-grid_cells", (PetscInt64)std::ceil(mean), perCell, "cells per rank (the fields and solvers of -physics, measured)"));
+  }
   PetscCall(grid_.SetUp(vertexGrid ? PETSC_TRUE : PETSC_FALSE));
   // The cheap set-ups first (fields, solvers); every option has been read by then (the flow solvers read
   // their KSP options, -flow_pressure_ksp_* and -flow_viscous_*, there): a typo fails at the unused-option

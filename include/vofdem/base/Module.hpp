@@ -79,6 +79,9 @@ public:
   virtual PetscErrorCode Configure(ModuleSet &modules, const RunContext &run) = 0;
   virtual bool           NeedsVertexGrid() const { return false; }  // the grid's vertex DM (DMSwarm cell location)
   virtual bool           CheapSetUp() const { return true; }        // set up before the unused-option check
+  // A lower bound of the bytes it holds per grid cell (its fields and solvers), measured (Simulation::SetUp refuses
+  // a grid that cannot fit with one line naming -grid_cells, not an out-of-memory kill).
+  virtual double         BytesPerCell() const { return 0; }
   virtual PetscErrorCode SetUp(ModuleSet &modules, const RunContext &run) = 0;
   virtual bool           OwnsOutputDir() const { return false; }     // takes -output_dir (SetOutputDir)
   virtual PetscErrorCode SetOutputDir(const std::string &) { return 0; }

@@ -21,6 +21,7 @@ public:
 
   const char    *Name() const override { return "coupling"; }
   const char    *LogStage() const override { return "Coupling"; }
+  double         BytesPerCell() const override { return 900; }  // the kernel's wide-ghost vectors per location and eps's books; with the particle heat 1.5 kB per cell more (the reduced nozzle track, 24k to 648k cells)
   PetscErrorCode SetFromOptions(const RunContext &run) override { return coupling_.SetFromOptions(run.comm); }
   PetscErrorCode Configure(ModuleSet &modules, const RunContext &run) override;
   bool           CheapSetUp() const override { return false; }  // after the particles exist

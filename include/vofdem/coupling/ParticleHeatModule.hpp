@@ -22,6 +22,7 @@ public:
 
   const char    *Name() const override { return "particle_heat"; }
   const char    *LogStage() const override { return "ParticleHeat"; }
+  double         BytesPerCell() const override { return 300; }  // the heat's cell vectors (T, the deposit, capacities, held cells)
   PetscErrorCode SetFromOptions(const RunContext &run) override { return heat_.SetFromOptions(run.comm); }
   PetscErrorCode Configure(ModuleSet &modules, const RunContext &run) override;
   bool           CheapSetUp() const override { return false; }  // after the particles and the coupling

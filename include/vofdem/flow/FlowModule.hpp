@@ -16,6 +16,7 @@ public:
 
   const char    *Name() const override { return "flow"; }
   const char    *LogStage() const override { return "Flow"; }
+  double         BytesPerCell() const override { return 1500; }  // the flow's fields, its pressure and viscous matrices and hypre's hierarchy: 1.73 kB per cell measured at 80^3 (-physics flow)
   PetscErrorCode SetFromOptions(const RunContext &run) override;
   PetscErrorCode Configure(ModuleSet &, const RunContext &) override { return 0; }
   PetscErrorCode SetUp(ModuleSet &, const RunContext &run) override { return flow_.SetUp(run.gravity); }

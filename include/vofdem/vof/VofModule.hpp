@@ -23,6 +23,7 @@ public:
 
   const char    *Name() const override { return "vof"; }
   const char    *LogStage() const override { return "VOF"; }
+  double         BytesPerCell() const override { return 150; }  // alpha, its ghosts and the interface's scratch: 0.2 kB per cell more at 80^3
   PetscErrorCode SetFromOptions(const RunContext &run) override { return vof_.SetFromOptions(*run.grid); }
   PetscErrorCode Configure(ModuleSet &modules, const RunContext &run) override;
   PetscErrorCode SetUp(ModuleSet &modules, const RunContext &run) override;
