@@ -38,3 +38,9 @@ def read_particles(path):
         return []
     with open(path) as f:
         return [{k: float(v) for k, v in r.items()} for r in csv.DictReader(f)]
+
+
+def monitor_rows(out):
+    """A run's monitor table (OUT/monitor.csv) as a list of {column: float}."""
+    with open(os.path.join(out, "monitor.csv")) as f:
+        return [{k: float(v) for k, v in r.items()} for r in csv.DictReader(f)]

@@ -17,7 +17,6 @@ Checked:
   (d) 1 and 2 ranks agree to 1e-10 (the pair across the rank boundary is evaluated by both ranks from the same numbers);
   (e) with -coupling_heat_contact_conduction 0 the difference stays (to 1e-9): the decay is the contacts'.
   test_contact_conduction.py VOFDEM"""
-import csv
 import math
 import os
 import shutil
@@ -26,7 +25,7 @@ import tempfile
 
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 sys.path.insert(0, os.path.join(ROOT, "scripts", "lib"))
-from testcheck import check, finish, run_vofdem  # noqa: E402
+from testcheck import check, finish, monitor_rows as rows, run_vofdem  # noqa: E402
 
 R, RHO, CP, K = 48e-6, 8380.0, 650.0, 29.0  # in718.yaml
 E, NU, W = 2e9, 0.28, 1.0
@@ -81,11 +80,6 @@ def arguments(out, case, t_end):
     args += ["-dem_particles_file", csvfile, "-dem_output_every", "0", "-flow_output_every", "0",
              "-dt", "%g" % DT, "-final_time", "%g" % t_end, "-max_steps", "100000", "-monitor_every", "1", "-monitor_timing", "0", "-output_dir", out]
     return args
-
-
-def rows(out):
-    with open(os.path.join(out, "monitor.csv")) as f:
-        return [{k: float(v) for k, v in r.items()} for r in csv.DictReader(f)]
 
 
 def main():
