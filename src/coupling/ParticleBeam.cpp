@@ -46,7 +46,7 @@ PetscErrorCode ParticleBeam::Trace(PetscReal t, PetscInt n, const PetscReal *x, 
   // Only the rays some particle's disc reaches take part: the block of the rays' sub-grid that holds every rank's
   // footprints (the union's bounding box), so the exchange below is the stream's size, not the beam's (3 R around
   // the centre, 7e5 rays in config/scenes/nozzle-track-reduced.yaml, where the dense exchange was the particle heat's
-  // largest cost on 2 ranks). The rays outside it have no hit; the sums below run over the same rays in the same order.
+  // largest cost on 2 ranks). The rays outside it have no hit.
   auto footprint = [&](PetscInt p, PetscInt *i0, PetscInt *i1, PetscInt *j0, PetscInt *j1) {
     const PetscReal px = x[3 * p], py = x[3 * p + 1], rp = r[p];
     *i0 = std::max((PetscInt)0, (PetscInt)std::floor((px - rp - x0) / hs[0] - 0.5)), *i1 = std::min(NX, (PetscInt)std::ceil((px + rp - x0) / hs[0] + 0.5));
@@ -86,33 +86,52 @@ PetscErrorCode ParticleBeam::Trace(PetscReal t, PetscInt n, const PetscReal *x, 
       }
     }
   }
-  best_.resize(hit_.size());
-  PetscCallMPI(MPI_Allreduce(hit_.data(), best_.data(), (int)rays_, MPI_DOUBLE_INT, MPI_MAXLOC, grid_->Comm()));
-  for (size_t k = 0; k < cover_.size(); ++k)
-    if (best_[k].rank != rank) cover_[k] = 0;  // the winner's share, everywhere
-  PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, cover_.data(), (int)rays_, MPIU_REAL, MPI_SUM, grid_->Comm()));
-  // Each ray's power, separable: P/4 [erf]_x [erf]_y over its square.
+  // The block's columns (ns x ns rays each): those where several ranks have a disc need the highest hit over the
+  // ranks (a MAXLOC over their rays); in the others the one rank with a disc there decides alone. So the exchange is
+  // the rays of the shared columns only (the columns along a rank boundary the stream crosses), and the sums of what
+  // the winners took per column.
+  const PetscInt ci0 = bi0 / ns, cj0 = bj0 / ns, nci = (bi0 + BX - 1) / ns - ci0 + 1, ncj = (bj0 + BY - 1) / ns - cj0 + 1;
+  auto           column = [&](PetscInt i, PetscInt j) { return (size_t)((j / ns - cj0) * nci + (i / ns - ci0)); };
+  std::vector<PetscInt> shared((size_t)nci * ncj, 0);
+  for (PetscInt j = bj0; j < bj0 + BY; ++j)
+    for (PetscInt i = bi0; i < bi0 + BX; ++i)
+      if (owner_[(size_t)((j - bj0) * BX + (i - bi0))] >= 0) shared[column(i, j)] = 1;
+  PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, shared.data(), (int)shared.size(), MPIU_INT, MPI_SUM, grid_->Comm()));
+  std::vector<size_t> sharedRays;  // block indices of the shared columns' rays, in one order on every rank
+  for (PetscInt j = bj0; j < bj0 + BY; ++j)
+    for (PetscInt i = bi0; i < bi0 + BX; ++i)
+      if (shared[column(i, j)] > 1) sharedRays.push_back((size_t)((j - bj0) * BX + (i - bi0)));
+  const size_t ns2 = sharedRays.size();
+  std::vector<Hit> mineHit(ns2);
+  best_.resize(ns2);
+  for (size_t q = 0; q < ns2; ++q) mineHit[q] = hit_[sharedRays[q]];
+  if (ns2) PetscCallMPI(MPI_Allreduce(mineHit.data(), best_.data(), (int)ns2, MPI_DOUBLE_INT, MPI_MAXLOC, grid_->Comm()));
+  for (size_t q = 0; q < ns2; ++q)
+    if (best_[q].rank != rank) owner_[sharedRays[q]] = -1;  // another rank's disc is higher there
+  // Each ray's power, separable: P/4 [erf]_x [erf]_y over its square; what this rank's winners take, per column.
   const PetscReal        sq = std::sqrt((PetscReal)2) / R;
   std::vector<PetscReal> ex((size_t)NX), ey((size_t)NY);
   for (PetscInt i = 0; i < NX; ++i) ex[(size_t)i] = ErfDifference(sq * (x0 + i * hs[0] - cx), sq * (x0 + (i + 1) * hs[0] - cx));
   for (PetscInt j = 0; j < NY; ++j) ey[(size_t)j] = ErfDifference(sq * (y0 + j * hs[1] - cy), sq * (y0 + (j + 1) * hs[1] - cy));
-  PetscReal mine = 0;
+  std::vector<PetscReal> sums((size_t)nci * ncj + 2, 0);  // per block column what was taken; then intercepted, absorbed
   for (PetscInt j = bj0; j < bj0 + BY; ++j)
     for (PetscInt i = bi0; i < bi0 + BX; ++i) {
-      const size_t k = (size_t)((j - bj0) * BX + (i - bi0));
-      const Hit   &b = best_[k];
-      if (b.z == -DBL_MAX) continue;  // no particle over this ray
+      const size_t   k = (size_t)((j - bj0) * BX + (i - bi0));
+      const PetscInt p = owner_[k];
+      if (p < 0) continue;  // no disc of this rank wins this ray
       const PetscReal pr = cover_[k] * 0.25 * P * ex[(size_t)i] * ey[(size_t)j];  // what the highest disc takes
-      intercepted_ += pr;  // every rank, the same rays in the same order
-      const PetscInt gx = c0[0] + i / ns, gy = c0[1] + j / ns;
-      if (gx >= s[0] && gx < s[0] + m[0] && gy >= s[1] && gy < s[1] + m[1]) (*taken)[(size_t)((gy - s[1]) * m[0] + (gx - s[0]))] += pr;
-      if (b.rank == rank) {
-        const PetscInt p = owner_[k];
-        power[p] += eta_ * pr;
-        mine += eta_ * pr;
-      }
+      sums[column(i, j)] += pr;
+      sums[sums.size() - 2] += pr;
+      power[p] += eta_ * pr;
+      sums[sums.size() - 1] += eta_ * pr;
     }
-  PetscCallMPI(MPI_Allreduce(&mine, &absorbed_, 1, MPIU_REAL, MPI_SUM, grid_->Comm()));
+  PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, sums.data(), (int)sums.size(), MPIU_REAL, MPI_SUM, grid_->Comm()));
+  intercepted_ = sums[sums.size() - 2], absorbed_ = sums[sums.size() - 1];
+  for (PetscInt cj = 0; cj < ncj; ++cj)
+    for (PetscInt ci = 0; ci < nci; ++ci) {
+      const PetscInt gx = c0[0] + ci0 + ci, gy = c0[1] + cj0 + cj;
+      if (gx >= s[0] && gx < s[0] + m[0] && gy >= s[1] && gy < s[1] + m[1]) (*taken)[(size_t)((gy - s[1]) * m[0] + (gx - s[0]))] += sums[(size_t)(cj * nci + ci)];
+    }
   PetscFunctionReturn(0);
 }
 

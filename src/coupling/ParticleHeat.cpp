@@ -88,6 +88,9 @@ PetscErrorCode ParticleHeat::SetUp(Coupling &coupling, Flow &flow, Vof &vof, Dem
   PetscCall(DMCreateGlobalVector(sg.Base().CellDM(), &sourceEnergy_));
   PetscCall(VecSet(sourceEnergy_, 0));
   PetscCall(PetscLogEventRegister("CouplingHeat", DM_CLASSID, &ev_));
+  PetscCall(PetscLogEventRegister("CouplingBeam", DM_CLASSID, &evBeam_));
+  PetscCall(PetscLogEventRegister("CouplingMelt", DM_CLASSID, &evMelt_));
+  PetscCall(PetscLogEventRegister("CouplingContact", DM_CLASSID, &evContact_));
   // The particles there now take the initial temperature (a restart then loads theirs).
   ParticleArrays a;
   PetscCall(dem.Particles().GetArrays(&a));
@@ -109,7 +112,9 @@ PetscErrorCode ParticleHeat::SetUp(Coupling &coupling, Flow &flow, Vof &vof, Dem
 
 PetscErrorCode ParticleHeat::Melt(PetscReal time) {
   PetscFunctionBeginUser;
+  PetscCall(PetscLogEventBegin(evMelt_, 0, 0, 0, 0));
   if (melting_) PetscCall(melt_.Melt(time, initial_));  // with the mask of the last deposits (it gives back their kernel volume)
+  PetscCall(PetscLogEventEnd(evMelt_, 0, 0, 0, 0));
   PetscCall(ExcludeHeld());
   PetscFunctionReturn(0);
 }
@@ -157,12 +162,16 @@ PetscErrorCode ParticleHeat::Exchange(PetscReal time, PetscReal dt) {
   PetscCall(StartNew(a));
   const PetscInt n = a.n;
   if (conduction_) {  // P11's contact term first, a split step (exact in energy: what one particle gains its partner loses)
+    PetscCall(PetscLogEventBegin(evContact_, 0, 0, 0, 0));
     PetscCall(contacts_.Step(comm_, *dem_, materials_, a, dt, a.heatConducted));
+    PetscCall(PetscLogEventEnd(evContact_, 0, 0, 0, 0));
     conductedPower_ = contacts_.Last().power, conductingPairs_ = contacts_.Last().contacts;
   }
   beamPower_.assign(n, 0);
   if (beamOn_) {  // the beam at the step's end, as the energy's deposit takes it (Energy::LaserSource)
+    PetscCall(PetscLogEventBegin(evBeam_, 0, 0, 0, 0));
     PetscCall(beam_.Trace(time + dt, n, a.x, a.radius, beamPower_.data(), &taken_));
+    PetscCall(PetscLogEventEnd(evBeam_, 0, 0, 0, 0));
     brought_ += beam_.Absorbed() * dt;  // the account's input
   }
   H_.resize(n), Tbar_.resize(n), rho_.resize(n), eps_.resize(n), power_.resize(n), Cbar_.resize(n);

@@ -111,7 +111,7 @@ private:
   // state (saved): global sums, equal on every rank
   PetscReal brought_ = 0, exchanged_ = 0, toFluid_ = 0, deposited_ = 0, nusseltMax_ = 0, conductedPower_ = 0;
   PetscInt  conductingPairs_ = 0;
-  PetscLogEvent ev_ = 0;
+  PetscLogEvent ev_ = 0, evBeam_ = 0, evMelt_ = 0, evContact_ = 0;  // -log_view: the exchange, and in it the beam and the contacts; the melt
 };
 
 }  // namespace vofdem
