@@ -252,6 +252,8 @@ add_test(NAME energy/particle_beam COMMAND ${VOFDEM_PYTHON} ${CMAKE_CURRENT_SOUR
 set_tests_properties(energy/particle_beam PROPERTIES LABELS "quick;energy;coupling" PROCESSORS 2 TIMEOUT 300)
 add_test(NAME energy/particle_melt COMMAND ${VOFDEM_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/test/energy/test_particle_melt.py $<TARGET_FILE:vofdem_app>)
 set_tests_properties(energy/particle_melt PROPERTIES LABELS "quick;energy;coupling" PROCESSORS 2 TIMEOUT 300)
+add_test(NAME coupling/insertion_closed_box COMMAND ${VOFDEM_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/test/coupling/test_insertion_closed_box.py $<TARGET_FILE:vofdem_app>)
+set_tests_properties(coupling/insertion_closed_box PROPERTIES LABELS "quick;coupling;vof" PROCESSORS 2 TIMEOUT 300)
 add_test(NAME energy/contact_conduction COMMAND ${VOFDEM_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/test/energy/test_contact_conduction.py $<TARGET_FILE:vofdem_app>)
 set_tests_properties(energy/contact_conduction PROPERTIES LABELS "quick;energy;coupling" PROCESSORS 2 TIMEOUT 300)
 add_test(NAME energy/four_particles COMMAND ${VOFDEM_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/test/energy/test_four_particles.py $<TARGET_FILE:vofdem_app>)

@@ -265,7 +265,7 @@ PetscErrorCode Coupling::Destroy() {
     for (Vec *v : {&faceEps_[d], &gradP_[d], &accel_[d], &rate_[d], &target_[d], &gradAlpha_[d], &massWork_[d], &wallForce_[d]}) PetscCall(VecDestroy(v));
   for (int d = 0; d < 3; ++d)
     for (Vec *v : {&gradU_[d][0], &gradU_[d][1], &faceLocal_[d]}) PetscCall(VecDestroy(v));
-  for (Vec *v : {&cellLocal_, &rhoLocal_, &volume_, &epsChange_}) PetscCall(VecDestroy(v));
+  for (Vec *v : {&cellLocal_, &rhoLocal_, &volume_, &epsChange_, &bornCells_}) PetscCall(VecDestroy(v));
   PetscCall(avg_.Destroy());
   PetscFunctionReturn(0);
 }

@@ -174,6 +174,8 @@ private:
   // control volume, whose velocity the boundary sets, passes it to the wall; its pressure gradient (FaceFields) balances it.
   Vec wallForce_[3] = {nullptr, nullptr, nullptr};
   Vec cellLocal_ = nullptr, rhoLocal_ = nullptr, volume_ = nullptr, epsChange_ = nullptr;
+  Vec bornCells_ = nullptr;                // the volume of the particles added since the last projection (Project)
+  std::vector<PetscReal> bornVolume_;      // per particle: its volume if it is new, else 0
   std::vector<PetscReal> H_, scratch_, lastForce_;  // per local particle, between Project and Average
   std::vector<PetscReal> explicitForce_;             // the explicit forces' part of lastForce_ (implicit fluid drag)
   std::vector<PetscReal> massForce_, capMass_, capShare_;  // per local particle: the force of the last step whose reaction
