@@ -49,6 +49,7 @@ PetscErrorCode CouplingModule::SetUp(ModuleSet &, const RunContext &run) {
   if (vof_) {  // particles with a free surface: eps in the interface's transport (F1b), its forces on them (P1)
     Vof &vof = vof_->Get();
     vof.SetFluidFraction(flow.FluidFraction(), coupling_.FluidFractionChange());
+    coupling_.SetPhaseFraction(vof.Fraction());  // where new particles' volume is taken from the gas (Coupling::Project)
     coupling_.SetInterfaceForces(vof.SurfaceTensionCoefficient() > 0);
     PetscCall(coupling_.SetFreeSurface(vof.Fraction(), vof.SurfaceTensionCoefficient()));
     PetscCall(coupling_.Average());  // again, with the interface's force field

@@ -55,11 +55,12 @@ PetscErrorCode Coupling::Project(PetscReal dt) {
   PetscCall(VecSet(volume_, 0));
   PetscCall(avg_.Deposit(3, a.n, a.x, H_.data(), scratch_.data(), 1, volume_));
   // Particles added since the last projection (an insertion; their fluid fields are still zero: fluid_viscosity is
-  // set for every particle at each Average) did not displace the fluid by moving there: their volume enters eps at
-  // once but not the rate the continuity takes (F1). In a closed box that rate must sum to zero: a new particle's
-  // volume in it was a source the pressure solve could only remove as its mean, spread over every cell, and the
-  // metal of a pool lost the metal's share of each inserted volume (1.571e-13 m^3 per 0.1 mm sphere in a box 30 %
-  // full; the reduced nozzle track's metal 1e-3 off its books).
+  // set for every particle at each Average) displace the fluid where they appear, but in a closed box that volume has
+  // to come from somewhere: taken as the pressure solve's mean it left every cell, and a pool lost the metal's share
+  // of each inserted sphere (1.571e-13 m^3 per 0.1 mm sphere in a box 30 % full; the reduced nozzle track's metal 1e-3
+  // off its books). So the rate the continuity takes gets, besides the new volume where it appears, the same volume
+  // back from the cells without metal (alpha < 1e-12, by their fluid volume; all cells with one fluid): it sums to
+  // zero, and no metal moves but where a new sphere pushes it.
   bool born = false;
   if (dtLast_ > 0 && a.fluidViscosity) {
     bornVolume_.assign((size_t)a.n, 0);
@@ -72,6 +73,27 @@ PetscErrorCode Coupling::Project(PetscReal dt) {
       if (!bornCells_) PetscCall(VecDuplicate(volume_, &bornCells_));
       PetscCall(VecSet(bornCells_, 0));
       PetscCall(avg_.Deposit(3, a.n, a.x, H_.data(), bornVolume_.data(), 1, bornCells_));
+      // the cells that give it: without metal, weighted by their fluid volume eps V (sum over ranks)
+      PetscReal          sums[2] = {0, 0};  // the new volume / V, the weights' sum
+      const PetscScalar *bv, *ev, *av = nullptr;
+      PetscInt           m;
+      PetscCall(VecGetLocalSize(bornCells_, &m));
+      PetscCall(VecGetArrayRead(bornCells_, &bv));
+      PetscCall(VecGetArrayRead(flow_->FluidFraction(), &ev));
+      if (phase_) PetscCall(VecGetArrayRead(phase_, &av));
+      gasWeight_.assign((size_t)m, 0);
+      for (PetscInt k = 0; k < m; ++k) {
+        sums[0] += PetscRealPart(bv[k]) / Vc;
+        if (!av || PetscRealPart(av[k]) < 1e-12) gasWeight_[(size_t)k] = PetscRealPart(ev[k]), sums[1] += gasWeight_[(size_t)k];
+      }
+      if (av) PetscCall(VecRestoreArrayRead(phase_, &av));
+      PetscCall(VecRestoreArrayRead(flow_->FluidFraction(), &ev));
+      PetscCall(VecRestoreArrayRead(bornCells_, &bv));
+      PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, sums, 2, MPIU_REAL, MPIU_SUM, comm_));
+      bornTotal_ = sums[0];
+      if (sums[1] > 0)
+        for (PetscReal &w : gasWeight_) w /= sums[1];
+      else gasWeight_.clear();  // no cell without metal: the pressure solve takes the mean, as before
     }
   }
   PetscReal sums[4] = {localVolume, 0, 0, 0}, all[4];
@@ -109,10 +131,10 @@ PetscErrorCode Coupling::Project(PetscReal dt) {
       if (!ba) {
         if (share < 1) v = PetscRealPart(ea[k]) + share * (v - PetscRealPart(ea[k]));
         if (ca) ca[k] = v - PetscRealPart(ea[k]);  // what the particles displaced since the last projection, this step's share (F1)
-      } else {  // the new particles' volume at once, outside the rate; the rest's displacement as above
+      } else {  // the new particles' volume at once, in eps and in the rate; the rest's displacement as above
         const PetscReal b = PetscRealPart(ba[k]) / Vc, moved = PetscRealPart(ea[k]) + share * (v + b - PetscRealPart(ea[k]));
-        if (ca) ca[k] = moved - PetscRealPart(ea[k]);
         v = moved - b;
+        if (ca) ca[k] = v - PetscRealPart(ea[k]) + (gasWeight_.empty() ? 0 : bornTotal_ * gasWeight_[(size_t)k]);
       }
       ea[k] = v;
     }

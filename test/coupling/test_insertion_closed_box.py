@@ -1,8 +1,8 @@
 #!/usr/bin/python3
 """Particles inserted into a closed box over a pool (docs/physics.md F1; -physics dem,flow,vof): 0.1 mm IN718 spheres
 inserted at 20,000 per second 1 mm above a pool that fills 30 % of a closed 2 mm box (20^3 cells), falling into it at
-1 m/s, 150 steps. A new particle's volume enters eps at once but not the rate the continuity takes (it displaced no
-fluid by moving there), so in a closed box the continuity's source still sums to zero. Checked on 1 and 2 ranks:
+1 m/s, 150 steps. A new particle pushes the fluid out where it appears, and the same volume is taken back from the
+cells without metal, so in a closed box the continuity's source still sums to zero. Checked on 1 and 2 ranks:
   (a) the pool's metal volume (vof_volume_m3) stays at its start to 1e-12 (relative) through every insertion and as the
       spheres enter it: before, each inserted sphere took the metal's share of its volume out of the pool (1.571e-13 m^3
       each, 3.7e-3 of the pool by step 150);

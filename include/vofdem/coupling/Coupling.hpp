@@ -86,6 +86,7 @@ public:
   // With a free surface (-physics dem,flow,vof): the particles also feel the kernel average of the
   // flow's face force (surface tension and Marangoni, P1), which the VOF module fills every step.
   void SetInterfaceForces(bool on) { interfaceForces_ = on; }
+  void SetPhaseFraction(Vec alpha) { phase_ = alpha; }  // the VOF's alpha (not owned): new particles' volume comes from cells without metal
   // The particles' wettability (-coupling_contact_angle, Capillary.hpp): the liquid fraction alpha (the
   // VOF's phase 1, a global cell vector laid out as the flow's cells, owned by the VOF) and its surface
   // tension; with the option set, the capillary force joins the fluid force. Call after SetUp.
@@ -175,7 +176,10 @@ private:
   Vec wallForce_[3] = {nullptr, nullptr, nullptr};
   Vec cellLocal_ = nullptr, rhoLocal_ = nullptr, volume_ = nullptr, epsChange_ = nullptr;
   Vec bornCells_ = nullptr;                // the volume of the particles added since the last projection (Project)
+  Vec phase_ = nullptr;                    // the VOF's alpha, or nullptr (one fluid)
   std::vector<PetscReal> bornVolume_;      // per particle: its volume if it is new, else 0
+  std::vector<PetscReal> gasWeight_;       // per local cell: its share of the cells without metal that give the new volume
+  PetscReal              bornTotal_ = 0;   // the new particles' volume over the cell volume, all ranks
   std::vector<PetscReal> H_, scratch_, lastForce_;  // per local particle, between Project and Average
   std::vector<PetscReal> explicitForce_;             // the explicit forces' part of lastForce_ (implicit fluid drag)
   std::vector<PetscReal> massForce_, capMass_, capShare_;  // per local particle: the force of the last step whose reaction
