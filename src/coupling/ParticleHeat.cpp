@@ -215,12 +215,13 @@ PetscErrorCode ParticleHeat::Exchange(PetscReal time, PetscReal dt) {
       PetscCall(VecRestoreArrayRead(dEps, &dc));
     }
     PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, &change, 1, MPIU_REAL, MPIU_MAX, comm_));
-    // Excluding held cells, a particle whose kernel lies mostly in them has passed into the solid (its centre is in it).
+    // Excluding held cells, a particle whose kernel lies for more than three quarters in them has passed into the solid
+    // (its centre is in it; one resting on a solid surface, or in a corner of the solid, reads up to about a half).
     PetscReal inside = 0;
     if (excludeHeld_)
       for (PetscInt p = 0; p < n; ++p) inside = std::max(inside, solidBar_[p]);
     PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, &inside, 1, MPIU_REAL, MPIU_MAX, comm_));
-    if (change > 1e-6 || inside > 0.5) {  // the particle whose kernel reads the most solid metal
+    if (change > 1e-6 || inside > 0.75) {  // the particle whose kernel reads the most solid metal
       struct {
         double s;
         int    rank;
